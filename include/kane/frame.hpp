@@ -1,0 +1,48 @@
+// Reference frames as types (seed eq. 1).
+//
+//   struct N : kane::root_frame {};                                      // {N}
+//   struct A : kane::frame<N, kane::simple<kane::axis::z, q1>> {};       // A from N
+//   struct B : kane::frame<A, kane::body_fixed<3, 2, 1, q2, q3, q4>> {}; // B from A
+//
+// A frame names its parent, which must be complete where the frame is
+// declared: so every tree is built root first and can hold no cycle.
+// Each frame is its own struct; deriving one frame from another is not a
+// parent-child relation (the two would share parent and orientation).
+#pragma once
+
+#include <concepts>
+#include <type_traits>
+
+#include "kane/fwd.hpp"
+#include "kane/orientation.hpp"
+
+namespace kane {
+
+namespace detail {
+struct frame_tag {};
+template <class T>
+concept Complete = requires { sizeof(T); };
+}  // namespace detail
+
+template <class F>
+concept Frame = detail::Complete<F> && std::derived_from<F, detail::frame_tag>;
+
+// A frame with no parent, e.g. the Newtonian frame N.
+struct root_frame : detail::frame_tag {
+  using parent = void;
+};
+
+template <class Parent, class O> struct frame : detail::frame_tag {
+  static_assert(detail::Complete<Parent>,
+                "kane: a frame's parent must be declared (complete) before the frame; "
+                "declare frames root first (this keeps a frame tree free of cycles)");
+  static_assert(std::derived_from<Parent, detail::frame_tag>,
+                "kane: frame<Parent, Orientation> needs a frame as Parent "
+                "(a struct derived from kane::root_frame or kane::frame)");
+  static_assert(Orientation<O>, "kane: frame<Parent, Orientation> needs an orientation "
+                                "(kane::simple, kane::body_fixed, kane::space_fixed)");
+  using parent = Parent;
+  using orientation = O;
+};
+
+}  // namespace kane

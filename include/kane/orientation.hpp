@@ -1,0 +1,85 @@
+// Orientations of a child frame C relative to its parent P, as ^P P^C.
+//
+// Convention (seed eq. 5): ^C p = ^P P^C . ^P p, (^P P^C)_ij = e_Ci . e_Pj.
+// A simple rotation about the unit axis k (fixed in P and C) by the angle q
+// turns P into C in the right-handed sense: ^P P^C = R(k, q)^T with R the
+// Rodrigues matrix cos q I + sin q [k]x + (1 - cos q) k k^T.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include <Eigen/Core>
+
+#include "kane/axis.hpp"
+#include "kane/coordinate.hpp"
+
+namespace kane {
+
+namespace detail {
+
+// ^P P^C of the simple rotation about K with cos q = c, sin q = s.
+template <class S, class K> Eigen::Matrix<S, 3, 3> elementary(S c, S s) {
+  constexpr int principal = unit_axis<K>::principal;
+  const S o(0), l(1);
+  Eigen::Matrix<S, 3, 3> m;
+  if constexpr (principal == 0) {
+    m << l, o, o, o, c, s, o, -s, c;
+  } else if constexpr (principal == 1) {
+    m << c, o, -s, o, l, o, s, o, c;
+  } else if constexpr (principal == 2) {
+    m << c, s, o, -s, c, o, o, o, l;
+  } else {
+    constexpr auto k = unit_axis<K>::value;
+    const S k1(k[0]), k2(k[1]), k3(k[2]), d = l - c;
+    m << c + d * k1 * k1, d * k1 * k2 + s * k3, d * k1 * k3 - s * k2,  //
+        d * k2 * k1 - s * k3, c + d * k2 * k2, d * k2 * k3 + s * k1,   //
+        d * k3 * k1 + s * k2, d * k3 * k2 - s * k1, c + d * k3 * k3;
+  }
+  return m;
+}
+
+template <int I> using numbered_axis = direction<I == 1, I == 2, I == 3>;
+
+template <int I, int J, int K> constexpr bool valid_sequence() {
+  return I >= 1 && I <= 3 && J >= 1 && J <= 3 && K >= 1 && K <= 3 && I != J && J != K;
+}
+
+}  // namespace detail
+
+// C rotated from P about K (components in P, equal in C) by Q.
+template <Axis K, Coordinate Q> struct simple {
+  static constexpr std::array<std::size_t, 1> coordinates{Q::index};
+  template <class S, class Trig> static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
+    return detail::elementary<S, K>(t.cos(Q::index), t.sin(Q::index));
+  }
+};
+
+// Body-fixed I-J-K: about P's axis I by Q1, then the new J by Q2, then the
+// newest K by Q3; through two auxiliary frames. ^P P^C = E_K(q3) E_J(q2) E_I(q1).
+template <int I, int J, int K, Coordinate Q1, Coordinate Q2, Coordinate Q3> struct body_fixed {
+  static_assert(detail::valid_sequence<I, J, K>(),
+                "kane: a rotation sequence takes axes 1, 2, 3 with consecutive axes different "
+                "(the twelve sequences 1-2-3 ... 3-2-1 and 1-2-1 ... 3-2-3)");
+  static constexpr std::array<std::size_t, 3> coordinates{Q1::index, Q2::index, Q3::index};
+  template <class S, class Trig> static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
+    using detail::elementary;
+    using detail::numbered_axis;
+    return elementary<S, numbered_axis<K>>(t.cos(Q3::index), t.sin(Q3::index)) *
+           elementary<S, numbered_axis<J>>(t.cos(Q2::index), t.sin(Q2::index)) *
+           elementary<S, numbered_axis<I>>(t.cos(Q1::index), t.sin(Q1::index));
+  }
+};
+
+// Space-fixed I-J-K: about P's fixed axes I by Q1, J by Q2, K by Q3; equal to
+// body-fixed K-J-I by (Q3, Q2, Q1). ^P P^C = E_I(q1) E_J(q2) E_K(q3).
+template <int I, int J, int K, Coordinate Q1, Coordinate Q2, Coordinate Q3>
+struct space_fixed : body_fixed<K, J, I, Q3, Q2, Q1> {};
+
+// An orientation gives ^P P^C from the sin/cos of its coordinates.
+template <class O>
+concept Orientation = requires {
+  { O::coordinates.size() } -> std::convertible_to<std::size_t>;
+};
+
+}  // namespace kane

@@ -1,0 +1,46 @@
+// Frame trees: no cycles, real parents and axes, joined frames only.
+// case cycle: kane: a frame.s parent must be declared .complete. before the frame && frame<Y
+// case not_a_frame: kane: frame<Parent, Orientation> needs a frame as Parent && frame<int
+// case no_path: kane: no path of the frame tree joins these two frames && joined_path<A, G>
+// case zero_axis: kane: an axis direction must not be the zero vector && direction<0, 0, 0>
+// case sequence: kane: a rotation sequence takes axes 1, 2, 3 with consecutive axes different && body_fixed<3, 3, 1
+// case vec_of_non_frame: kane: vec<F> needs a frame F && vec<double
+#include <kane/kane.hpp>
+
+using q1 = kane::coordinate<1>;
+using q2 = kane::coordinate<2>;
+
+struct N : kane::root_frame {};
+struct A : kane::frame<N, kane::simple<kane::axis::z, q1>> {};
+struct M : kane::root_frame {};
+struct G : kane::frame<M, kane::simple<kane::axis::x, q2>> {};
+
+#ifdef KANE_CASE_cycle
+struct Y;
+struct X : kane::frame<Y, kane::simple<kane::axis::z, q1>> {};
+struct Y : kane::frame<X, kane::simple<kane::axis::z, q2>> {};
+#endif
+#ifdef KANE_CASE_not_a_frame
+struct X : kane::frame<int, kane::simple<kane::axis::z, q1>> {};
+#endif
+#ifdef KANE_CASE_zero_axis
+struct X : kane::frame<N, kane::simple<kane::direction<0, 0, 0>, q1>> {};
+#endif
+#ifdef KANE_CASE_sequence
+struct X : kane::frame<N, kane::body_fixed<3, 3, 1, q1, q2, q1>> {};
+#endif
+
+double use() {
+  kane::state<double, 2> s;
+#ifdef KANE_CASE_no_path
+  return kane::direction_cosines<A, G>(s)(0, 0);
+#endif
+#if defined(KANE_CASE_zero_axis) || defined(KANE_CASE_sequence)
+  return kane::direction_cosines<N, X>(s)(0, 0);
+#endif
+#ifdef KANE_CASE_vec_of_non_frame
+  kane::vec<double> p;
+  return p[0];
+#endif
+  return kane::direction_cosines<A, N>(s)(0, 0) + kane::direction_cosines<G, M>(s)(0, 0);
+}
