@@ -8,12 +8,13 @@ using q1 = kane::coordinate<1>;
 using q2 = kane::coordinate<2>;
 using q3 = kane::coordinate<3>;
 
-struct N : kane::root_frame {};                                   // Newtonian frame
-struct A : kane::frame<N, kane::simple<kane::axis::z, q1>> {};    // about n3 by q1
-struct B : kane::frame<A, kane::simple<kane::axis::x, q2>> {};    // about a1 by q2
-struct C : kane::frame<B, kane::simple<kane::axis::y, q3>> {};    // about b2 by q3
+struct N : kane::root_frame {};                                 // Newtonian frame
+struct A : kane::frame<N, kane::simple<kane::axis::z, q1>> {};  // about n3 by q1
+struct B : kane::frame<A, kane::simple<kane::axis::x, q2>> {};  // about a1 by q2
+struct C : kane::frame<B, kane::simple<kane::axis::y, q3>> {};  // about b2 by q3
 
-template <class F> void print(const char* name, const kane::vec<F>& p) {
+template <class F>
+void print(const char* name, const kane::vec<F>& p) {
   std::printf("^%s p = (% .6f, % .6f, % .6f)\n", name, p[0], p[1], p[2]);
 }
 
@@ -35,5 +36,5 @@ int main() {
   print("N", pN);
   print("C", NPC * pN);  // ^C p = ^N P^C . ^N p: back where it started
   std::printf("|p| = %.6f in N and %.6f in C\n", kane::norm(pN), kane::norm(pC));
-  return 0;
+  return kane::is_approx(NPC * pN, pC, 1e-12) ? 0 : 1;
 }

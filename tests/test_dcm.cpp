@@ -8,12 +8,15 @@
 #include "trees.hpp"
 
 using namespace trees;
+using Eigen::Matrix3d;
 using kane::direction_cosines;
 using kane::vec;
-using Eigen::Matrix3d;
 
 namespace {
-template <class L, class R> concept multipliable = requires(L l, R r) { l * r; };
+template <class L, class R>
+concept multipliable = requires(L l, R r) {
+  l* r;
+};
 // ^B P^C . ^A P^B composes; ^A P^B . ^C P^D with B != C does not.
 static_assert(multipliable<kane::dcm<B, C>, kane::dcm<A, B>>);
 static_assert(!multipliable<kane::dcm<A, B>, kane::dcm<B, C>>);
@@ -50,16 +53,24 @@ Matrix3d from9(const double (&m)[9]) {
   return r;
 }
 
-template <class P> double max_diff(const P& p, const Matrix3d& m) { return (p.eigen() - m).cwiseAbs().maxCoeff(); }
+template <class P>
+double max_diff(const P& p, const Matrix3d& m) {
+  return (p.eigen() - m).cwiseAbs().maxCoeff();
+}
 
-template <class X, class Y> void check_rotation(const state6& s) {
+template <class X, class Y>
+void check_rotation(const state6& s) {
   const auto p = direction_cosines<X, Y>(s);
-  INFO("orthonormality error " << (p.eigen() * p.eigen().transpose() - Matrix3d::Identity()).cwiseAbs().maxCoeff());
+  INFO("orthonormality error "
+       << (p.eigen() * p.eigen().transpose() - Matrix3d::Identity()).cwiseAbs().maxCoeff());
   CHECK(p.is_rotation(1e-13));
   CHECK(std::abs(p.eigen().determinant() - 1.0) < 1e-13);
 }
 
-template <class X, class... Ys> void check_all_from(const state6& s) { (check_rotation<X, Ys>(s), ...); }
+template <class X, class... Ys>
+void check_all_from(const state6& s) {
+  (check_rotation<X, Ys>(s), ...);
+}
 }  // namespace
 
 TEST_CASE("dcm: a simple rotation about z, x, y is the written-out elementary matrix") {
@@ -83,7 +94,8 @@ TEST_CASE("dcm: the chain N -> A -> B -> C is the product of elementary matrices
     CHECK(max_diff(direction_cosines<A, C>(s), Ey(q3) * Ex(q2)) < 1e-14);
     CHECK(max_diff(direction_cosines<C, A>(s), (Ey(q3) * Ex(q2)).transpose()) < 1e-14);
     // Across branches: ^C P^E = ^N P^E . ^C P^N.
-    const Matrix3d NPD = Matrix3d(Eigen::AngleAxisd(s.q[3], Eigen::Vector3d(1, 2, 2) / 3).toRotationMatrix()).transpose();
+    const Matrix3d NPD =
+        Matrix3d(Eigen::AngleAxisd(s.q[3], Eigen::Vector3d(1, 2, 2) / 3).toRotationMatrix()).transpose();
     const Matrix3d DPE = Ez(s.q[0]) * Ex(s.q[5]) * Ez(s.q[4]);
     CHECK(max_diff(direction_cosines<C, E>(s), DPE * NPD * (Ey(q3) * Ex(q2) * Ez(q1)).transpose()) < 1e-14);
   }
@@ -146,31 +158,35 @@ TEST_CASE("dcm: body-fixed 3-2-1 and 1-2-3 against closed forms") {
                  c3 = std::cos(s.q[2]), s3 = std::sin(s.q[2]);
     // Yaw q1, pitch q2, roll q3: rows are b1, b2, b3 in N.
     Matrix3d m321;
-    m321 << c2 * c1, c2 * s1, -s2,                                   //
-        s3 * s2 * c1 - c3 * s1, s3 * s2 * s1 + c3 * c1, s3 * c2,      //
+    m321 << c2 * c1, c2 * s1, -s2,                                //
+        s3 * s2 * c1 - c3 * s1, s3 * s2 * s1 + c3 * c1, s3 * c2,  //
         c3 * s2 * c1 + s3 * s1, c3 * s2 * s1 - s3 * c1, c3 * c2;
     CHECK(max_diff(direction_cosines<N, B321>(s), m321) < 1e-14);
     Matrix3d m123;
     m123 << c2 * c3, s1 * s2 * c3 + c1 * s3, -c1 * s2 * c3 + s1 * s3,  //
-        -c2 * s3, -s1 * s2 * s3 + c1 * c3, c1 * s2 * s3 + s1 * c3,      //
+        -c2 * s3, -s1 * s2 * s3 + c1 * c3, c1 * s2 * s3 + s1 * c3,     //
         s2, -s1 * c2, c1 * c2;
     CHECK(max_diff(direction_cosines<N, B123>(s), m123) < 1e-14);
   }
 }
 
 namespace {
-template <int Body, int I, int J, int K> void check_sequence_case(const sympy_ref::sequence_case& c) {
+template <int Body, int I, int J, int K>
+void check_sequence_case(const sympy_ref::sequence_case& c) {
   if (c.body != Body || c.i != I || c.j != J || c.k != K) return;
-  using O = std::conditional_t<Body == 1, kane::body_fixed<I, J, K, q1, q2, q3>, kane::space_fixed<I, J, K, q1, q2, q3>>;
+  using O = std::conditional_t<Body == 1, kane::body_fixed<I, J, K, q1, q2, q3>,
+                               kane::space_fixed<I, J, K, q1, q2, q3>>;
   struct X : kane::frame<N, O> {};
   state6 s;
   s.q = {c.q[0], c.q[1], c.q[2], 0, 0, 0};
   INFO((Body ? "body" : "space") << "-fixed " << I << "-" << J << "-" << K);
   CHECK(max_diff(direction_cosines<N, X>(s), from9(c.m)) < 1e-14);
-  Matrix3d written = Body ? elem(K, c.q[2]) * elem(J, c.q[1]) * elem(I, c.q[0]) : elem(I, c.q[0]) * elem(J, c.q[1]) * elem(K, c.q[2]);
+  Matrix3d written = Body ? elem(K, c.q[2]) * elem(J, c.q[1]) * elem(I, c.q[0])
+                          : elem(I, c.q[0]) * elem(J, c.q[1]) * elem(K, c.q[2]);
   CHECK(max_diff(direction_cosines<N, X>(s), written) < 1e-14);
 }
-template <int Body> void check_sequences(const sympy_ref::sequence_case& c) {
+template <int Body>
+void check_sequences(const sympy_ref::sequence_case& c) {
   check_sequence_case<Body, 1, 2, 3>(c), check_sequence_case<Body, 1, 3, 2>(c);
   check_sequence_case<Body, 2, 1, 3>(c), check_sequence_case<Body, 2, 3, 1>(c);
   check_sequence_case<Body, 3, 1, 2>(c), check_sequence_case<Body, 3, 2, 1>(c);
@@ -204,7 +220,8 @@ TEST_CASE("dcm: a constant axis is normalised at compile time") {
   static_assert(kane::detail::unit_axis<kane::direction<0, 0, 7>>::principal == 2);
   state6 s;
   s.q[0] = 1.1;
-  const Matrix3d expected = Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.6, 0, 0.8)).toRotationMatrix().transpose();
+  const Matrix3d expected =
+      Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.6, 0, 0.8)).toRotationMatrix().transpose();
   CHECK(max_diff(direction_cosines<N, T>(s), expected) < 1e-15);
   CHECK(max_diff(direction_cosines<N, U>(s), expected) < 1e-15);
   // The axis is fixed in both frames: its components in T equal those in N.

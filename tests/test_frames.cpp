@@ -10,8 +10,8 @@ using kane::detail::path;
 
 namespace {
 template <class P, class Up, class Down, class Common>
-constexpr bool path_is = std::is_same_v<typename P::up, Up> && std::is_same_v<typename P::down, Down> &&
-                         std::is_same_v<typename P::common, Common>;
+constexpr bool path_is = std::is_same_v<typename P::up, Up>&& std::is_same_v<typename P::down, Down>&&
+    std::is_same_v<typename P::common, Common>;
 
 static_assert(kane::Frame<N> && kane::Frame<A> && kane::Frame<E>);
 static_assert(!kane::Frame<int> && !kane::Frame<kane::vec<N>>);

@@ -9,12 +9,30 @@ using namespace trees;
 using kane::vec;
 
 namespace {
-template <class L, class R> concept addable = requires(L l, R r) { l + r; };
-template <class L, class R> concept subtractable = requires(L l, R r) { l - r; };
-template <class L, class R> concept dottable = requires(L l, R r) { kane::dot(l, r); };
-template <class L, class R> concept crossable = requires(L l, R r) { kane::cross(l, r); };
-template <class L, class R> concept comparable = requires(L l, R r) { l == r; };
-template <class L, class R> concept scalable = requires(L l, R r) { l * r; };
+template <class L, class R>
+concept addable = requires(L l, R r) {
+  l + r;
+};
+template <class L, class R>
+concept subtractable = requires(L l, R r) {
+  l - r;
+};
+template <class L, class R>
+concept dottable = requires(L l, R r) {
+  kane::dot(l, r);
+};
+template <class L, class R>
+concept crossable = requires(L l, R r) {
+  kane::cross(l, r);
+};
+template <class L, class R>
+concept comparable = requires(L l, R r) {
+  l == r;
+};
+template <class L, class R>
+concept scalable = requires(L l, R r) {
+  l* r;
+};
 
 static_assert(addable<vec<A>, vec<A>> && !addable<vec<A>, vec<B>> && !addable<vec<N>, vec<M>>);
 static_assert(subtractable<vec<B>, vec<B>> && !subtractable<vec<B>, vec<C>>);
@@ -56,7 +74,8 @@ TEST_CASE("vec: dot, cross and norm against closed forms") {
   const vec<B> p(1.0, -2.0, 0.5), r(0.25, 4.0, -3.0);
   CHECK(kane::dot(p, r) == Approx(1.0 * 0.25 - 2.0 * 4.0 - 0.5 * 3.0).epsilon(1e-15));
   // p x r = (p2 r3 - p3 r2, p3 r1 - p1 r3, p1 r2 - p2 r1)
-  CHECK(kane::cross(p, r) == vec<B>(-2.0 * -3.0 - 0.5 * 4.0, 0.5 * 0.25 - 1.0 * -3.0, 1.0 * 4.0 - -2.0 * 0.25));
+  CHECK(kane::cross(p, r) ==
+        vec<B>(-2.0 * -3.0 - 0.5 * 4.0, 0.5 * 0.25 - 1.0 * -3.0, 1.0 * 4.0 - -2.0 * 0.25));
   CHECK(kane::cross(vec<B>::e1(), vec<B>::e2()) == vec<B>::e3());
   CHECK(kane::cross(vec<B>::e2(), vec<B>::e3()) == vec<B>::e1());
   CHECK(kane::cross(vec<B>::e3(), vec<B>::e1()) == vec<B>::e2());

@@ -32,7 +32,8 @@ constexpr std::array<double, 3> normalise(double x, double y, double z) {
 
 }  // namespace detail
 
-template <int X, int Y, int Z> struct direction {
+template <int X, int Y, int Z>
+struct direction {
   static constexpr double components[3] = {double(X), double(Y), double(Z)};
 };
 
@@ -52,9 +53,10 @@ using z = direction<0, 0, 1>;
 namespace detail {
 
 // The unit vector of an axis, or index 0/1/2 when it is a coordinate axis.
-template <Axis T> struct unit_axis {
+template <Axis T>
+struct unit_axis {
   static constexpr std::array<double, 3> raw = {double(T::components[0]), double(T::components[1]),
-                                               double(T::components[2])};
+                                                double(T::components[2])};
   static_assert(raw[0] * raw[0] + raw[1] * raw[1] + raw[2] * raw[2] > 0.0,
                 "kane: an axis direction must not be the zero vector");
   static constexpr std::array<double, 3> value = normalise(raw[0], raw[1], raw[2]);

@@ -17,7 +17,8 @@
 
 namespace kane {
 
-template <class A, class B, class S = double> class dcm {
+template <class A, class B, class S = double>
+class dcm {
   static_assert(Frame<A> && Frame<B>, "kane: dcm<A, B> needs two frames");
   static_assert(Scalar<S>, "kane: dcm<A, B, S> needs a scalar type S");
 
@@ -30,7 +31,8 @@ template <class A, class B, class S = double> class dcm {
   // The identity (A and B aligned).
   dcm() = default;
   // From a matrix taken as is: no check; see is_rotation().
-  template <class Derived> explicit dcm(const Eigen::MatrixBase<Derived>& m) {
+  template <class Derived>
+  explicit dcm(const Eigen::MatrixBase<Derived>& m) {
     Eigen::Map<eigen_type>{m_} = m;
   }
 
@@ -54,7 +56,8 @@ template <class A, class B, class S = double> class dcm {
 };
 
 // ^B p = ^A P^B . ^A p
-template <class A, class B, class S> vec<B, S> operator*(const dcm<A, B, S>& p, const vec<A, S>& v) {
+template <class A, class B, class S>
+vec<B, S> operator*(const dcm<A, B, S>& p, const vec<A, S>& v) {
   return vec<B, S>(p.eigen() * v.eigen());
 }
 // ^A P^C = ^B P^C . ^A P^B
@@ -64,12 +67,12 @@ dcm<A, C, S> operator*(const dcm<B, C, S>& l, const dcm<A, B, S>& r) {
 }
 
 template <class DcmFrom, class To, class VecFrame, class S>
-  requires DifferentFrames<DcmFrom, VecFrame>
-error::dcm_applies_only_to_components_in_its_from_frame<DcmFrom, VecFrame> operator*(
-    const dcm<DcmFrom, To, S>&, const vec<VecFrame, S>&) = delete;
+requires DifferentFrames<DcmFrom, VecFrame>
+    error::dcm_applies_only_to_components_in_its_from_frame<DcmFrom, VecFrame>
+operator*(const dcm<DcmFrom, To, S>&, const vec<VecFrame, S>&) = delete;
 template <class LeftFrom, class LeftTo, class RightFrom, class RightTo, class S>
-  requires DifferentFrames<LeftFrom, RightTo>
-error::dcm_product_needs_left_from_frame_equal_right_to_frame<LeftFrom, RightTo> operator*(
-    const dcm<LeftFrom, LeftTo, S>&, const dcm<RightFrom, RightTo, S>&) = delete;
+requires DifferentFrames<LeftFrom, RightTo>
+    error::dcm_product_needs_left_from_frame_equal_right_to_frame<LeftFrom, RightTo>
+operator*(const dcm<LeftFrom, LeftTo, S>&, const dcm<RightFrom, RightTo, S>&) = delete;
 
 }  // namespace kane

@@ -21,7 +21,9 @@ namespace kane {
 namespace detail {
 struct frame_tag {};
 template <class T>
-concept Complete = requires { sizeof(T); };
+concept Complete = requires {
+  sizeof(T);
+};
 }  // namespace detail
 
 template <class F>
@@ -32,15 +34,17 @@ struct root_frame : detail::frame_tag {
   using parent = void;
 };
 
-template <class Parent, class O> struct frame : detail::frame_tag {
+template <class Parent, class O>
+struct frame : detail::frame_tag {
   static_assert(detail::Complete<Parent>,
                 "kane: a frame's parent must be declared (complete) before the frame; "
                 "declare frames root first (this keeps a frame tree free of cycles)");
   static_assert(std::derived_from<Parent, detail::frame_tag>,
                 "kane: frame<Parent, Orientation> needs a frame as Parent "
                 "(a struct derived from kane::root_frame or kane::frame)");
-  static_assert(Orientation<O>, "kane: frame<Parent, Orientation> needs an orientation "
-                                "(kane::simple, kane::body_fixed, kane::space_fixed)");
+  static_assert(Orientation<O>,
+                "kane: frame<Parent, Orientation> needs an orientation "
+                "(kane::simple, kane::body_fixed, kane::space_fixed)");
   using parent = Parent;
   using orientation = O;
 };

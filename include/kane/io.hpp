@@ -13,7 +13,8 @@ namespace kane {
 
 // The frame's name as written in its declaration, without namespaces
 // (read from the compiler's signature string: no RTTI).
-template <class F> constexpr std::string_view frame_name() {
+template <class F>
+constexpr std::string_view frame_name() {
   std::string_view s = __PRETTY_FUNCTION__;
 #if defined(__clang__)
   s = s.substr(s.find("F = ") + 4);
@@ -26,14 +27,15 @@ template <class F> constexpr std::string_view frame_name() {
   return colons == std::string_view::npos ? s : s.substr(colons + 2);
 }
 
-template <class F, class S> std::ostream& operator<<(std::ostream& os, const vec<F, S>& p) {
+template <class F, class S>
+std::ostream& operator<<(std::ostream& os, const vec<F, S>& p) {
   return os << '^' << frame_name<F>() << '(' << p[0] << ", " << p[1] << ", " << p[2] << ')';
 }
 
-template <class A, class B, class S> std::ostream& operator<<(std::ostream& os, const dcm<A, B, S>& p) {
+template <class A, class B, class S>
+std::ostream& operator<<(std::ostream& os, const dcm<A, B, S>& p) {
   os << '^' << frame_name<A>() << " P^" << frame_name<B>() << " [";
-  for (int i = 0; i < 3; ++i)
-    os << (i ? ", [" : "[") << p(i, 0) << ", " << p(i, 1) << ", " << p(i, 2) << ']';
+  for (int i = 0; i < 3; ++i) os << (i ? ", [" : "[") << p(i, 0) << ", " << p(i, 1) << ", " << p(i, 2) << ']';
   return os << ']';
 }
 

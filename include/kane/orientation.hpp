@@ -19,7 +19,8 @@ namespace kane {
 namespace detail {
 
 // ^P P^C of the simple rotation about K with cos q = c, sin q = s.
-template <class S, class K> Eigen::Matrix<S, 3, 3> elementary(S c, S s) {
+template <class S, class K>
+Eigen::Matrix<S, 3, 3> elementary(S c, S s) {
   constexpr int principal = unit_axis<K>::principal;
   const S o(0), l(1);
   Eigen::Matrix<S, 3, 3> m;
@@ -39,30 +40,36 @@ template <class S, class K> Eigen::Matrix<S, 3, 3> elementary(S c, S s) {
   return m;
 }
 
-template <int I> using numbered_axis = direction<I == 1, I == 2, I == 3>;
+template <int I>
+using numbered_axis = direction<I == 1, I == 2, I == 3>;
 
-template <int I, int J, int K> constexpr bool valid_sequence() {
+template <int I, int J, int K>
+constexpr bool valid_sequence() {
   return I >= 1 && I <= 3 && J >= 1 && J <= 3 && K >= 1 && K <= 3 && I != J && J != K;
 }
 
 }  // namespace detail
 
 // C rotated from P about K (components in P, equal in C) by Q.
-template <Axis K, Coordinate Q> struct simple {
+template <Axis K, Coordinate Q>
+struct simple {
   static constexpr std::array<std::size_t, 1> coordinates{Q::index};
-  template <class S, class Trig> static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
+  template <class S, class Trig>
+  static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
     return detail::elementary<S, K>(t.cos(Q::index), t.sin(Q::index));
   }
 };
 
 // Body-fixed I-J-K: about P's axis I by Q1, then the new J by Q2, then the
 // newest K by Q3; through two auxiliary frames. ^P P^C = E_K(q3) E_J(q2) E_I(q1).
-template <int I, int J, int K, Coordinate Q1, Coordinate Q2, Coordinate Q3> struct body_fixed {
+template <int I, int J, int K, Coordinate Q1, Coordinate Q2, Coordinate Q3>
+struct body_fixed {
   static_assert(detail::valid_sequence<I, J, K>(),
                 "kane: a rotation sequence takes axes 1, 2, 3 with consecutive axes different "
                 "(the twelve sequences 1-2-3 ... 3-2-1 and 1-2-1 ... 3-2-3)");
   static constexpr std::array<std::size_t, 3> coordinates{Q1::index, Q2::index, Q3::index};
-  template <class S, class Trig> static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
+  template <class S, class Trig>
+  static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
     using detail::elementary;
     using detail::numbered_axis;
     return elementary<S, numbered_axis<K>>(t.cos(Q3::index), t.sin(Q3::index)) *

@@ -17,9 +17,12 @@ namespace kane {
 // p = a1 e_F1 + a2 e_F2 + a3 e_F3 held as (a1, a2, a3); index 0..2.
 // Default construction gives the zero vector. Frames never convert implicitly.
 // Stored as S[3] (trivially copyable), viewed by Eigen through a Map.
-template <class F, class S = double> class vec {
-  static_assert(Frame<F>, "kane: vec<F> needs a frame F (a struct derived from kane::root_frame or kane::frame)");
-  static_assert(Scalar<S>, "kane: vec<F, S> needs a scalar type S (float, double, or one admitted by kane::is_scalar)");
+template <class F, class S = double>
+class vec {
+  static_assert(Frame<F>,
+                "kane: vec<F> needs a frame F (a struct derived from kane::root_frame or kane::frame)");
+  static_assert(Scalar<S>,
+                "kane: vec<F, S> needs a scalar type S (float, double, or one admitted by kane::is_scalar)");
 
  public:
   using frame = F;
@@ -29,11 +32,15 @@ template <class F, class S = double> class vec {
   vec() = default;
   vec(S a1, S a2, S a3) : c_{a1, a2, a3} {}
   // From any Eigen 3x1 expression, evaluated straight into the storage.
-  template <class Derived> explicit vec(const Eigen::MatrixBase<Derived>& m) { eigen() = m; }
+  template <class Derived>
+  explicit vec(const Eigen::MatrixBase<Derived>& m) {
+    eigen() = m;
+  }
 
   template <class G>
-    requires DifferentFrames<G, F>
-  vec(const vec<G, S>&, error::frames_differ_use_express_to_change_frame<G, F> = {}) = delete;
+  requires DifferentFrames<G, F> vec(const vec<G, S>&,
+                                     error::frames_differ_use_express_to_change_frame<G, F> = {})
+  = delete;
 
   static vec e1() { return vec(S(1), S(0), S(0)); }
   static vec e2() { return vec(S(0), S(1), S(0)); }
@@ -46,10 +53,22 @@ template <class F, class S = double> class vec {
   Eigen::Map<const eigen_type> eigen() const { return Eigen::Map<const eigen_type>(c_); }
   Eigen::Map<eigen_type> eigen() { return Eigen::Map<eigen_type>(c_); }
 
-  vec& operator+=(const vec& o) { eigen() += o.eigen(); return *this; }
-  vec& operator-=(const vec& o) { eigen() -= o.eigen(); return *this; }
-  vec& operator*=(S k) { eigen() *= k; return *this; }
-  vec& operator/=(S k) { eigen() /= k; return *this; }
+  vec& operator+=(const vec& o) {
+    eigen() += o.eigen();
+    return *this;
+  }
+  vec& operator-=(const vec& o) {
+    eigen() -= o.eigen();
+    return *this;
+  }
+  vec& operator*=(S k) {
+    eigen() *= k;
+    return *this;
+  }
+  vec& operator/=(S k) {
+    eigen() /= k;
+    return *this;
+  }
 
  private:
   S c_[3] = {};  // trivially copyable; the zero vector by default
@@ -58,61 +77,81 @@ template <class F, class S = double> class vec {
 template <class T, class S>
 concept ScalarFactor = std::is_arithmetic_v<T> || std::is_same_v<T, S>;
 
-template <class F, class S> vec<F, S> operator+(const vec<F, S>& a, const vec<F, S>& b) {
+template <class F, class S>
+vec<F, S> operator+(const vec<F, S>& a, const vec<F, S>& b) {
   return vec<F, S>(a.eigen() + b.eigen());
 }
-template <class F, class S> vec<F, S> operator-(const vec<F, S>& a, const vec<F, S>& b) {
+template <class F, class S>
+vec<F, S> operator-(const vec<F, S>& a, const vec<F, S>& b) {
   return vec<F, S>(a.eigen() - b.eigen());
 }
-template <class F, class S> vec<F, S> operator-(const vec<F, S>& a) { return vec<F, S>(-a.eigen()); }
-template <class F, class S, ScalarFactor<S> T> vec<F, S> operator*(T k, const vec<F, S>& a) {
+template <class F, class S>
+vec<F, S> operator-(const vec<F, S>& a) {
+  return vec<F, S>(-a.eigen());
+}
+template <class F, class S, ScalarFactor<S> T>
+vec<F, S> operator*(T k, const vec<F, S>& a) {
   return vec<F, S>(S(k) * a.eigen());
 }
-template <class F, class S, ScalarFactor<S> T> vec<F, S> operator*(const vec<F, S>& a, T k) {
+template <class F, class S, ScalarFactor<S> T>
+vec<F, S> operator*(const vec<F, S>& a, T k) {
   return vec<F, S>(a.eigen() * S(k));
 }
-template <class F, class S, ScalarFactor<S> T> vec<F, S> operator/(const vec<F, S>& a, T k) {
+template <class F, class S, ScalarFactor<S> T>
+vec<F, S> operator/(const vec<F, S>& a, T k) {
   return vec<F, S>(a.eigen() / S(k));
 }
 // Exact equality of components; NaN compares unequal.
-template <class F, class S> bool operator==(const vec<F, S>& a, const vec<F, S>& b) {
+template <class F, class S>
+bool operator==(const vec<F, S>& a, const vec<F, S>& b) {
   return a.eigen() == b.eigen();
 }
 // p . q and p x q, both expressed in F.
-template <class F, class S> S dot(const vec<F, S>& a, const vec<F, S>& b) { return a.eigen().dot(b.eigen()); }
-template <class F, class S> vec<F, S> cross(const vec<F, S>& a, const vec<F, S>& b) {
+template <class F, class S>
+S dot(const vec<F, S>& a, const vec<F, S>& b) {
+  return a.eigen().dot(b.eigen());
+}
+template <class F, class S>
+vec<F, S> cross(const vec<F, S>& a, const vec<F, S>& b) {
   return vec<F, S>(a.eigen().cross(b.eigen()));
 }
-template <class F, class S> S norm(const vec<F, S>& a) { return a.eigen().norm(); }
+template <class F, class S>
+S norm(const vec<F, S>& a) {
+  return a.eigen().norm();
+}
 // |a_i - b_i| <= tol for every component; false if any is NaN.
-template <class F, class S> bool is_approx(const vec<F, S>& a, const vec<F, S>& b, S tol) {
+template <class F, class S>
+bool is_approx(const vec<F, S>& a, const vec<F, S>& b, S tol) {
   return ((a.eigen() - b.eigen()).cwiseAbs().array() <= tol).all();
 }
 
 // Mixing frames: deleted, the signature names the rule, the fix and the frames.
 template <class LeftFrame, class RightFrame, class S>
-  requires DifferentFrames<LeftFrame, RightFrame>
-error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> operator+(
-    const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
+requires DifferentFrames<LeftFrame, RightFrame>
+    error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame>
+operator+(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
 template <class LeftFrame, class RightFrame, class S>
-  requires DifferentFrames<LeftFrame, RightFrame>
-error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> operator-(
-    const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
+requires DifferentFrames<LeftFrame, RightFrame>
+    error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame>
+operator-(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
 template <class LeftFrame, class RightFrame, class S>
-  requires DifferentFrames<LeftFrame, RightFrame>
-error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> operator==(
-    const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
+requires DifferentFrames<LeftFrame, RightFrame>
+    error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame>
+operator==(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
 template <class LeftFrame, class RightFrame, class S>
-  requires DifferentFrames<LeftFrame, RightFrame>
-error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> dot(
-    const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
+requires DifferentFrames<LeftFrame, RightFrame>
+    error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> dot(
+        const vec<LeftFrame, S>&, const vec<RightFrame, S>&)
+= delete;
 template <class LeftFrame, class RightFrame, class S>
-  requires DifferentFrames<LeftFrame, RightFrame>
-error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> cross(
-    const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
+requires DifferentFrames<LeftFrame, RightFrame>
+    error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> cross(
+        const vec<LeftFrame, S>&, const vec<RightFrame, S>&)
+= delete;
 template <class LeftFrame, class RightFrame, class S>
-  requires DifferentFrames<LeftFrame, RightFrame>
-error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> is_approx(
-    const vec<LeftFrame, S>&, const vec<RightFrame, S>&, S) = delete;
+requires DifferentFrames<LeftFrame, RightFrame>
+    error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> is_approx(
+        const vec<LeftFrame, S>&, const vec<RightFrame, S>&, S)
+= delete;
 
 }  // namespace kane

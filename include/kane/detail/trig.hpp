@@ -7,14 +7,16 @@
 
 namespace kane::detail {
 
-template <class S, std::size_t NQ> struct trig {
+template <class S, std::size_t NQ>
+struct trig {
   std::array<S, NQ> s{};
   std::array<S, NQ> c{};
   S sin(std::size_t i) const { return s[i - 1]; }  // sin q_i
   S cos(std::size_t i) const { return c[i - 1]; }  // cos q_i
 };
 
-template <std::size_t N> constexpr std::size_t count_unique(const std::array<std::size_t, N>& a) {
+template <std::size_t N>
+constexpr std::size_t count_unique(const std::array<std::size_t, N>& a) {
   std::size_t n = 0;
   for (std::size_t i = 0; i < N; ++i) {
     bool seen = false;
@@ -25,7 +27,8 @@ template <std::size_t N> constexpr std::size_t count_unique(const std::array<std
 }
 
 // The 1-based indices Ks..., each once, ascending.
-template <std::size_t... Ks> constexpr auto unique_indices() {
+template <std::size_t... Ks>
+constexpr auto unique_indices() {
   constexpr std::array<std::size_t, sizeof...(Ks)> all{Ks...};
   std::array<std::size_t, count_unique(all)> out{};
   std::size_t n = 0;
@@ -39,7 +42,8 @@ template <std::size_t... Ks> constexpr auto unique_indices() {
 }
 
 // sin/cos of q_k for k in Needed (a std::array of 1-based indices).
-template <auto Needed, class State> auto make_trig(const State& st) {
+template <auto Needed, class State>
+auto make_trig(const State& st) {
   using S = typename State::scalar;
   static_assert(Needed.empty() || Needed.back() <= State::nq,
                 "kane: the frames involved use a generalized coordinate beyond the state's size; "
