@@ -17,8 +17,16 @@ static_assert(kane::Frame<N> && kane::Frame<A> && kane::Frame<E>);
 static_assert(!kane::Frame<int> && !kane::Frame<kane::vec<N>>);
 static_assert(path_is<path<N, C>, list<>, list<A, B, C>, N>);
 static_assert(path_is<path<C, N>, list<C, B, A>, list<>, N>);
-static_assert(path_is<path<C, E>, list<C, B, A>, list<D, E>, N>);
-static_assert(path_is<path<F, B>, list<F, C>, list<>, B>);
+// Rotation sequences add two auxiliary frames each.
+using E1 = kane::detail::aux_frame<D, E::orientation::steps, 1>;
+using E2 = kane::detail::aux_frame<D, E::orientation::steps, 2>;
+using F2 = kane::detail::aux_frame<C, F::orientation::steps, 2>;
+static_assert(std::is_same_v<E::tree_parent, E2> && std::is_same_v<E2::tree_parent, E1>);
+static_assert(std::is_same_v<E1::step, kane::simple<kane::axis::z, q5>>);
+static_assert(path_is<path<C, E>, list<C, B, A>, list<D, E1, E2, E>, N>);
+static_assert(path_is<path<F, B>, list<F, F2, kane::detail::aux_frame<C, F::orientation::steps, 1>, C>, list<>, B>);
+static_assert(std::is_same_v<kane::detail::closure<C, A, E>::type, list<N, A, B, C, D, E1, E2, E>>);
+static_assert(std::is_same_v<kane::detail::root_of<E>, N> && std::is_same_v<kane::detail::root_of<G>, M>);
 static_assert(path_is<path<B, B>, list<>, list<>, B>);
 static_assert(!path<C, G>::joined && path<G, M>::joined);
 // Coordinates on a path, each once: F's space-fixed sequence reuses q2.

@@ -22,28 +22,13 @@ struct joined_path : path<A, B> {
                 "relate them through a common root frame");
 };
 
+// The coordinates of the edges on a path, each once.
 template <class Up, class Down>
 struct path_coordinates;
 template <class... Up, class... Down>
 struct path_coordinates<list<Up...>, list<Down...>> {
-  static constexpr auto value = [] {
-    constexpr std::size_t n = (std::size_t{0} + ... + Up::orientation::coordinates.size()) +
-                              (std::size_t{0} + ... + Down::orientation::coordinates.size());
-    std::array<std::size_t, n> all{};
-    std::size_t k = 0;
-    [[maybe_unused]] auto add = [&](const auto& c) {
-      for (std::size_t i : c) all[k++] = i;
-    };
-    (add(Up::orientation::coordinates), ...);
-    (add(Down::orientation::coordinates), ...);
-    return all;
-  }();
+  static constexpr auto value = unique_indices<Up::step::coordinate::index..., Down::step::coordinate::index...>();
 };
-
-template <std::size_t N, std::array<std::size_t, N> All, std::size_t... I>
-constexpr auto unique_of(std::index_sequence<I...>) {
-  return unique_indices<All[I]...>();
-}
 
 // A factor of a chain: ^P P^F of the edge above F, transposed when walking up.
 template <class F, bool Up>
@@ -51,9 +36,9 @@ struct edge {
   template <class S, class Trig>
   static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
     if constexpr (Up)
-      return F::orientation::template matrix<S>(t).transpose();
+      return F::step::template matrix<S>(t).transpose();
     else
-      return F::orientation::template matrix<S>(t);
+      return F::step::template matrix<S>(t);
   }
 };
 
@@ -89,8 +74,7 @@ dcm<A, B, typename St::scalar> direction_cosines(const St& st) {
   if constexpr (!p::joined) {
     return {};
   } else {
-    constexpr auto all = detail::path_coordinates<typename p::up, typename p::down>::value;
-    constexpr auto needed = detail::unique_of<all.size(), all>(std::make_index_sequence<all.size()>{});
+    constexpr auto needed = detail::path_coordinates<typename p::up, typename p::down>::value;
     const auto t = detail::make_trig<needed>(st);
     return dcm<A, B, S>(
         detail::chain<S>(t, typename detail::factors<typename p::up, typename p::down>::type{}));

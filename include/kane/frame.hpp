@@ -32,7 +32,16 @@ concept Frame = detail::Complete<F> && std::derived_from<F, detail::frame_tag>;
 // A frame with no parent, e.g. the Newtonian frame N.
 struct root_frame : detail::frame_tag {
   using parent = void;
+  using tree_parent = void;
 };
+
+namespace detail {
+// The frame reached after step K (1-based) of Steps from Parent.
+template <class Parent, class Steps, std::size_t K> struct aux_frame : frame_tag {
+  using tree_parent = std::conditional_t<K == 1, Parent, aux_frame<Parent, Steps, K - 1>>;
+  using step = typename at<Steps, K - 1>::type;
+};
+}  // namespace detail
 
 template <class Parent, class O>
 struct frame : detail::frame_tag {
@@ -47,6 +56,14 @@ struct frame : detail::frame_tag {
                 "(kane::simple, kane::body_fixed, kane::space_fixed)");
   using parent = Parent;
   using orientation = O;
+
+ private:
+  static constexpr std::size_t n_ = detail::size<typename O::steps>::value;
+
+ public:
+  // The edge of the tree above this frame: its last simple rotation.
+  using tree_parent = std::conditional_t<n_ == 1, Parent, detail::aux_frame<Parent, typename O::steps, n_ - 1>>;
+  using step = typename detail::at<typename O::steps, n_ - 1>::type;
 };
 
 }  // namespace kane

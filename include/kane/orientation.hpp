@@ -13,6 +13,7 @@
 
 #include "kane/axis.hpp"
 #include "kane/coordinate.hpp"
+#include "kane/detail/list.hpp"
 
 namespace kane {
 
@@ -51,31 +52,25 @@ constexpr bool valid_sequence() {
 }  // namespace detail
 
 // C rotated from P about K (components in P, equal in C) by Q.
-template <Axis K, Coordinate Q>
-struct simple {
-  static constexpr std::array<std::size_t, 1> coordinates{Q::index};
-  template <class S, class Trig>
-  static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
+template <Axis K, Coordinate Q> struct simple {
+  using axis = K;
+  using coordinate = Q;
+  using steps = detail::list<simple>;
+  // ^P P^C
+  template <class S, class Trig> static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
     return detail::elementary<S, K>(t.cos(Q::index), t.sin(Q::index));
   }
 };
 
 // Body-fixed I-J-K: about P's axis I by Q1, then the new J by Q2, then the
-// newest K by Q3; through two auxiliary frames. ^P P^C = E_K(q3) E_J(q2) E_I(q1).
-template <int I, int J, int K, Coordinate Q1, Coordinate Q2, Coordinate Q3>
-struct body_fixed {
+// newest K by Q3; three simple rotations through two auxiliary frames, so
+// ^P P^C = E_K(q3) E_J(q2) E_I(q1).
+template <int I, int J, int K, Coordinate Q1, Coordinate Q2, Coordinate Q3> struct body_fixed {
   static_assert(detail::valid_sequence<I, J, K>(),
                 "kane: a rotation sequence takes axes 1, 2, 3 with consecutive axes different "
                 "(the twelve sequences 1-2-3 ... 3-2-1 and 1-2-1 ... 3-2-3)");
-  static constexpr std::array<std::size_t, 3> coordinates{Q1::index, Q2::index, Q3::index};
-  template <class S, class Trig>
-  static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
-    using detail::elementary;
-    using detail::numbered_axis;
-    return elementary<S, numbered_axis<K>>(t.cos(Q3::index), t.sin(Q3::index)) *
-           elementary<S, numbered_axis<J>>(t.cos(Q2::index), t.sin(Q2::index)) *
-           elementary<S, numbered_axis<I>>(t.cos(Q1::index), t.sin(Q1::index));
-  }
+  using steps = detail::list<simple<detail::numbered_axis<I>, Q1>, simple<detail::numbered_axis<J>, Q2>,
+                             simple<detail::numbered_axis<K>, Q3>>;
 };
 
 // Space-fixed I-J-K: about P's fixed axes I by Q1, J by Q2, K by Q3; equal to
@@ -83,10 +78,9 @@ struct body_fixed {
 template <int I, int J, int K, Coordinate Q1, Coordinate Q2, Coordinate Q3>
 struct space_fixed : body_fixed<K, J, I, Q3, Q2, Q1> {};
 
-// An orientation gives ^P P^C from the sin/cos of its coordinates.
+// An orientation is a list of simple rotations (a quaternion or explicit
+// dcm orientation would add an edge kind of its own).
 template <class O>
-concept Orientation = requires {
-  { O::coordinates.size() } -> std::convertible_to<std::size_t>;
-};
+concept Orientation = requires { typename O::steps; } && detail::size<typename O::steps>::value >= 1;
 
 }  // namespace kane
