@@ -36,7 +36,7 @@ static_assert(kane::detail::unique_indices<3, 1, 3, 2>() == std::array<std::size
 TEST_CASE("state: plain, zero-initialised, indexed by coordinate") {
   using S = kane::state<double, 3, 2, 1>;
   static_assert(std::is_trivially_copyable_v<S> && std::is_aggregate_v<S>);
-  static_assert(sizeof(S) == (3 + 2 + 1 + 1) * sizeof(double));
+  static_assert(sizeof(S) == (3 * 3 + 2 * 2 + 1 + 1) * sizeof(double));
   static_assert(S::nq == 3 && S::nu == 2 && S::np == 1);
   S s;
   CHECK(s.q == std::array<double, 3>{0, 0, 0});

@@ -1,30 +1,60 @@
-// Generalized coordinates q_1..q_n as types (1-based, as in the seed).
+// Generalized coordinates q_i(t), generalized speeds u_i(t), time t and
+// runtime parameters: the leaves of scalar expressions.
 #pragma once
 
+#include <concepts>
 #include <cstddef>
 #include <type_traits>
 
 namespace kane {
 
-// q_I: the I-th generalized coordinate, stored at index I-1 of a state.
-template <std::size_t I>
-struct coordinate {
+namespace detail {
+struct scalar_tag {};
+}  // namespace detail
+
+// The D-th time derivative of q_I (1-based; values at q[I-1], qd[I-1], qdd[I-1]).
+template <std::size_t I, std::size_t D = 0> struct coordinate : detail::scalar_tag {
   static_assert(I >= 1, "kane: generalized coordinates are numbered from 1 (q1, q2, ...)");
+  static constexpr std::size_t index = I;
+  static constexpr std::size_t order = D;
+};
+
+// The D-th time derivative of u_I (values at u[I-1], ud[I-1]).
+template <std::size_t I, std::size_t D = 0> struct speed : detail::scalar_tag {
+  static_assert(I >= 1, "kane: generalized speeds are numbered from 1 (u1, u2, ...)");
+  static constexpr std::size_t index = I;
+  static constexpr std::size_t order = D;
+};
+
+// A named runtime parameter (a length, a mass), value at p[I-1]. Name one by
+// deriving: struct L1 : kane::parameter<1> {};
+template <std::size_t I> struct parameter : detail::scalar_tag {
+  static_assert(I >= 1, "kane: parameters are numbered from 1");
   static constexpr std::size_t index = I;
 };
 
-// q<I> is the tag object of coordinate<I>, e.g. s[q<1>] = 0.3.
-template <std::size_t I>
-inline constexpr coordinate<I> q{};
+struct time_variable : detail::scalar_tag {};
+
+// Tag objects: q<1> is q_1, u<2> is u_2, t is time.
+template <std::size_t I> inline constexpr coordinate<I> q{};
+template <std::size_t I> inline constexpr speed<I> u{};
+inline constexpr time_variable t{};
 
 namespace detail {
-template <class T>
-struct is_coordinate : std::false_type {};
-template <std::size_t I>
-struct is_coordinate<coordinate<I>> : std::true_type {};
+template <class T> struct is_coordinate : std::false_type {};
+template <std::size_t I> struct is_coordinate<coordinate<I, 0>> : std::true_type {};
+template <class T> struct is_speed : std::false_type {};
+template <std::size_t I> struct is_speed<speed<I, 0>> : std::true_type {};
+template <std::size_t I> std::true_type is_parameter_base(const parameter<I>*);
+std::false_type is_parameter_base(const void*);
 }  // namespace detail
 
+// q_I itself (not a derivative): what orientations and partial derivatives take.
 template <class T>
 concept Coordinate = detail::is_coordinate<T>::value;
+template <class T>
+concept Speed = detail::is_speed<T>::value;
+template <class T>
+concept Parameter = decltype(detail::is_parameter_base(static_cast<const T*>(nullptr)))::value;
 
 }  // namespace kane

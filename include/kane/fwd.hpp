@@ -14,15 +14,9 @@ struct root_frame;
 template <class Parent, class Orientation>
 struct frame;
 
-template <std::size_t I>
-struct coordinate;
-
 template <class F, class S>
 class vec;
 template <class A, class B, class S>
 class dcm;
-
-template <class S, std::size_t NQ, std::size_t NU, std::size_t NP>
-struct state;
 
 }  // namespace kane

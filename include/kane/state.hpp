@@ -10,10 +10,10 @@
 
 namespace kane {
 
-// q_1..q_NQ at q[0..NQ-1], generalized speeds u, parameters p and time t.
-// An aggregate: value-initialised to zero, copyable, no heap.
-template <class S, std::size_t NQ, std::size_t NU = NQ, std::size_t NP = 0>
-struct state {
+// q_1..q_NQ at q[0..NQ-1] with their first and second time derivatives qd,
+// qdd; generalized speeds u and their derivatives ud; parameters p; time t.
+// An aggregate: value-initialised to zero, trivially copyable, no heap.
+template <class S, std::size_t NQ, std::size_t NU = NQ, std::size_t NP = 0> struct state {
   static_assert(Scalar<S>, "kane: state<S, NQ, ...> needs a scalar type S (float, double, ...)");
   using scalar = S;
   static constexpr std::size_t nq = NQ;
@@ -21,25 +21,47 @@ struct state {
   static constexpr std::size_t np = NP;
 
   std::array<S, NQ> q{};
+  std::array<S, NQ> qd{};
+  std::array<S, NQ> qdd{};
   std::array<S, NU> u{};
+  std::array<S, NU> ud{};
   std::array<S, NP> p{};
   S t{};
 
-  template <std::size_t I>
-  S& operator[](coordinate<I>) {
+  template <std::size_t I, std::size_t D> S& operator[](coordinate<I, D>) { return pick<I, D>(*this); }
+  template <std::size_t I, std::size_t D> const S& operator[](coordinate<I, D>) const { return pick<I, D>(*this); }
+  template <std::size_t I, std::size_t D> S& operator[](speed<I, D>) { return pick_u<I, D>(*this); }
+  template <std::size_t I, std::size_t D> const S& operator[](speed<I, D>) const { return pick_u<I, D>(*this); }
+  template <std::size_t I> S& operator[](parameter<I>) { return pick_p<I>(*this); }
+  template <std::size_t I> const S& operator[](parameter<I>) const { return pick_p<I>(*this); }
+
+ private:
+  template <std::size_t I, std::size_t D, class Self> static auto& pick(Self& s) {
     static_assert(I <= NQ, "kane: this coordinate is beyond the state; declare the state with NQ >= I");
-    return q[I - 1];
+    static_assert(D <= 2, "kane: a state holds q, q' and q'' only");
+    if constexpr (D == 0)
+      return s.q[I - 1];
+    else if constexpr (D == 1)
+      return s.qd[I - 1];
+    else
+      return s.qdd[I - 1];
   }
-  template <std::size_t I>
-  const S& operator[](coordinate<I>) const {
-    static_assert(I <= NQ, "kane: this coordinate is beyond the state; declare the state with NQ >= I");
-    return q[I - 1];
+  template <std::size_t I, std::size_t D, class Self> static auto& pick_u(Self& s) {
+    static_assert(I <= NU, "kane: this speed is beyond the state; declare the state with NU >= I");
+    static_assert(D <= 1, "kane: a state holds u and u' only");
+    if constexpr (D == 0)
+      return s.u[I - 1];
+    else
+      return s.ud[I - 1];
+  }
+  template <std::size_t I, class Self> static auto& pick_p(Self& s) {
+    static_assert(I <= NP, "kane: this parameter is beyond the state; declare the state with NP >= I");
+    return s.p[I - 1];
   }
 };
 
 namespace detail {
-template <class T>
-struct is_state : std::false_type {};
+template <class T> struct is_state : std::false_type {};
 template <class S, std::size_t NQ, std::size_t NU, std::size_t NP>
 struct is_state<state<S, NQ, NU, NP>> : std::true_type {};
 }  // namespace detail

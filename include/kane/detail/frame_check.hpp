@@ -23,6 +23,15 @@ struct dcm_product_needs_left_from_frame_equal_right_to_frame {};
 // ^A P^B * ^C p needs C == A: express the components in A first.
 template <class DcmFrom, class VecFrame>
 struct dcm_applies_only_to_components_in_its_from_frame {};
+// ^A w^B + ^C w^D needs B == C (eq. 10): the sum is ^A w^D.
+template <class FirstBody, class SecondObserver>
+struct angular_velocities_do_not_chain_the_first_body_must_be_the_second_observer {};
+// ^A v^P + ^B v^Q: measure both in one frame first, velocity<A, Q>().
+template <class FirstObserver, class SecondObserver>
+struct quantities_measured_in_different_frames_measure_both_in_one_frame {};
+// dt(v) of a vector: its derivative depends on the frame; write dt<A>(v).
+template <class Vector> struct a_vector_derivative_needs_a_frame_write_dt_A_of_v {};
+template <class Vector> struct a_vector_derivative_needs_a_frame_write_diff_A_of_v_q {};
 }  // namespace error
 
 }  // namespace kane

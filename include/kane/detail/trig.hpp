@@ -26,13 +26,13 @@ constexpr std::size_t count_unique(const std::array<std::size_t, N>& a) {
   return n;
 }
 
-// The 1-based indices Ks..., each once, ascending.
+// The indices Ks..., each once, ascending.
 template <std::size_t... Ks>
 constexpr auto unique_indices() {
   constexpr std::array<std::size_t, sizeof...(Ks)> all{Ks...};
   std::array<std::size_t, count_unique(all)> out{};
   std::size_t n = 0;
-  for (std::size_t v = 1; n < out.size(); ++v)
+  for (std::size_t v = 0; n < out.size(); ++v)
     for (std::size_t k : all)
       if (k == v) {
         out[n++] = v;

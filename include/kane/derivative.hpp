@@ -1,0 +1,262 @@
+// Derivatives, built at compile time (seed eq. 6, 7, 12).
+//
+//   dt(s)            total time derivative of a scalar (eq. 7)
+//   diff(s, x)       partial derivative of a scalar by x = q<i>, dt(q<i>), u<i>, t
+//   dt<A>(v)         time derivative of a vector in frame A, by the transport
+//                    theorem: the A-derivative of e_Fi is ^A w^F x e_Fi (eq. 12)
+//   diff<A>(v, q<i>) partial derivative of a vector in A by q_i (eq. 6): the
+//                    A-derivative of e_Fi by q_i is w_i x e_Fi with w_i the
+//                    coefficient of q_i' in ^A w^F
+// A vector has no derivative without a frame: dt(v) does not compile.
+#pragma once
+
+#include <cstddef>
+#include <type_traits>
+
+#include "kane/angular_velocity.hpp"
+#include "kane/detail/frame_check.hpp"
+#include "kane/detail/tree.hpp"
+#include "kane/expr.hpp"
+#include "kane/vector.hpp"
+
+namespace kane {
+
+namespace detail {
+
+template <class X, template <class...> class T> struct is_inst : std::false_type {};
+template <template <class...> class T, class... A> struct is_inst<T<A...>, T> : std::true_type {};
+template <class X, template <class...> class T> inline constexpr bool is_v = is_inst<X, T>::value;
+
+template <class X> struct power_info : std::false_type {};
+template <class X, int N> struct power_info<power<X, N>> : std::true_type {
+  static constexpr int n = N;
+};
+template <class X> struct coordinate_info : std::false_type {};
+template <std::size_t I, std::size_t D> struct coordinate_info<coordinate<I, D>> : std::true_type {};
+template <class X> struct speed_info : std::false_type {};
+template <std::size_t I, std::size_t D> struct speed_info<speed<I, D>> : std::true_type {};
+
+template <class X>
+concept LeafConstant = is_constant<X>::value || std::is_same_v<X, literal> || Parameter<X>;
+
+// A frame that the vector V uses (void if none): its root is V's root.
+template <class V> struct some_frame {
+  using type = void;
+};
+template <class F, int I> struct some_frame<unit<F, I>> {
+  using type = F;
+};
+template <class F> struct some_frame<omega<F>> {
+  using type = F;
+};
+template <class F> struct some_frame<alpha<F>> {
+  using type = F;
+};
+template <class A, class B> struct some_frame<angular_velocity_of<A, B>> {
+  using type = A;
+};
+template <class A, class B> struct some_frame<angular_acceleration_of<A, B>> {
+  using type = A;
+};
+template <class S, class V> struct some_frame<scaled<S, V>> : some_frame<V> {};
+template <class V> struct some_frame<vneg<V>> : some_frame<V> {};
+template <template <class, class> class T, class L, class R>
+  requires(is_v<T<L, R>, vsum> || is_v<T<L, R>, vdiff> || is_v<T<L, R>, vcross>)
+struct some_frame<T<L, R>> {
+  using type = std::conditional_t<std::is_void_v<typename some_frame<L>::type>, typename some_frame<R>::type,
+                                  typename some_frame<L>::type>;
+};
+
+template <class V> constexpr auto root_frame_of() {
+  using F = typename some_frame<V>::type;
+  if constexpr (std::is_void_v<F>)
+    return static_cast<root_frame*>(nullptr);
+  else
+    return static_cast<root_of<F>*>(nullptr);
+}
+template <class V> using root_frame_of_t = std::remove_pointer_t<decltype(root_frame_of<V>())>;
+
+// The axis of the edge above X as a vector in X, if its coordinate is q_R.
+template <std::size_t R, class X> constexpr auto edge_axis() {
+  if constexpr (X::step::coordinate::index != R)
+    return zero_vector{};
+  else {
+    using K = typename X::step::axis;
+    constexpr int p = unit_axis<K>::principal;
+    if constexpr (p >= 0)
+      return unit<X, p + 1>{};
+    else {
+      constexpr auto k = unit_axis<K>::value;
+      return literal(k[0]) * unit<X, 1>{} + literal(k[1]) * unit<X, 2>{} + literal(k[2]) * unit<X, 3>{};
+    }
+  }
+}
+template <std::size_t R, class... Up, class... Down> constexpr auto partial_omega(list<Up...>, list<Down...>) {
+  return (zero_vector{} - ... - edge_axis<R, Up>()) + (zero_vector{} + ... + edge_axis<R, Down>());
+}
+
+template <class X> constexpr auto ddt(X x);
+template <class X> constexpr auto outer_derivative(X x);
+template <class A, class V> constexpr auto ddt_in(V v);
+template <class Leaf, class X> constexpr auto partial(X x);
+template <class A, class Leaf, class V> constexpr auto partial_in(V v);
+
+// Total time derivative of a scalar (eq. 7).
+template <class X> constexpr auto ddt(X x) {
+  if constexpr (coordinate_info<X>::value)
+    return coordinate<X::index, X::order + 1>{};
+  else if constexpr (speed_info<X>::value)
+    return speed<X::index, X::order + 1>{};
+  else if constexpr (std::is_same_v<X, time_variable>)
+    return one_t{};
+  else if constexpr (LeafConstant<X>)
+    return zero_t{};
+  else if constexpr (is_v<X, add>)
+    return ddt(x.l) + ddt(x.r);
+  else if constexpr (is_v<X, sub>)
+    return ddt(x.l) - ddt(x.r);
+  else if constexpr (is_v<X, neg>)
+    return -ddt(x.x);
+  else if constexpr (is_v<X, mul>)
+    return ddt(x.l) * x.r + x.l * ddt(x.r);
+  else if constexpr (is_v<X, quot>)
+    return (ddt(x.l) * x.r - x.l * ddt(x.r)) / pow<2>(x.r);
+  else if constexpr (is_v<X, unary> || power_info<X>::value || is_v<X, call>)
+    return outer_derivative(x) * ddt(x.x);
+  else if constexpr (is_v<X, vdot>) {
+    using R = root_frame_of_t<vsum<decltype(x.l), decltype(x.r)>>;
+    return dot(ddt_in<R>(x.l), x.r) + dot(x.l, ddt_in<R>(x.r));
+  } else
+    static_assert(!sizeof(X), "kane: dt of an unknown scalar node");
+}
+
+// Partial derivative of a scalar by a leaf (q_i, q_i', u_i, t, ...).
+template <class Leaf, class X> constexpr auto partial(X x) {
+  if constexpr (std::is_same_v<X, Leaf>)
+    return one_t{};
+  else if constexpr (coordinate_info<X>::value || speed_info<X>::value || std::is_same_v<X, time_variable> ||
+                     LeafConstant<X>)
+    return zero_t{};
+  else if constexpr (is_v<X, add>)
+    return partial<Leaf>(x.l) + partial<Leaf>(x.r);
+  else if constexpr (is_v<X, sub>)
+    return partial<Leaf>(x.l) - partial<Leaf>(x.r);
+  else if constexpr (is_v<X, neg>)
+    return -partial<Leaf>(x.x);
+  else if constexpr (is_v<X, mul>)
+    return partial<Leaf>(x.l) * x.r + x.l * partial<Leaf>(x.r);
+  else if constexpr (is_v<X, quot>)
+    return (partial<Leaf>(x.l) * x.r - x.l * partial<Leaf>(x.r)) / pow<2>(x.r);
+  else if constexpr (is_v<X, unary> || power_info<X>::value || is_v<X, call>)
+    return outer_derivative(x) * partial<Leaf>(x.x);
+  else if constexpr (is_v<X, vdot>) {
+    using R = root_frame_of_t<vsum<decltype(x.l), decltype(x.r)>>;
+    return dot(partial_in<R, Leaf>(x.l), x.r) + dot(x.l, partial_in<R, Leaf>(x.r));
+  } else
+    static_assert(!sizeof(X), "kane: diff of an unknown scalar node");
+}
+
+// f'(x) of an elementary or opaque function node f(x).
+template <class X> constexpr auto outer_derivative(X x) {
+  if constexpr (std::is_same_v<X, unary<sin_fn, decltype(x.x)>>)
+    return cos(x.x);
+  else if constexpr (std::is_same_v<X, unary<cos_fn, decltype(x.x)>>)
+    return -sin(x.x);
+  else if constexpr (std::is_same_v<X, unary<sqrt_fn, decltype(x.x)>>)
+    return constant<1, 2>{} / x;
+  else if constexpr (power_info<X>::value)
+    return constant<power_info<X>::n>{} * pow<power_info<X>::n - 1>(x.x);
+  else
+    return call<derivative_of<decltype(x.f)>, decltype(x.x)>(derivative_of<decltype(x.f)>{x.f}, x.x);
+}
+
+// ^A d v/dt by the transport theorem.
+template <class A, class V> constexpr auto ddt_in(V v) {
+  if constexpr (is_zero_vector_v<V>)
+    return v;
+  else if constexpr (is_unit<V>::value)
+    return cross(angular_velocity<A, typename V::frame>(), v);
+  else if constexpr (is_v<V, scaled>)
+    return ddt(v.s) * v.v + v.s * ddt_in<A>(v.v);
+  else if constexpr (is_v<V, vsum>)
+    return ddt_in<A>(v.l) + ddt_in<A>(v.r);
+  else if constexpr (is_v<V, vdiff>)
+    return ddt_in<A>(v.l) - ddt_in<A>(v.r);
+  else if constexpr (is_v<V, vneg>)
+    return -ddt_in<A>(v.v);
+  else if constexpr (is_v<V, vcross>)
+    return cross(ddt_in<A>(v.l), v.r) + cross(v.l, ddt_in<A>(v.r));
+  else if constexpr (is_v<V, omega>) {
+    // ^A d(^R w^F)/dt = ^R alpha^F - ^R w^A x ^R w^F
+    static_assert(std::is_same_v<root_of<A>, root_of<typename V::frame>>,
+                  "kane: no path of the frame tree joins these two frames (their roots differ); "
+                  "relate them through a common root frame");
+    return alpha<typename V::frame>{} - cross(omega_of<A>(), v);
+  } else if constexpr (is_v<V, angular_velocity_of> || is_v<V, angular_acceleration_of>)
+    return ddt_in<A>(expand(v));
+  else if constexpr (is_v<V, alpha>)
+    static_assert(!sizeof(V), "kane: the time derivative of an angular acceleration (a third derivative) is not available");
+  else
+    return ddt_in<A>(v.v);  // a kinematic quantity: its expression
+}
+
+// ^A d v/d x for a leaf x (eq. 6 for x = q_i).
+template <class A, class Leaf, class V> constexpr auto partial_in(V v) {
+  if constexpr (is_zero_vector_v<V>)
+    return v;
+  else if constexpr (is_unit<V>::value) {
+    if constexpr (coordinate_info<Leaf>::value && Leaf::order == 0) {
+      using F = typename V::frame;
+      using p = path<A, F>;
+      static_assert(p::joined,
+                    "kane: no path of the frame tree joins these two frames (their roots differ); "
+                    "relate them through a common root frame");
+      return cross(partial_omega<Leaf::index>(typename p::up{}, typename p::down{}), v);
+    } else
+      return zero_vector{};
+  } else if constexpr (is_v<V, scaled>)
+    return partial<Leaf>(v.s) * v.v + v.s * partial_in<A, Leaf>(v.v);
+  else if constexpr (is_v<V, vsum>)
+    return partial_in<A, Leaf>(v.l) + partial_in<A, Leaf>(v.r);
+  else if constexpr (is_v<V, vdiff>)
+    return partial_in<A, Leaf>(v.l) - partial_in<A, Leaf>(v.r);
+  else if constexpr (is_v<V, vneg>)
+    return -partial_in<A, Leaf>(v.v);
+  else if constexpr (is_v<V, vcross>)
+    return cross(partial_in<A, Leaf>(v.l), v.r) + cross(v.l, partial_in<A, Leaf>(v.r));
+  else
+    static_assert(!sizeof(V),
+                  "kane: partial derivatives apply to vectors of unit vectors and scalars (positions); "
+                  "an angular velocity or acceleration node has none here");
+}
+
+}  // namespace detail
+
+// Total time derivative of a scalar (eq. 7).
+template <ScalarExpr X> constexpr auto dt(X x) { return detail::ddt(x); }
+
+// ^A dv/dt (eq. 7 and 12).
+template <Frame A, VectorExpr V> constexpr auto dt(V v) { return detail::ddt_in<A>(v); }
+
+template <VectorExpr V> error::a_vector_derivative_needs_a_frame_write_dt_A_of_v<V> dt(V v) = delete;
+
+// Partial derivative of a scalar by q<i>, dt(q<i>), u<i> or t.
+template <ScalarExpr X, ScalarExpr Leaf>
+  requires(detail::coordinate_info<Leaf>::value || detail::speed_info<Leaf>::value ||
+           std::is_same_v<Leaf, time_variable>)
+constexpr auto diff(X x, Leaf) {
+  return detail::partial<Leaf>(x);
+}
+
+// ^A dv/dq_i (eq. 6).
+template <Frame A, VectorExpr V, ScalarExpr Leaf>
+  requires(detail::coordinate_info<Leaf>::value || detail::speed_info<Leaf>::value ||
+           std::is_same_v<Leaf, time_variable>)
+constexpr auto diff(V v, Leaf) {
+  return detail::partial_in<A, Leaf>(v);
+}
+
+template <VectorExpr V, ScalarExpr Leaf>
+error::a_vector_derivative_needs_a_frame_write_diff_A_of_v_q<V> diff(V v, Leaf) = delete;
+
+}  // namespace kane

@@ -1,0 +1,235 @@
+// Scalar expressions in q, q', q'', u, u', t and parameters.
+//
+// Nodes describe, evaluators compute. Storage rule: every node holds its
+// operands by value. Leaves are empty types and the only numbers a node may
+// hold are literals, so a copy costs nothing and an expression kept in an
+// `auto` variable never refers to a temporary. Runtime values live in the
+// state, never in nodes.
+//
+// Type-level zero and one (constant<0>, constant<1>) vanish from sums and
+// products when the expression is built, so derivatives carry no dead terms.
+#pragma once
+
+#include <concepts>
+#include <cstdint>
+#include <numeric>
+#include <type_traits>
+
+#include "kane/coordinate.hpp"
+#include "kane/detail/dual.hpp"
+
+namespace kane {
+
+template <class T>
+concept ScalarExpr = std::derived_from<T, detail::scalar_tag>;
+
+template <class T>
+concept Number = std::is_arithmetic_v<T>;
+
+// N/D, reduced, as a type.
+template <std::intmax_t N, std::intmax_t D = 1> struct constant : detail::scalar_tag {
+  static_assert(D != 0, "kane: a constant's denominator must not be zero");
+  static constexpr std::intmax_t num = N;
+  static constexpr std::intmax_t den = D;
+};
+using zero_t = constant<0>;
+using one_t = constant<1>;
+
+// A number known only at run time (2.5 * q<1>); held by value.
+struct literal : detail::scalar_tag {
+  double value;
+  constexpr explicit literal(double v) : value(v) {}
+};
+
+template <class L, class R> struct add : detail::scalar_tag {
+  [[no_unique_address]] L l;
+  [[no_unique_address]] R r;
+  constexpr add(L a, R b) : l(a), r(b) {}
+};
+template <class L, class R> struct sub : detail::scalar_tag {
+  [[no_unique_address]] L l;
+  [[no_unique_address]] R r;
+  constexpr sub(L a, R b) : l(a), r(b) {}
+};
+template <class L, class R> struct mul : detail::scalar_tag {
+  [[no_unique_address]] L l;
+  [[no_unique_address]] R r;
+  constexpr mul(L a, R b) : l(a), r(b) {}
+};
+template <class L, class R> struct quot : detail::scalar_tag {
+  [[no_unique_address]] L l;
+  [[no_unique_address]] R r;
+  constexpr quot(L a, R b) : l(a), r(b) {}
+};
+template <class X> struct neg : detail::scalar_tag {
+  [[no_unique_address]] X x;
+  constexpr explicit neg(X a) : x(a) {}
+};
+
+// Elementary functions: sin, cos, sqrt as tags of one node.
+struct sin_fn {};
+struct cos_fn {};
+struct sqrt_fn {};
+template <class Fn, class X> struct unary : detail::scalar_tag {
+  [[no_unique_address]] X x;
+  constexpr explicit unary(X a) : x(a) {}
+};
+// x^N for an integer N.
+template <class X, int N> struct power : detail::scalar_tag {
+  [[no_unique_address]] X x;
+  constexpr explicit power(X a) : x(a) {}
+};
+// f(x) for an opaque user function object f, generic in its argument so that
+// it runs on dual numbers; derivative_of<F> is f'(x), found by forward mode.
+template <class F> struct derivative_of {
+  [[no_unique_address]] F f;
+  template <class T> constexpr T operator()(T x) const { return f(detail::dual<T>{x, T(1)}).d; }
+};
+template <class F, class X> struct call : detail::scalar_tag {
+  [[no_unique_address]] F f;
+  [[no_unique_address]] X x;
+  constexpr call(F g, X a) : f(g), x(a) {}
+};
+
+namespace detail {
+
+template <class T> struct is_neg : std::false_type {};
+template <class X> struct is_neg<neg<X>> : std::true_type {};
+template <class T> struct is_constant : std::false_type {};
+template <std::intmax_t N, std::intmax_t D> struct is_constant<constant<N, D>> : std::true_type {};
+
+template <std::intmax_t N, std::intmax_t D> constexpr auto make_constant() {
+  constexpr std::intmax_t g = std::gcd(N, D) * (D < 0 ? -1 : 1);
+  return constant<N / g, D / g>{};
+}
+
+template <class X> constexpr auto as_expr(X x) {
+  if constexpr (ScalarExpr<X>)
+    return x;
+  else
+    return literal(static_cast<double>(x));
+}
+
+}  // namespace detail
+
+template <class T> inline constexpr bool is_zero_v = std::is_same_v<T, zero_t>;
+template <class T> inline constexpr bool is_one_v = std::is_same_v<T, one_t>;
+
+template <class T>
+concept ScalarOperand = ScalarExpr<T> || Number<T>;
+
+template <ScalarExpr X> constexpr auto operator-(X x) {
+  if constexpr (detail::is_constant<X>::value)
+    return detail::make_constant<-X::num, X::den>();
+  else if constexpr (detail::is_neg<X>::value)
+    return x.x;
+  else
+    return neg<X>(x);
+}
+
+template <ScalarOperand L, ScalarOperand R>
+  requires(ScalarExpr<L> || ScalarExpr<R>)
+constexpr auto operator+(L l_, R r_) {
+  auto l = detail::as_expr(l_);
+  auto r = detail::as_expr(r_);
+  using A = decltype(l);
+  using B = decltype(r);
+  if constexpr (is_zero_v<A>)
+    return r;
+  else if constexpr (is_zero_v<B>)
+    return l;
+  else if constexpr (detail::is_constant<A>::value && detail::is_constant<B>::value)
+    return detail::make_constant<A::num * B::den + B::num * A::den, A::den * B::den>();
+  else
+    return add<A, B>(l, r);
+}
+
+template <ScalarOperand L, ScalarOperand R>
+  requires(ScalarExpr<L> || ScalarExpr<R>)
+constexpr auto operator-(L l_, R r_) {
+  auto l = detail::as_expr(l_);
+  auto r = detail::as_expr(r_);
+  using A = decltype(l);
+  using B = decltype(r);
+  if constexpr (is_zero_v<B>)
+    return l;
+  else if constexpr (is_zero_v<A>)
+    return -r;
+  else if constexpr (detail::is_constant<A>::value && detail::is_constant<B>::value)
+    return detail::make_constant<A::num * B::den - B::num * A::den, A::den * B::den>();
+  else
+    return sub<A, B>(l, r);
+}
+
+template <ScalarOperand L, ScalarOperand R>
+  requires(ScalarExpr<L> || ScalarExpr<R>)
+constexpr auto operator*(L l_, R r_) {
+  auto l = detail::as_expr(l_);
+  auto r = detail::as_expr(r_);
+  using A = decltype(l);
+  using B = decltype(r);
+  if constexpr (is_zero_v<A> || is_zero_v<B>)
+    return zero_t{};
+  else if constexpr (is_one_v<A>)
+    return r;
+  else if constexpr (is_one_v<B>)
+    return l;
+  else if constexpr (detail::is_constant<A>::value && detail::is_constant<B>::value)
+    return detail::make_constant<A::num * B::num, A::den * B::den>();
+  else if constexpr (std::is_same_v<A, constant<-1>>)
+    return -r;
+  else if constexpr (std::is_same_v<B, constant<-1>>)
+    return -l;
+  else
+    return mul<A, B>(l, r);
+}
+
+template <ScalarOperand L, ScalarOperand R>
+  requires(ScalarExpr<L> || ScalarExpr<R>)
+constexpr auto operator/(L l_, R r_) {
+  auto l = detail::as_expr(l_);
+  auto r = detail::as_expr(r_);
+  using A = decltype(l);
+  using B = decltype(r);
+  static_assert(!is_zero_v<B>, "kane: division by the constant zero");
+  if constexpr (is_zero_v<A>)
+    return zero_t{};
+  else if constexpr (is_one_v<B>)
+    return l;
+  else if constexpr (detail::is_constant<A>::value && detail::is_constant<B>::value)
+    return detail::make_constant<A::num * B::den, A::den * B::num>();
+  else
+    return quot<A, B>(l, r);
+}
+
+template <ScalarExpr X> constexpr auto sin(X x) {
+  if constexpr (is_zero_v<X>)
+    return zero_t{};
+  else
+    return unary<sin_fn, X>(x);
+}
+template <ScalarExpr X> constexpr auto cos(X x) {
+  if constexpr (is_zero_v<X>)
+    return one_t{};
+  else
+    return unary<cos_fn, X>(x);
+}
+template <ScalarExpr X> constexpr auto sqrt(X x) { return unary<sqrt_fn, X>(x); }
+
+// x^N; x^0 = 1, x^1 = x.
+template <int N, ScalarExpr X> constexpr auto pow(X x) {
+  if constexpr (N == 0)
+    return one_t{};
+  else if constexpr (N == 1)
+    return x;
+  else if constexpr (is_zero_v<X>)
+    return zero_t{};
+  else
+    return power<X, N>(x);
+}
+
+// f(x) with f an opaque function object callable on any scalar type.
+template <class F, ScalarExpr X> constexpr auto invoke(F f, X x) { return call<F, X>(f, x); }
+
+}  // namespace kane
+

@@ -1,0 +1,192 @@
+// Points, their velocities and accelerations (seed eq. 11, 15).
+//
+//   struct O : kane::origin<N> {};                           // fixed in N
+//   struct P : kane::point<O, L1 * kane::e<A, 1>> {};         // r^OP = L1 a1
+//   kane::velocity<N, P>()      ^N v^P = ^N d r^QP/dt, Q fixed in N on P's chain
+//   kane::acceleration<N, P>()  ^N a^P = ^N d(^N v^P)/dt
+//
+// A point is fixed in A if it is an origin of A, or if its position from a
+// point fixed in A has a zero A-derivative (decided at compile time); the
+// velocity in A of a point fixed in A is the zero vector as a type.
+#pragma once
+
+#include <type_traits>
+
+#include "kane/angular_velocity.hpp"
+#include "kane/derivative.hpp"
+#include "kane/detail/frame_check.hpp"
+#include "kane/detail/list.hpp"
+#include "kane/vector.hpp"
+
+namespace kane {
+
+namespace detail {
+struct point_tag {};
+}  // namespace detail
+
+template <class P>
+concept Point = std::derived_from<P, detail::point_tag>;
+
+// A root point, fixed in F.
+template <Frame F> struct origin : detail::point_tag {
+  using from = void;
+  using fixed_frame = F;
+  static constexpr zero_vector position{};
+};
+
+// A point located from the point From by the vector Position (r^{From, this}).
+template <class From, auto Position> struct point : detail::point_tag {
+  static_assert(Point<From>, "kane: point<From, r> needs a point From (kane::origin or kane::point)");
+  static_assert(VectorExpr<decltype(Position)>, "kane: point<From, r> needs a vector expression r");
+  using from = From;
+  static constexpr auto position = Position;
+};
+
+// ^A v^P and ^A a^P: a vector expression that remembers its frame and point.
+template <class A, class P, class V> struct velocity_of : detail::vector_tag {
+  using observer = A;
+  [[no_unique_address]] V v;
+  constexpr explicit velocity_of(V x) : v(x) {}
+};
+template <class A, class P, class V> struct acceleration_of : detail::vector_tag {
+  using observer = A;
+  [[no_unique_address]] V v;
+  constexpr explicit acceleration_of(V x) : v(x) {}
+};
+
+namespace detail {
+template <class A, class P, class V> struct some_frame<velocity_of<A, P, V>> {
+  using type = A;
+};
+template <class A, class P, class V> struct some_frame<acceleration_of<A, P, V>> {
+  using type = A;
+};
+
+// list<P, from of P, ..., origin>
+template <class P, class From = typename P::from> struct point_chain {
+  using type = typename push_front<P, typename point_chain<From>::type>::type;
+};
+template <class P> struct point_chain<P, void> {
+  using type = list<P>;
+};
+
+template <class... P> constexpr auto sum_positions(list<P...>) { return (zero_vector{} + ... + P::position); }
+
+template <class P, class A> constexpr bool fixed_in() {
+  if constexpr (std::is_void_v<typename P::from>)
+    return std::is_same_v<typename P::fixed_frame, A>;
+  else if constexpr (!fixed_in<typename P::from, A>())
+    return false;
+  else
+    return is_zero_vector_v<decltype(ddt_in<A>(P::position))>;
+}
+
+// The first point of L fixed in A, or void.
+template <class L, class A> struct first_fixed {
+  using type = void;
+};
+template <class H, class... T, class A> struct first_fixed<list<H, T...>, A> {
+  using type = std::conditional_t<fixed_in<H, A>(), H, typename first_fixed<list<T...>, A>::type>;
+};
+
+template <class A, class P, class V> constexpr auto measured_velocity(V v) {
+  if constexpr (is_zero_vector_v<V>)
+    return v;
+  else
+    return velocity_of<A, P, V>(v);
+}
+template <class A, class P, class V> constexpr auto measured_acceleration(V v) {
+  if constexpr (is_zero_vector_v<V>)
+    return v;
+  else
+    return acceleration_of<A, P, V>(v);
+}
+}  // namespace detail
+
+// r^PQ, the position of Q from P.
+template <Point P, Point Q> constexpr auto position() {
+  using cp = typename detail::point_chain<P>::type;
+  using cq = typename detail::point_chain<Q>::type;
+  using X = typename detail::first_common<cp, cq>::type;
+  static_assert(!std::is_void_v<X>, "kane: no chain of points joins these two points (their origins differ)");
+  if constexpr (std::is_void_v<X>)
+    return zero_vector{};
+  else
+    return detail::sum_positions(typename detail::before<cq, X>::type{}) -
+           detail::sum_positions(typename detail::before<cp, X>::type{});
+}
+
+template <Point P, Frame A> inline constexpr bool fixed_in_v = detail::fixed_in<P, A>();
+
+// ^A v^P (eq. 15).
+template <Frame A, Point P> constexpr auto velocity(P = {}) {
+  using Q = typename detail::first_fixed<typename detail::point_chain<P>::type, A>::type;
+  static_assert(!std::is_void_v<Q>,
+                "kane: no point on this point's chain is fixed in the frame of differentiation; "
+                "locate the point from one fixed in that frame (an origin<A> or a point whose position "
+                "from it is constant in A)");
+  if constexpr (std::is_void_v<Q>)
+    return zero_vector{};
+  else
+    return detail::measured_velocity<A, P>(dt<A>(position<Q, P>()));
+}
+
+// ^A a^P = ^A d(^A v^P)/dt (eq. 15).
+template <Frame A, Point P> constexpr auto acceleration(P = {}) {
+  return detail::measured_acceleration<A, P>(dt<A>(velocity<A, P>()));
+}
+
+// Two points P, Q fixed in B: ^A v^P = ^A v^Q + ^A w^B x r^QP. Checked at
+// compile time: r^QP has a zero B-derivative.
+template <Frame A, Frame B, Point Q, Point P> constexpr auto two_point_velocity() {
+  constexpr auto r = position<Q, P>();
+  static_assert(is_zero_vector_v<decltype(dt<B>(r))>,
+                "kane: the two-point theorem needs both points fixed in the body frame B (r^QP changes in B); "
+                "use one_point_velocity<A, B, Q, P>()");
+  return detail::measured_velocity<A, P>(velocity<A, Q>() + cross(angular_velocity<A, B>(), r));
+}
+// ^A a^P = ^A a^Q + ^A alpha^B x r^QP + ^A w^B x (^A w^B x r^QP).
+template <Frame A, Frame B, Point Q, Point P> constexpr auto two_point_acceleration() {
+  constexpr auto r = position<Q, P>();
+  static_assert(is_zero_vector_v<decltype(dt<B>(r))>,
+                "kane: the two-point theorem needs both points fixed in the body frame B (r^QP changes in B); "
+                "use one_point_acceleration<A, B, Q, P>()");
+  constexpr auto w = angular_velocity<A, B>();
+  return detail::measured_acceleration<A, P>(acceleration<A, Q>() + cross(angular_acceleration<A, B>(), r) +
+                                             cross(w, cross(w, r)));
+}
+// P moving on B, Q fixed in B: ^A v^P = ^A v^Q + ^B v^P + ^A w^B x r^QP, with
+// ^B v^P = ^B d r^QP/dt (the identity holds for any Q; Q fixed in B makes it
+// the one-point theorem).
+template <Frame A, Frame B, Point Q, Point P> constexpr auto one_point_velocity() {
+  constexpr auto r = position<Q, P>();
+  return detail::measured_velocity<A, P>(velocity<A, Q>() + dt<B>(r) + cross(angular_velocity<A, B>(), r));
+}
+// ^A a^P = ^A a^Q + ^B a^P + 2 ^A w^B x ^B v^P + ^A alpha^B x r + ^A w^B x (^A w^B x r).
+template <Frame A, Frame B, Point Q, Point P> constexpr auto one_point_acceleration() {
+  constexpr auto r = position<Q, P>();
+  constexpr auto w = angular_velocity<A, B>();
+  constexpr auto vB = dt<B>(r);
+  return detail::measured_acceleration<A, P>(acceleration<A, Q>() + dt<B>(vB) + constant<2>{} * cross(w, vB) +
+                                             cross(angular_acceleration<A, B>(), r) + cross(w, cross(w, r)));
+}
+
+// ^A v^P + ^B v^Q with A != B does not compile; likewise accelerations.
+template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W>
+  requires DifferentFrames<FirstObserver, SecondObserver>
+error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator+(
+    velocity_of<FirstObserver, P, V>, velocity_of<SecondObserver, Q, W>) = delete;
+template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W>
+  requires DifferentFrames<FirstObserver, SecondObserver>
+error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator-(
+    velocity_of<FirstObserver, P, V>, velocity_of<SecondObserver, Q, W>) = delete;
+template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W>
+  requires DifferentFrames<FirstObserver, SecondObserver>
+error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator+(
+    acceleration_of<FirstObserver, P, V>, acceleration_of<SecondObserver, Q, W>) = delete;
+template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W>
+  requires DifferentFrames<FirstObserver, SecondObserver>
+error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator-(
+    acceleration_of<FirstObserver, P, V>, acceleration_of<SecondObserver, Q, W>) = delete;
+
+}  // namespace kane
