@@ -9,8 +9,9 @@
 using namespace trees;
 
 TEST_CASE("io: frames print by name, vectors and dcms in Kane's notation") {
-  STATIC_REQUIRE(kane::frame_name<N>() == "N");
-  STATIC_REQUIRE(kane::frame_name<E>() == "E");
+  STATIC_REQUIRE(kane::type_name<N>() == "N");
+  CHECK(kane::frame_name<E>() == "E");
+  CHECK(kane::frame_name<E::tree_parent>() == "D''");
   std::ostringstream os;
   os << kane::vec<B>(1, -2, 0.5);
   CHECK(os.str() == "^B(1, -2, 0.5)");
@@ -19,4 +20,28 @@ TEST_CASE("io: frames print by name, vectors and dcms in Kane's notation") {
   s.q[0] = 0.0;
   os << kane::direction_cosines<N, A>(s);
   CHECK(os.str() == "^N P^A [[1, 0, 0], [-0, 1, 0], [0, 0, 1]]");
+}
+
+namespace {
+struct L : kane::parameter<1> {};
+struct ramp {
+  template <class T> T operator()(T x) const { return x * x; }
+};
+}  // namespace
+
+TEST_CASE("io: expressions print in Kane's notation") {
+  using kane::e;
+  using kane::q;
+  constexpr L l;
+  CHECK(kane::to_string(l * kane::dt(q<1>)) == "L*q1'");
+  CHECK(kane::to_string(kane::dt(kane::dt(q<2>)) - kane::sin(q<1>) / 2.0) == "q2'' - sin(q1)/2");
+  CHECK(kane::to_string(kane::pow<2>(q<1> + q<2>)) == "(q1 + q2)^2");
+  CHECK(kane::to_string(kane::cross(l * kane::dt(q<1>) * e<A, 1>, e<B, 2>)) == "(L*q1' a1) x b2");
+  CHECK(kane::to_string(kane::angular_velocity<N, C>()) == "^N w^C");
+  CHECK(kane::to_string(kane::dt<N>(l * e<A, 1>)) == "L (^N w^A x a1)");
+  CHECK(kane::to_string(kane::dt(kane::invoke(ramp{}, q<3>))) == "ramp'(q3)*q3'");
+  CHECK(kane::to_string(e<E::tree_parent, 3>) == "d''3");
+  std::ostringstream os;
+  os << kane::dt<A>(kane::angular_velocity<N, B>());
+  CHECK(os.str() == "^N alpha^B - ^N w^A x ^N w^B");
 }

@@ -1,20 +1,30 @@
 // Printing, kept apart from the core (the only header that includes <ostream>).
 //   ^N(1, 2, 3)          components of a vector in N
 //   ^N P^A [[...], ...]  direction cosines from N to A, row by row
+//   L1*q1' a2 + ^N w^B x b1   expressions, in Kane's notation: e_A1 is a1,
+//                        ^A w^B and ^A alpha^B angular velocity and acceleration,
+//                        q1' the time derivative; auxiliary frames of a
+//                        rotation sequence from D print as D', D''.
 #pragma once
 
+#include <cctype>
 #include <ostream>
+#include <sstream>
+#include <string>
 #include <string_view>
 
 #include "kane/dcm.hpp"
+#include "kane/derivative.hpp"
+#include "kane/point.hpp"
 #include "kane/vec.hpp"
+#include "kane/vector.hpp"
 
 namespace kane {
 
-// The frame's name as written in its declaration, without namespaces
+// A type's name as written in its declaration, without namespaces
 // (read from the compiler's signature string: no RTTI).
 template <class F>
-constexpr std::string_view frame_name() {
+constexpr std::string_view type_name() {
   std::string_view s = __PRETTY_FUNCTION__;
 #if defined(__clang__)
   s = s.substr(s.find("F = ") + 4);
@@ -23,8 +33,24 @@ constexpr std::string_view frame_name() {
   s = s.substr(s.find("F = ") + 4);
   s = s.substr(0, s.find_first_of(";]"));
 #endif
-  const auto colons = s.rfind("::");
+  const auto colons = s.rfind("::", s.find('<'));
   return colons == std::string_view::npos ? s : s.substr(colons + 2);
+}
+
+namespace detail {
+template <class F> struct aux_info : std::false_type {};
+template <class P, class Steps, std::size_t K> struct aux_info<aux_frame<P, Steps, K>> : std::true_type {
+  using parent = P;
+  static constexpr std::size_t k = K;
+};
+}  // namespace detail
+
+// A frame's name: its type's name; D', D'' for the auxiliary frames from D.
+template <class F> std::string frame_name() {
+  if constexpr (detail::aux_info<F>::value)
+    return frame_name<typename detail::aux_info<F>::parent>() + std::string(detail::aux_info<F>::k, '\'');
+  else
+    return std::string(type_name<F>());
 }
 
 template <class F, class S>
@@ -37,6 +63,134 @@ std::ostream& operator<<(std::ostream& os, const dcm<A, B, S>& p) {
   os << '^' << frame_name<A>() << " P^" << frame_name<B>() << " [";
   for (int i = 0; i < 3; ++i) os << (i ? ", [" : "[") << p(i, 0) << ", " << p(i, 1) << ", " << p(i, 2) << ']';
   return os << ']';
+}
+
+namespace detail {
+
+// Precedence: 0 sum, 1 product, 2 unary minus, 3 atom.
+template <class X> constexpr int precedence() {
+  if constexpr (is_v<X, add> || is_v<X, sub> || is_v<X, vsum> || is_v<X, vdiff>)
+    return 0;
+  else if constexpr (is_v<X, mul> || is_v<X, quot> || is_v<X, scaled> || is_v<X, vcross> || is_v<X, vdot>)
+    return 1;
+  else if constexpr (is_v<X, neg> || is_v<X, vneg>)
+    return 2;
+  else if constexpr (is_constant<X>::value) {
+    if constexpr (X::den != 1 || X::num < 0) return 1;
+    return 3;
+  } else
+    return 3;
+}
+
+template <class X> void print_expr(std::ostream& os, const X& x);
+template <class F> void print_function(std::ostream& os, const F& f);
+
+template <class X> void print_operand(std::ostream& os, const X& x, int min) {
+  if constexpr (is_v<X, velocity_of> || is_v<X, acceleration_of>)
+    print_operand(os, x.v, min);
+  else if (precedence<X>() < min) {
+    os << '(';
+    print_expr(os, x);
+    os << ')';
+  } else
+    print_expr(os, x);
+}
+
+template <class X> void print_expr(std::ostream& os, const X& x) {
+  if constexpr (coordinate_info<X>::value || speed_info<X>::value)
+    os << (coordinate_info<X>::value ? 'q' : 'u') << X::index << std::string(X::order, '\'');
+  else if constexpr (Parameter<X>) {
+    if constexpr (std::is_same_v<X, parameter<X::index>>)
+      os << 'p' << X::index;
+    else
+      os << type_name<X>();
+  } else if constexpr (std::is_same_v<X, time_variable>)
+    os << 't';
+  else if constexpr (is_constant<X>::value) {
+    os << X::num;
+    if constexpr (X::den != 1) os << '/' << X::den;
+  } else if constexpr (std::is_same_v<X, literal>)
+    os << x.value;
+  else if constexpr (is_v<X, add> || is_v<X, vsum>) {
+    print_operand(os, x.l, 0);
+    os << " + ";
+    print_operand(os, x.r, 1);
+  } else if constexpr (is_v<X, sub> || is_v<X, vdiff>) {
+    print_operand(os, x.l, 0);
+    os << " - ";
+    print_operand(os, x.r, 1);
+  } else if constexpr (is_v<X, mul> || is_v<X, quot>) {
+    print_operand(os, x.l, 1);
+    os << (is_v<X, mul> ? "*" : "/");
+    print_operand(os, x.r, is_v<X, mul> ? 1 : 2);
+  } else if constexpr (is_v<X, neg>) {
+    os << '-';
+    print_operand(os, x.x, 2);
+  } else if constexpr (is_v<X, vneg>) {
+    os << '-';
+    print_operand(os, x.v, 2);
+  } else if constexpr (is_v<X, unary>) {
+    os << (std::is_same_v<X, unary<sin_fn, decltype(x.x)>>   ? "sin("
+           : std::is_same_v<X, unary<cos_fn, decltype(x.x)>> ? "cos("
+                                                              : "sqrt(");
+    print_expr(os, x.x);
+    os << ')';
+  } else if constexpr (power_info<X>::value) {
+    print_operand(os, x.x, 3);
+    os << '^' << power_info<X>::n;
+  } else if constexpr (is_v<X, call>) {
+    print_function(os, x.f);
+    os << '(';
+    print_expr(os, x.x);
+    os << ')';
+  } else if constexpr (is_unit<X>::value) {
+    std::string name = frame_name<typename X::frame>();
+    for (auto& c : name) c = char(std::tolower(static_cast<unsigned char>(c)));
+    os << name << X::index;
+  } else if constexpr (is_zero_vector_v<X>)
+    os << '0';
+  else if constexpr (is_v<X, scaled>) {
+    print_operand(os, x.s, 1);
+    os << ' ';
+    print_operand(os, x.v, 2);
+  } else if constexpr (is_v<X, vcross> || is_v<X, vdot>) {
+    print_operand(os, x.l, 2);
+    os << (is_v<X, vcross> ? " x " : " . ");
+    print_operand(os, x.r, 2);
+  } else if constexpr (is_v<X, omega> || is_v<X, alpha>) {
+    os << '^' << frame_name<root_of<typename X::frame>>() << (is_v<X, omega> ? " w^" : " alpha^")
+       << frame_name<typename X::frame>();
+  } else if constexpr (is_v<X, angular_velocity_of> || is_v<X, angular_acceleration_of>) {
+    os << '^' << frame_name<typename X::observer>() << (is_v<X, angular_velocity_of> ? " w^" : " alpha^")
+       << frame_name<typename X::body>();
+  } else
+    print_expr(os, x.v);  // a kinematic quantity: its expression
+}
+
+template <class F> void print_function(std::ostream& os, const F& f) {
+  if constexpr (is_v<F, derivative_of>) {
+    print_function(os, f.f);
+    os << '\'';
+  } else
+    os << type_name<F>();
+}
+
+}  // namespace detail
+
+// The expression in Kane's notation, e.g. "L1*q1' a2".
+template <class X>
+  requires ScalarExpr<X> || VectorExpr<X>
+std::string to_string(const X& x) {
+  std::ostringstream os;
+  detail::print_expr(os, x);
+  return os.str();
+}
+
+template <class X>
+  requires ScalarExpr<X> || VectorExpr<X>
+std::ostream& operator<<(std::ostream& os, const X& x) {
+  detail::print_expr(os, x);
+  return os;
 }
 
 }  // namespace kane
