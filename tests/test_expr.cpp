@@ -15,7 +15,8 @@ inline constexpr L1 l1;
 
 // An opaque user function, generic so that kane can run it on dual numbers.
 struct softplus {
-  template <class T> T operator()(T x) const {
+  template <class T>
+  T operator()(T x) const {
     using std::exp, std::log;
     return log(T(1) + exp(x));
   }
@@ -30,17 +31,22 @@ static_assert(std::is_same_v<decltype(kane::dt(kane::t)), kane::one_t>);
 static_assert(std::is_same_v<decltype(kane::dt(l1 * q<1>)), kane::mul<L1, kane::coordinate<1, 1>>>);
 static_assert(std::is_same_v<decltype(kane::diff(l1 * q<1> + q<2>, q<3>)), kane::zero_t>);
 static_assert(std::is_same_v<decltype(kane::diff(l1 * q<1> + q<2>, q<2>)), kane::one_t>);
-static_assert(std::is_same_v<decltype(kane::constant<1, 2>{} + kane::constant<1, 3>{}), kane::constant<5, 6>>);
+static_assert(
+    std::is_same_v<decltype(kane::constant<1, 2>{} + kane::constant<1, 3>{}), kane::constant<5, 6>>);
 static_assert(std::is_same_v<decltype(-(-q<1>)), kane::coordinate<1>>);
 static_assert(std::is_same_v<decltype(kane::e<A, 1> * kane::zero_t{}), kane::zero_vector>);
 static_assert(std::is_same_v<decltype(kane::cross(kane::e<A, 1>, kane::e<A, 2>)), kane::unit<A, 3>>);
-static_assert(std::is_same_v<decltype(kane::cross(kane::e<A, 3>, kane::e<A, 2>)), kane::vneg<kane::unit<A, 1>>>);
+static_assert(
+    std::is_same_v<decltype(kane::cross(kane::e<A, 3>, kane::e<A, 2>)), kane::vneg<kane::unit<A, 1>>>);
 static_assert(std::is_same_v<decltype(kane::dot(kane::e<B, 2>, kane::e<B, 2>)), kane::one_t>);
 static_assert(std::is_same_v<decltype(kane::dt<A>(kane::e<A, 1>)), kane::zero_vector>);
 // Empty nodes: an expression of leaves is an empty object.
 static_assert(std::is_empty_v<decltype(l1 * kane::sin(q<1>) * kane::e<B, 1>)>);
 
-template <class X> concept has_dt = requires(X x) { kane::dt(x); };
+template <class X>
+concept has_dt = requires(X x) {
+  kane::dt(x);
+};
 static_assert(has_dt<decltype(q<1> * q<2>)> && !has_dt<decltype(kane::e<A, 1>)> && !has_dt<double>);
 
 template <class X>
@@ -66,7 +72,8 @@ TEST_CASE("expr: values and derivatives of sin, cos, sqrt, powers and quotients 
                         std::sin(a) * bd / (2 * std::sqrt(b)) / (g * g * g) +
                         std::sin(a) * std::sqrt(b) * 3 * std::sin(a) * ad / (g * g * g * g);
     CHECK(value(kane::dt(f), s) == Approx(dfdt).epsilon(1e-12));
-    CHECK(value(kane::diff(f, q<2>), s) == Approx(std::sin(a) / (2 * std::sqrt(b)) / (g * g * g)).epsilon(1e-12));
+    CHECK(value(kane::diff(f, q<2>), s) ==
+          Approx(std::sin(a) / (2 * std::sqrt(b)) / (g * g * g)).epsilon(1e-12));
     // d2/dt2 sin(q1) = -sin q1 q1'^2 + cos q1 q1''
     CHECK(value(kane::dt(kane::dt(kane::sin(q<1>))), s) ==
           Approx(-std::sin(a) * ad * ad + std::cos(a) * add).epsilon(1e-12));

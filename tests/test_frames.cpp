@@ -24,7 +24,8 @@ using F2 = kane::detail::aux_frame<C, F::orientation::steps, 2>;
 static_assert(std::is_same_v<E::tree_parent, E2> && std::is_same_v<E2::tree_parent, E1>);
 static_assert(std::is_same_v<E1::step, kane::simple<kane::axis::z, q5>>);
 static_assert(path_is<path<C, E>, list<C, B, A>, list<D, E1, E2, E>, N>);
-static_assert(path_is<path<F, B>, list<F, F2, kane::detail::aux_frame<C, F::orientation::steps, 1>, C>, list<>, B>);
+static_assert(
+    path_is<path<F, B>, list<F, F2, kane::detail::aux_frame<C, F::orientation::steps, 1>, C>, list<>, B>);
 static_assert(std::is_same_v<kane::detail::closure<C, A, E>::type, list<N, A, B, C, D, E1, E2, E>>);
 static_assert(std::is_same_v<kane::detail::root_of<E>, N> && std::is_same_v<kane::detail::root_of<G>, M>);
 static_assert(path_is<path<B, B>, list<>, list<>, B>);

@@ -25,7 +25,10 @@ TEST_CASE("io: frames print by name, vectors and dcms in Kane's notation") {
 namespace {
 struct L : kane::parameter<1> {};
 struct ramp {
-  template <class T> T operator()(T x) const { return x * x; }
+  template <class T>
+  T operator()(T x) const {
+    return x * x;
+  }
 };
 }  // namespace
 

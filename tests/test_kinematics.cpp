@@ -216,7 +216,8 @@ TEST_CASE("kinematics: definition (8) of the angular velocity equals the additio
         (kane::direction_cosines<A, F>(sp).eigen() - kane::direction_cosines<A, F>(sm).eigen()) / (2 * h);
     const vec<F, long double> w8(dP.row(1).dot(P.row(2)), dP.row(2).dot(P.row(0)), dP.row(0).dot(P.row(1)));
     // (10): ^A w^F = ^A w^B + ^B w^C + ^C w^F, summed at compile time.
-    const auto chained = kane::angular_velocity<A, B>() + kane::angular_velocity<B, C>() + kane::angular_velocity<C, F>();
+    const auto chained =
+        kane::angular_velocity<A, B>() + kane::angular_velocity<B, C>() + kane::angular_velocity<C, F>();
     static_assert(std::is_same_v<decltype(chained), const kane::angular_velocity_of<A, F>>);
     const auto direct = kane::express<F>(kane::angular_velocity<A, B>(), ev) +
                         kane::express<F>(kane::angular_velocity<B, C>(), ev) +
@@ -226,7 +227,8 @@ TEST_CASE("kinematics: definition (8) of the angular velocity equals the additio
       CHECK(double(direct[i]) == Approx(double(w8[i])).margin(1e-8));
     }
     // ^F w^A = -^A w^F
-    CHECK(kane::is_approx(kane::express<F>(kane::angular_velocity<F, A>(), ev), -kane::express<F>(chained, ev), 1e-15L));
+    CHECK(kane::is_approx(kane::express<F>(kane::angular_velocity<F, A>(), ev),
+                          -kane::express<F>(chained, ev), 1e-15L));
   }
 }
 
@@ -254,21 +256,28 @@ TEST_CASE("kinematics: transport theorem, eq. (13), eq. (6)-(7) and the two- and
     ev.update(s);
     auto N_ = [&](const auto& x) { return kane::express<N>(x, ev); };
     // (12): ^N dp/dt = ^C dp/dt + ^N w^C x p
-    CHECK(kane::is_approx(N_(kane::dt<N>(p)), N_(kane::dt<C>(p) + kane::cross(kane::angular_velocity<N, C>(), p)), 1e-12));
+    CHECK(kane::is_approx(N_(kane::dt<N>(p)),
+                          N_(kane::dt<C>(p) + kane::cross(kane::angular_velocity<N, C>(), p)), 1e-12));
     // (13): ^N alpha^C = ^N d(^N w^C)/dt = ^C d(^N w^C)/dt
     const auto w = kane::angular_velocity<N, C>();
     CHECK(kane::is_approx(N_(kane::dt<N>(w)), N_(kane::angular_acceleration<N, C>()), 1e-12));
     CHECK(kane::is_approx(N_(kane::dt<C>(w)), N_(kane::angular_acceleration<N, C>()), 1e-12));
-    CHECK(kane::is_approx(N_(kane::dt<A>(kane::angular_velocity<A, E>())), N_(kane::angular_acceleration<A, E>()), 1e-12));
+    CHECK(kane::is_approx(N_(kane::dt<A>(kane::angular_velocity<A, E>())),
+                          N_(kane::angular_acceleration<A, E>()), 1e-12));
     // (7): ^A dp/dt = sum_r ^A dp/dq_r q_r' (no explicit time)
-    const auto sum = kane::diff<A>(p, kane::q<1>) * kane::dt(kane::q<1>) + kane::diff<A>(p, kane::q<2>) * kane::dt(kane::q<2>) +
-                     kane::diff<A>(p, kane::q<3>) * kane::dt(kane::q<3>) + kane::diff<A>(p, kane::q<4>) * kane::dt(kane::q<4>) +
-                     kane::diff<A>(p, kane::q<5>) * kane::dt(kane::q<5>) + kane::diff<A>(p, kane::q<6>) * kane::dt(kane::q<6>);
+    const auto sum = kane::diff<A>(p, kane::q<1>) * kane::dt(kane::q<1>) +
+                     kane::diff<A>(p, kane::q<2>) * kane::dt(kane::q<2>) +
+                     kane::diff<A>(p, kane::q<3>) * kane::dt(kane::q<3>) +
+                     kane::diff<A>(p, kane::q<4>) * kane::dt(kane::q<4>) +
+                     kane::diff<A>(p, kane::q<5>) * kane::dt(kane::q<5>) +
+                     kane::diff<A>(p, kane::q<6>) * kane::dt(kane::q<6>);
     CHECK(kane::is_approx(N_(sum), N_(kane::dt<A>(p)), 1e-12));
     // Two points whose separation is fixed in C; a point moving on C.
     CHECK(kane::is_approx(N_(kane::velocity<N, PC>()), N_(kane::two_point_velocity<N, C, QC, PC>()), 1e-12));
-    CHECK(kane::is_approx(N_(kane::acceleration<N, PC>()), N_(kane::two_point_acceleration<N, C, QC, PC>()), 1e-12));
+    CHECK(kane::is_approx(N_(kane::acceleration<N, PC>()), N_(kane::two_point_acceleration<N, C, QC, PC>()),
+                          1e-12));
     CHECK(kane::is_approx(N_(kane::velocity<N, PM>()), N_(kane::one_point_velocity<N, C, QC, PM>()), 1e-12));
-    CHECK(kane::is_approx(N_(kane::acceleration<N, PM>()), N_(kane::one_point_acceleration<N, C, QC, PM>()), 1e-12));
+    CHECK(kane::is_approx(N_(kane::acceleration<N, PM>()), N_(kane::one_point_acceleration<N, C, QC, PM>()),
+                          1e-12));
   }
 }

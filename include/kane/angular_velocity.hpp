@@ -16,46 +16,57 @@
 
 namespace kane {
 
-template <class A, class B> struct angular_velocity_of : detail::vector_tag {
+template <class A, class B>
+struct angular_velocity_of : detail::vector_tag {
   using observer = A;
   using body = B;
 };
-template <class A, class B> struct angular_acceleration_of : detail::vector_tag {
+template <class A, class B>
+struct angular_acceleration_of : detail::vector_tag {
   using observer = A;
   using body = B;
 };
 
 namespace detail {
-template <class A, class B> struct joined_frames {
+template <class A, class B>
+struct joined_frames {
   static_assert(path<A, B>::joined,
                 "kane: no path of the frame tree joins these two frames (their roots differ); "
                 "relate them through a common root frame");
   static constexpr bool value = path<A, B>::joined;
 };
-template <class F> inline constexpr bool is_root_v = std::is_void_v<typename F::tree_parent>;
+template <class F>
+inline constexpr bool is_root_v = std::is_void_v<typename F::tree_parent>;
 
 // ^R w^F as a vector expression: zero for a root.
-template <class F> constexpr auto omega_of() {
+template <class F>
+constexpr auto omega_of() {
   if constexpr (is_root_v<F>)
     return zero_vector{};
   else
     return omega<F>{};
 }
-template <class F> constexpr auto alpha_of() {
+template <class F>
+constexpr auto alpha_of() {
   if constexpr (is_root_v<F>)
     return zero_vector{};
   else
     return alpha<F>{};
 }
 // The expansions above, in terms of the atomic nodes.
-template <class A, class B> constexpr auto expand(angular_velocity_of<A, B>) { return omega_of<B>() - omega_of<A>(); }
-template <class A, class B> constexpr auto expand(angular_acceleration_of<A, B>) {
+template <class A, class B>
+constexpr auto expand(angular_velocity_of<A, B>) {
+  return omega_of<B>() - omega_of<A>();
+}
+template <class A, class B>
+constexpr auto expand(angular_acceleration_of<A, B>) {
   return alpha_of<B>() - alpha_of<A>() - cross(omega_of<A>(), omega_of<B>() - omega_of<A>());
 }
 }  // namespace detail
 
 // ^A w^B; the zero vector for A = B.
-template <Frame A, Frame B> constexpr auto angular_velocity() {
+template <Frame A, Frame B>
+constexpr auto angular_velocity() {
   static_assert(detail::joined_frames<A, B>::value);
   if constexpr (std::is_same_v<A, B>)
     return zero_vector{};
@@ -63,7 +74,8 @@ template <Frame A, Frame B> constexpr auto angular_velocity() {
     return angular_velocity_of<A, B>{};
 }
 // ^A alpha^B; the zero vector for A = B.
-template <Frame A, Frame B> constexpr auto angular_acceleration() {
+template <Frame A, Frame B>
+constexpr auto angular_acceleration() {
   static_assert(detail::joined_frames<A, B>::value);
   if constexpr (std::is_same_v<A, B>)
     return zero_vector{};
@@ -72,24 +84,27 @@ template <Frame A, Frame B> constexpr auto angular_acceleration() {
 }
 
 // ^B w^A = -^A w^B
-template <class A, class B> constexpr auto operator-(angular_velocity_of<A, B>) { return angular_velocity_of<B, A>{}; }
+template <class A, class B>
+constexpr auto operator-(angular_velocity_of<A, B>) {
+  return angular_velocity_of<B, A>{};
+}
 
 // ^A w^B + ^B w^C = ^A w^C (eq. 10)
-template <class A, class B, class C> constexpr auto operator+(angular_velocity_of<A, B>, angular_velocity_of<B, C>) {
+template <class A, class B, class C>
+constexpr auto operator+(angular_velocity_of<A, B>, angular_velocity_of<B, C>) {
   return angular_velocity<A, C>();
 }
 // ^A w^B - ^C w^B = ^A w^C
-template <class A, class B, class C> constexpr auto operator-(angular_velocity_of<A, B>, angular_velocity_of<C, B>) {
+template <class A, class B, class C>
+constexpr auto operator-(angular_velocity_of<A, B>, angular_velocity_of<C, B>) {
   return angular_velocity<A, C>();
 }
 
-template <class FirstObserver, class FirstBody, class SecondObserver, class SecondBody>
-  requires DifferentFrames<FirstBody, SecondObserver>
-error::angular_velocities_do_not_chain_the_first_body_must_be_the_second_observer<FirstBody, SecondObserver> operator+(
-    angular_velocity_of<FirstObserver, FirstBody>, angular_velocity_of<SecondObserver, SecondBody>) = delete;
-template <class FirstObserver, class FirstBody, class SecondObserver, class SecondBody>
-  requires DifferentFrames<FirstBody, SecondBody>
-error::angular_velocities_do_not_chain_the_first_body_must_be_the_second_observer<FirstBody, SecondBody> operator-(
-    angular_velocity_of<FirstObserver, FirstBody>, angular_velocity_of<SecondObserver, SecondBody>) = delete;
+// clang-format off
+template <class FirstObserver, class FirstBody, class SecondObserver, class SecondBody> requires DifferentFrames<FirstBody, SecondObserver>
+error::angular_velocities_do_not_chain_the_first_body_must_be_the_second_observer<FirstBody, SecondObserver> operator+(angular_velocity_of<FirstObserver, FirstBody>, angular_velocity_of<SecondObserver, SecondBody>) = delete;
+template <class FirstObserver, class FirstBody, class SecondObserver, class SecondBody> requires DifferentFrames<FirstBody, SecondBody>
+error::angular_velocities_do_not_chain_the_first_body_must_be_the_second_observer<FirstBody, SecondBody> operator-(angular_velocity_of<FirstObserver, FirstBody>, angular_velocity_of<SecondObserver, SecondBody>) = delete;
+// clang-format on
 
 }  // namespace kane

@@ -13,14 +13,16 @@ struct scalar_tag {};
 }  // namespace detail
 
 // The D-th time derivative of q_I (1-based; values at q[I-1], qd[I-1], qdd[I-1]).
-template <std::size_t I, std::size_t D = 0> struct coordinate : detail::scalar_tag {
+template <std::size_t I, std::size_t D = 0>
+struct coordinate : detail::scalar_tag {
   static_assert(I >= 1, "kane: generalized coordinates are numbered from 1 (q1, q2, ...)");
   static constexpr std::size_t index = I;
   static constexpr std::size_t order = D;
 };
 
 // The D-th time derivative of u_I (values at u[I-1], ud[I-1]).
-template <std::size_t I, std::size_t D = 0> struct speed : detail::scalar_tag {
+template <std::size_t I, std::size_t D = 0>
+struct speed : detail::scalar_tag {
   static_assert(I >= 1, "kane: generalized speeds are numbered from 1 (u1, u2, ...)");
   static constexpr std::size_t index = I;
   static constexpr std::size_t order = D;
@@ -28,7 +30,8 @@ template <std::size_t I, std::size_t D = 0> struct speed : detail::scalar_tag {
 
 // A named runtime parameter (a length, a mass), value at p[I-1]. Name one by
 // deriving: struct L1 : kane::parameter<1> {};
-template <std::size_t I> struct parameter : detail::scalar_tag {
+template <std::size_t I>
+struct parameter : detail::scalar_tag {
   static_assert(I >= 1, "kane: parameters are numbered from 1");
   static constexpr std::size_t index = I;
 };
@@ -36,16 +39,23 @@ template <std::size_t I> struct parameter : detail::scalar_tag {
 struct time_variable : detail::scalar_tag {};
 
 // Tag objects: q<1> is q_1, u<2> is u_2, t is time.
-template <std::size_t I> inline constexpr coordinate<I> q{};
-template <std::size_t I> inline constexpr speed<I> u{};
+template <std::size_t I>
+inline constexpr coordinate<I> q{};
+template <std::size_t I>
+inline constexpr speed<I> u{};
 inline constexpr time_variable t{};
 
 namespace detail {
-template <class T> struct is_coordinate : std::false_type {};
-template <std::size_t I> struct is_coordinate<coordinate<I, 0>> : std::true_type {};
-template <class T> struct is_speed : std::false_type {};
-template <std::size_t I> struct is_speed<speed<I, 0>> : std::true_type {};
-template <std::size_t I> std::true_type is_parameter_base(const parameter<I>*);
+template <class T>
+struct is_coordinate : std::false_type {};
+template <std::size_t I>
+struct is_coordinate<coordinate<I, 0>> : std::true_type {};
+template <class T>
+struct is_speed : std::false_type {};
+template <std::size_t I>
+struct is_speed<speed<I, 0>> : std::true_type {};
+template <std::size_t I>
+std::true_type is_parameter_base(const parameter<I>*);
 std::false_type is_parameter_base(const void*);
 }  // namespace detail
 

@@ -66,13 +66,11 @@ dcm<A, C, S> operator*(const dcm<B, C, S>& l, const dcm<A, B, S>& r) {
   return dcm<A, C, S>(l.eigen() * r.eigen());
 }
 
-template <class DcmFrom, class To, class VecFrame, class S>
-requires DifferentFrames<DcmFrom, VecFrame>
-    error::dcm_applies_only_to_components_in_its_from_frame<DcmFrom, VecFrame>
-operator*(const dcm<DcmFrom, To, S>&, const vec<VecFrame, S>&) = delete;
-template <class LeftFrom, class LeftTo, class RightFrom, class RightTo, class S>
-requires DifferentFrames<LeftFrom, RightTo>
-    error::dcm_product_needs_left_from_frame_equal_right_to_frame<LeftFrom, RightTo>
-operator*(const dcm<LeftFrom, LeftTo, S>&, const dcm<RightFrom, RightTo, S>&) = delete;
+// clang-format off
+template <class DcmFrom, class To, class VecFrame, class S> requires DifferentFrames<DcmFrom, VecFrame>
+error::dcm_applies_only_to_components_in_its_from_frame<DcmFrom, VecFrame> operator*(const dcm<DcmFrom, To, S>&, const vec<VecFrame, S>&) = delete;
+template <class LeftFrom, class LeftTo, class RightFrom, class RightTo, class S> requires DifferentFrames<LeftFrom, RightTo>
+error::dcm_product_needs_left_from_frame_equal_right_to_frame<LeftFrom, RightTo> operator*(const dcm<LeftFrom, LeftTo, S>&, const dcm<RightFrom, RightTo, S>&) = delete;
+// clang-format on
 
 }  // namespace kane

@@ -23,61 +23,80 @@ namespace kane {
 
 namespace detail {
 
-template <class X, template <class...> class T> struct is_inst : std::false_type {};
-template <template <class...> class T, class... A> struct is_inst<T<A...>, T> : std::true_type {};
-template <class X, template <class...> class T> inline constexpr bool is_v = is_inst<X, T>::value;
+template <class X, template <class...> class T>
+struct is_inst : std::false_type {};
+template <template <class...> class T, class... A>
+struct is_inst<T<A...>, T> : std::true_type {};
+template <class X, template <class...> class T>
+inline constexpr bool is_v = is_inst<X, T>::value;
 
-template <class X> struct power_info : std::false_type {};
-template <class X, int N> struct power_info<power<X, N>> : std::true_type {
+template <class X>
+struct power_info : std::false_type {};
+template <class X, int N>
+struct power_info<power<X, N>> : std::true_type {
   static constexpr int n = N;
 };
-template <class X> struct coordinate_info : std::false_type {};
-template <std::size_t I, std::size_t D> struct coordinate_info<coordinate<I, D>> : std::true_type {};
-template <class X> struct speed_info : std::false_type {};
-template <std::size_t I, std::size_t D> struct speed_info<speed<I, D>> : std::true_type {};
+template <class X>
+struct coordinate_info : std::false_type {};
+template <std::size_t I, std::size_t D>
+struct coordinate_info<coordinate<I, D>> : std::true_type {};
+template <class X>
+struct speed_info : std::false_type {};
+template <std::size_t I, std::size_t D>
+struct speed_info<speed<I, D>> : std::true_type {};
 
 template <class X>
 concept LeafConstant = is_constant<X>::value || std::is_same_v<X, literal> || Parameter<X>;
 
 // A frame that the vector V uses (void if none): its root is V's root.
-template <class V> struct some_frame {
+template <class V>
+struct some_frame {
   using type = void;
 };
-template <class F, int I> struct some_frame<unit<F, I>> {
+template <class F, int I>
+struct some_frame<unit<F, I>> {
   using type = F;
 };
-template <class F> struct some_frame<omega<F>> {
+template <class F>
+struct some_frame<omega<F>> {
   using type = F;
 };
-template <class F> struct some_frame<alpha<F>> {
+template <class F>
+struct some_frame<alpha<F>> {
   using type = F;
 };
-template <class A, class B> struct some_frame<angular_velocity_of<A, B>> {
+template <class A, class B>
+struct some_frame<angular_velocity_of<A, B>> {
   using type = A;
 };
-template <class A, class B> struct some_frame<angular_acceleration_of<A, B>> {
+template <class A, class B>
+struct some_frame<angular_acceleration_of<A, B>> {
   using type = A;
 };
-template <class S, class V> struct some_frame<scaled<S, V>> : some_frame<V> {};
-template <class V> struct some_frame<vneg<V>> : some_frame<V> {};
+template <class S, class V>
+struct some_frame<scaled<S, V>> : some_frame<V> {};
+template <class V>
+struct some_frame<vneg<V>> : some_frame<V> {};
 template <template <class, class> class T, class L, class R>
-  requires(is_v<T<L, R>, vsum> || is_v<T<L, R>, vdiff> || is_v<T<L, R>, vcross>)
-struct some_frame<T<L, R>> {
+requires(is_v<T<L, R>, vsum> || is_v<T<L, R>, vdiff> || is_v<T<L, R>, vcross>) struct some_frame<T<L, R>> {
   using type = std::conditional_t<std::is_void_v<typename some_frame<L>::type>, typename some_frame<R>::type,
                                   typename some_frame<L>::type>;
 };
 
-template <class V> constexpr auto root_frame_of() {
+template <class V>
+constexpr auto root_frame_of() {
   using F = typename some_frame<V>::type;
   if constexpr (std::is_void_v<F>)
     return static_cast<root_frame*>(nullptr);
   else
     return static_cast<root_of<F>*>(nullptr);
 }
-template <class V> using root_frame_of_t = std::remove_pointer_t<decltype(root_frame_of<V>())>;
+template <class V>
+using root_frame_of_t = std::remove_pointer_t<decltype(root_frame_of<V>())>;
 
 // The axis of the edge above X as a vector in X, if its coordinate is q_R.
-template <std::size_t R, class X> constexpr auto edge_axis() {
+template <std::size_t R, class X>
+constexpr auto edge_axis() {
   if constexpr (X::step::coordinate::index != R)
     return zero_vector{};
   else {
@@ -91,18 +110,25 @@ template <std::size_t R, class X> constexpr auto edge_axis() {
     }
   }
 }
-template <std::size_t R, class... Up, class... Down> constexpr auto partial_omega(list<Up...>, list<Down...>) {
+template <std::size_t R, class... Up, class... Down>
+constexpr auto partial_omega(list<Up...>, list<Down...>) {
   return (zero_vector{} - ... - edge_axis<R, Up>()) + (zero_vector{} + ... + edge_axis<R, Down>());
 }
 
-template <class X> constexpr auto ddt(X x);
-template <class X> constexpr auto outer_derivative(X x);
-template <class A, class V> constexpr auto ddt_in(V v);
-template <class Leaf, class X> constexpr auto partial(X x);
-template <class A, class Leaf, class V> constexpr auto partial_in(V v);
+template <class X>
+constexpr auto ddt(X x);
+template <class X>
+constexpr auto outer_derivative(X x);
+template <class A, class V>
+constexpr auto ddt_in(V v);
+template <class Leaf, class X>
+constexpr auto partial(X x);
+template <class A, class Leaf, class V>
+constexpr auto partial_in(V v);
 
 // Total time derivative of a scalar (eq. 7).
-template <class X> constexpr auto ddt(X x) {
+template <class X>
+constexpr auto ddt(X x) {
   if constexpr (coordinate_info<X>::value)
     return coordinate<X::index, X::order + 1>{};
   else if constexpr (speed_info<X>::value)
@@ -131,7 +157,8 @@ template <class X> constexpr auto ddt(X x) {
 }
 
 // Partial derivative of a scalar by a leaf (q_i, q_i', u_i, t, ...).
-template <class Leaf, class X> constexpr auto partial(X x) {
+template <class Leaf, class X>
+constexpr auto partial(X x) {
   if constexpr (std::is_same_v<X, Leaf>)
     return one_t{};
   else if constexpr (coordinate_info<X>::value || speed_info<X>::value || std::is_same_v<X, time_variable> ||
@@ -157,7 +184,8 @@ template <class Leaf, class X> constexpr auto partial(X x) {
 }
 
 // f'(x) of an elementary or opaque function node f(x).
-template <class X> constexpr auto outer_derivative(X x) {
+template <class X>
+constexpr auto outer_derivative(X x) {
   if constexpr (std::is_same_v<X, unary<sin_fn, decltype(x.x)>>)
     return cos(x.x);
   else if constexpr (std::is_same_v<X, unary<cos_fn, decltype(x.x)>>)
@@ -171,7 +199,8 @@ template <class X> constexpr auto outer_derivative(X x) {
 }
 
 // ^A d v/dt by the transport theorem.
-template <class A, class V> constexpr auto ddt_in(V v) {
+template <class A, class V>
+constexpr auto ddt_in(V v) {
   if constexpr (is_zero_vector_v<V>)
     return v;
   else if constexpr (is_unit<V>::value)
@@ -195,13 +224,16 @@ template <class A, class V> constexpr auto ddt_in(V v) {
   } else if constexpr (is_v<V, angular_velocity_of> || is_v<V, angular_acceleration_of>)
     return ddt_in<A>(expand(v));
   else if constexpr (is_v<V, alpha>)
-    static_assert(!sizeof(V), "kane: the time derivative of an angular acceleration (a third derivative) is not available");
+    static_assert(
+        !sizeof(V),
+        "kane: the time derivative of an angular acceleration (a third derivative) is not available");
   else
     return ddt_in<A>(v.v);  // a kinematic quantity: its expression
 }
 
 // ^A d v/d x for a leaf x (eq. 6 for x = q_i).
-template <class A, class Leaf, class V> constexpr auto partial_in(V v) {
+template <class A, class Leaf, class V>
+constexpr auto partial_in(V v) {
   if constexpr (is_zero_vector_v<V>)
     return v;
   else if constexpr (is_unit<V>::value) {
@@ -233,30 +265,39 @@ template <class A, class Leaf, class V> constexpr auto partial_in(V v) {
 }  // namespace detail
 
 // Total time derivative of a scalar (eq. 7).
-template <ScalarExpr X> constexpr auto dt(X x) { return detail::ddt(x); }
+template <ScalarExpr X>
+constexpr auto dt(X x) {
+  return detail::ddt(x);
+}
 
 // ^A dv/dt (eq. 7 and 12).
-template <Frame A, VectorExpr V> constexpr auto dt(V v) { return detail::ddt_in<A>(v); }
+template <Frame A, VectorExpr V>
+constexpr auto dt(V v) {
+  return detail::ddt_in<A>(v);
+}
 
-template <VectorExpr V> error::a_vector_derivative_needs_a_frame_write_dt_A_of_v<V> dt(V v) = delete;
+// clang-format off
+template <VectorExpr V>
+error::a_vector_derivative_needs_a_frame_write_dt_A_of_v<V> dt(V v) = delete;
+// clang-format on
 
 // Partial derivative of a scalar by q<i>, dt(q<i>), u<i> or t.
 template <ScalarExpr X, ScalarExpr Leaf>
-  requires(detail::coordinate_info<Leaf>::value || detail::speed_info<Leaf>::value ||
-           std::is_same_v<Leaf, time_variable>)
-constexpr auto diff(X x, Leaf) {
+requires(detail::coordinate_info<Leaf>::value || detail::speed_info<Leaf>::value ||
+         std::is_same_v<Leaf, time_variable>) constexpr auto diff(X x, Leaf) {
   return detail::partial<Leaf>(x);
 }
 
 // ^A dv/dq_i (eq. 6).
 template <Frame A, VectorExpr V, ScalarExpr Leaf>
-  requires(detail::coordinate_info<Leaf>::value || detail::speed_info<Leaf>::value ||
-           std::is_same_v<Leaf, time_variable>)
-constexpr auto diff(V v, Leaf) {
+requires(detail::coordinate_info<Leaf>::value || detail::speed_info<Leaf>::value ||
+         std::is_same_v<Leaf, time_variable>) constexpr auto diff(V v, Leaf) {
   return detail::partial_in<A, Leaf>(v);
 }
 
+// clang-format off
 template <VectorExpr V, ScalarExpr Leaf>
 error::a_vector_derivative_needs_a_frame_write_diff_A_of_v_q<V> diff(V v, Leaf) = delete;
+// clang-format on
 
 }  // namespace kane

@@ -23,8 +23,8 @@
 #include "kane/angular_velocity.hpp"
 #include "kane/derivative.hpp"
 #include "kane/detail/list.hpp"
-#include "kane/detail/trig.hpp"
 #include "kane/detail/tree.hpp"
+#include "kane/detail/trig.hpp"
 #include "kane/expr.hpp"
 #include "kane/state.hpp"
 #include "kane/vec.hpp"
@@ -32,18 +32,24 @@
 
 namespace kane {
 
-template <class... F> struct frames {};
+template <class... F>
+struct frames {};
 
 // What the outward pass computes: orientations, + angular velocities, + angular accelerations.
 enum class level { pose, velocity, acceleration };
 
 namespace detail {
-template <class L> struct closure_of;
-template <class... F> struct closure_of<frames<F...>> : closure<F...> {};
+template <class L>
+struct closure_of;
+template <class... F>
+struct closure_of<frames<F...>> : closure<F...> {};
 
-template <class L> struct step_coordinates;
-template <class... F> struct step_coordinates<list<F...>> {
-  template <class X> static constexpr std::size_t index() {
+template <class L>
+struct step_coordinates;
+template <class... F>
+struct step_coordinates<list<F...>> {
+  template <class X>
+  static constexpr std::size_t index() {
     if constexpr (std::is_void_v<typename X::tree_parent>)
       return 0;
     else
@@ -60,9 +66,11 @@ template <class... F> struct step_coordinates<list<F...>> {
 };
 }  // namespace detail
 
-template <State St, class Frames, level Level = level::acceleration> class evaluator;
+template <State St, class Frames, level Level = level::acceleration>
+class evaluator;
 
-template <State St, Frame... Fs, level Level> class evaluator<St, frames<Fs...>, Level> {
+template <State St, Frame... Fs, level Level>
+class evaluator<St, frames<Fs...>, Level> {
  public:
   using state_type = St;
   using scalar = typename St::scalar;
@@ -87,30 +95,40 @@ template <State St, Frame... Fs, level Level> class evaluator<St, frames<Fs...>,
 
   const St& state() const { return *st_; }
 
-  template <class F> static constexpr bool holds = detail::contains<F, closure>::value;
+  template <class F>
+  static constexpr bool holds = detail::contains<F, closure>::value;
 
   // Columns e_F1, e_F2, e_F3 in the root's components: (^R P^F)^T.
-  template <class F> const matrix3& axes() const { return c_[index<F>()]; }
-  template <class F> const vector3& omega() const {
-    static_assert(Level >= level::velocity,
-                  "kane: this evaluator computes no angular velocities; declare it with level::velocity or higher");
+  template <class F>
+  const matrix3& axes() const {
+    return c_[index<F>()];
+  }
+  template <class F>
+  const vector3& omega() const {
+    static_assert(
+        Level >= level::velocity,
+        "kane: this evaluator computes no angular velocities; declare it with level::velocity or higher");
     return w_[index<F>()];
   }
-  template <class F> const vector3& alpha() const {
-    static_assert(Level >= level::acceleration,
-                  "kane: this evaluator computes no angular accelerations; declare it with level::acceleration");
+  template <class F>
+  const vector3& alpha() const {
+    static_assert(
+        Level >= level::acceleration,
+        "kane: this evaluator computes no angular accelerations; declare it with level::acceleration");
     return a_[index<F>()];
   }
 
   // sin q_I and cos q_I: from the cache when a frame turns by q_I.
-  template <std::size_t I> scalar sin_q() const {
+  template <std::size_t I>
+  scalar sin_q() const {
     using std::sin;
     if constexpr (is_cached<I>())
       return trig_.sin(I);
     else
       return sin(st_->q[I - 1]);
   }
-  template <std::size_t I> scalar cos_q() const {
+  template <std::size_t I>
+  scalar cos_q() const {
     using std::cos;
     if constexpr (is_cached<I>())
       return trig_.cos(I);
@@ -120,13 +138,15 @@ template <State St, Frame... Fs, level Level> class evaluator<St, frames<Fs...>,
 
  private:
   static constexpr auto cached = detail::step_coordinates<closure>::value;
-  template <std::size_t I> static constexpr bool is_cached() {
+  template <std::size_t I>
+  static constexpr bool is_cached() {
     for (std::size_t k : cached)
       if (k == I) return true;
     return false;
   }
 
-  template <class F> static constexpr std::size_t index() {
+  template <class F>
+  static constexpr std::size_t index() {
     static_assert(detail::contains<F, closure>::value,
                   "kane: this evaluator does not hold the frame; list it (or a frame below it) in "
                   "evaluator<State, frames<...>>");
@@ -136,9 +156,13 @@ template <State St, Frame... Fs, level Level> class evaluator<St, frames<Fs...>,
       return 0;
   }
 
-  template <class... F> void pass(detail::list<F...>) { (edge<F>(), ...); }
+  template <class... F>
+  void pass(detail::list<F...>) {
+    (edge<F>(), ...);
+  }
 
-  template <class F> void edge() {
+  template <class F>
+  void edge() {
     if constexpr (!std::is_void_v<typename F::tree_parent>) {
       using P = typename F::tree_parent;
       using K = typename F::step::axis;
@@ -172,7 +196,8 @@ template <State St, Frame... Fs, level Level> class evaluator<St, frames<Fs...>,
       if constexpr (Level >= level::velocity) {
         const scalar qd = st_->qd[q - 1];
         w_[i] = w_[ip] + qd * k;
-        if constexpr (Level >= level::acceleration) a_[i] = a_[ip] + st_->qdd[q - 1] * k + qd * w_[ip].cross(k);
+        if constexpr (Level >= level::acceleration)
+          a_[i] = a_[ip] + st_->qdd[q - 1] * k + qd * w_[ip].cross(k);
       }
     }
   }
@@ -186,13 +211,18 @@ template <State St, Frame... Fs, level Level> class evaluator<St, frames<Fs...>,
 
 namespace detail {
 
-template <class X> struct is_evaluator : std::false_type {};
-template <class St, class Fr, level L> struct is_evaluator<evaluator<St, Fr, L>> : std::true_type {};
+template <class X>
+struct is_evaluator : std::false_type {};
+template <class St, class Fr, level L>
+struct is_evaluator<evaluator<St, Fr, L>> : std::true_type {};
 
-template <class Ev, class X> typename Ev::scalar eval_scalar(const X& x, const Ev& ev);
-template <class Ev, class V> typename Ev::vector3 eval_vector(const V& v, const Ev& ev);
+template <class Ev, class X>
+typename Ev::scalar eval_scalar(const X& x, const Ev& ev);
+template <class Ev, class V>
+typename Ev::vector3 eval_vector(const V& v, const Ev& ev);
 
-template <class Ev, class X> typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
+template <class Ev, class X>
+typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
   using S = typename Ev::scalar;
   if constexpr (coordinate_info<X>::value || speed_info<X>::value)
     return ev.state()[x];
@@ -249,7 +279,8 @@ template <class Ev, class X> typename Ev::scalar eval_scalar(const X& x, const E
 }
 
 // Components in the root frame.
-template <class Ev, class V> typename Ev::vector3 eval_vector(const V& v, const Ev& ev) {
+template <class Ev, class V>
+typename Ev::vector3 eval_vector(const V& v, const Ev& ev) {
   using S = typename Ev::scalar;
   using V3 = typename Ev::vector3;
   if constexpr (is_zero_vector_v<V>)
@@ -287,15 +318,13 @@ template <class Ev, class V> typename Ev::vector3 eval_vector(const V& v, const 
 
 // The value of a scalar expression.
 template <ScalarExpr X, class Ev>
-  requires detail::is_evaluator<Ev>::value
-typename Ev::scalar evaluate(const X& x, const Ev& ev) {
+requires detail::is_evaluator<Ev>::value typename Ev::scalar evaluate(const X& x, const Ev& ev) {
   return detail::eval_scalar(x, ev);
 }
 
 // ^A v: the components of the vector expression v in A.
 template <Frame A, VectorExpr V, class Ev>
-  requires detail::is_evaluator<Ev>::value
-vec<A, typename Ev::scalar> express(const V& v, const Ev& ev) {
+requires detail::is_evaluator<Ev>::value vec<A, typename Ev::scalar> express(const V& v, const Ev& ev) {
   using R = detail::root_of<A>;
   using VR = detail::root_frame_of_t<V>;
   static_assert(std::is_same_v<VR, root_frame> || std::is_same_v<VR, R>,

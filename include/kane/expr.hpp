@@ -27,7 +27,8 @@ template <class T>
 concept Number = std::is_arithmetic_v<T>;
 
 // N/D, reduced, as a type.
-template <std::intmax_t N, std::intmax_t D = 1> struct constant : detail::scalar_tag {
+template <std::intmax_t N, std::intmax_t D = 1>
+struct constant : detail::scalar_tag {
   static_assert(D != 0, "kane: a constant's denominator must not be zero");
   static constexpr std::intmax_t num = N;
   static constexpr std::intmax_t den = D;
@@ -41,27 +42,32 @@ struct literal : detail::scalar_tag {
   constexpr explicit literal(double v) : value(v) {}
 };
 
-template <class L, class R> struct add : detail::scalar_tag {
+template <class L, class R>
+struct add : detail::scalar_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr add(L a, R b) : l(a), r(b) {}
 };
-template <class L, class R> struct sub : detail::scalar_tag {
+template <class L, class R>
+struct sub : detail::scalar_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr sub(L a, R b) : l(a), r(b) {}
 };
-template <class L, class R> struct mul : detail::scalar_tag {
+template <class L, class R>
+struct mul : detail::scalar_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr mul(L a, R b) : l(a), r(b) {}
 };
-template <class L, class R> struct quot : detail::scalar_tag {
+template <class L, class R>
+struct quot : detail::scalar_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr quot(L a, R b) : l(a), r(b) {}
 };
-template <class X> struct neg : detail::scalar_tag {
+template <class X>
+struct neg : detail::scalar_tag {
   [[no_unique_address]] X x;
   constexpr explicit neg(X a) : x(a) {}
 };
@@ -70,22 +76,29 @@ template <class X> struct neg : detail::scalar_tag {
 struct sin_fn {};
 struct cos_fn {};
 struct sqrt_fn {};
-template <class Fn, class X> struct unary : detail::scalar_tag {
+template <class Fn, class X>
+struct unary : detail::scalar_tag {
   [[no_unique_address]] X x;
   constexpr explicit unary(X a) : x(a) {}
 };
 // x^N for an integer N.
-template <class X, int N> struct power : detail::scalar_tag {
+template <class X, int N>
+struct power : detail::scalar_tag {
   [[no_unique_address]] X x;
   constexpr explicit power(X a) : x(a) {}
 };
 // f(x) for an opaque user function object f, generic in its argument so that
 // it runs on dual numbers; derivative_of<F> is f'(x), found by forward mode.
-template <class F> struct derivative_of {
+template <class F>
+struct derivative_of {
   [[no_unique_address]] F f;
-  template <class T> constexpr T operator()(T x) const { return f(detail::dual<T>{x, T(1)}).d; }
+  template <class T>
+  constexpr T operator()(T x) const {
+    return f(detail::dual<T>{x, T(1)}).d;
+  }
 };
-template <class F, class X> struct call : detail::scalar_tag {
+template <class F, class X>
+struct call : detail::scalar_tag {
   [[no_unique_address]] F f;
   [[no_unique_address]] X x;
   constexpr call(F g, X a) : f(g), x(a) {}
@@ -93,17 +106,23 @@ template <class F, class X> struct call : detail::scalar_tag {
 
 namespace detail {
 
-template <class T> struct is_neg : std::false_type {};
-template <class X> struct is_neg<neg<X>> : std::true_type {};
-template <class T> struct is_constant : std::false_type {};
-template <std::intmax_t N, std::intmax_t D> struct is_constant<constant<N, D>> : std::true_type {};
+template <class T>
+struct is_neg : std::false_type {};
+template <class X>
+struct is_neg<neg<X>> : std::true_type {};
+template <class T>
+struct is_constant : std::false_type {};
+template <std::intmax_t N, std::intmax_t D>
+struct is_constant<constant<N, D>> : std::true_type {};
 
-template <std::intmax_t N, std::intmax_t D> constexpr auto make_constant() {
+template <std::intmax_t N, std::intmax_t D>
+constexpr auto make_constant() {
   constexpr std::intmax_t g = std::gcd(N, D) * (D < 0 ? -1 : 1);
   return constant<N / g, D / g>{};
 }
 
-template <class X> constexpr auto as_expr(X x) {
+template <class X>
+constexpr auto as_expr(X x) {
   if constexpr (ScalarExpr<X>)
     return x;
   else
@@ -112,13 +131,16 @@ template <class X> constexpr auto as_expr(X x) {
 
 }  // namespace detail
 
-template <class T> inline constexpr bool is_zero_v = std::is_same_v<T, zero_t>;
-template <class T> inline constexpr bool is_one_v = std::is_same_v<T, one_t>;
+template <class T>
+inline constexpr bool is_zero_v = std::is_same_v<T, zero_t>;
+template <class T>
+inline constexpr bool is_one_v = std::is_same_v<T, one_t>;
 
 template <class T>
 concept ScalarOperand = ScalarExpr<T> || Number<T>;
 
-template <ScalarExpr X> constexpr auto operator-(X x) {
+template <ScalarExpr X>
+constexpr auto operator-(X x) {
   if constexpr (detail::is_constant<X>::value)
     return detail::make_constant<-X::num, X::den>();
   else if constexpr (detail::is_neg<X>::value)
@@ -128,8 +150,7 @@ template <ScalarExpr X> constexpr auto operator-(X x) {
 }
 
 template <ScalarOperand L, ScalarOperand R>
-  requires(ScalarExpr<L> || ScalarExpr<R>)
-constexpr auto operator+(L l_, R r_) {
+requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator+(L l_, R r_) {
   auto l = detail::as_expr(l_);
   auto r = detail::as_expr(r_);
   using A = decltype(l);
@@ -145,8 +166,7 @@ constexpr auto operator+(L l_, R r_) {
 }
 
 template <ScalarOperand L, ScalarOperand R>
-  requires(ScalarExpr<L> || ScalarExpr<R>)
-constexpr auto operator-(L l_, R r_) {
+requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator-(L l_, R r_) {
   auto l = detail::as_expr(l_);
   auto r = detail::as_expr(r_);
   using A = decltype(l);
@@ -162,8 +182,7 @@ constexpr auto operator-(L l_, R r_) {
 }
 
 template <ScalarOperand L, ScalarOperand R>
-  requires(ScalarExpr<L> || ScalarExpr<R>)
-constexpr auto operator*(L l_, R r_) {
+requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator*(L l_, R r_) {
   auto l = detail::as_expr(l_);
   auto r = detail::as_expr(r_);
   using A = decltype(l);
@@ -185,8 +204,7 @@ constexpr auto operator*(L l_, R r_) {
 }
 
 template <ScalarOperand L, ScalarOperand R>
-  requires(ScalarExpr<L> || ScalarExpr<R>)
-constexpr auto operator/(L l_, R r_) {
+requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator/(L l_, R r_) {
   auto l = detail::as_expr(l_);
   auto r = detail::as_expr(r_);
   using A = decltype(l);
@@ -202,22 +220,28 @@ constexpr auto operator/(L l_, R r_) {
     return quot<A, B>(l, r);
 }
 
-template <ScalarExpr X> constexpr auto sin(X x) {
+template <ScalarExpr X>
+constexpr auto sin(X x) {
   if constexpr (is_zero_v<X>)
     return zero_t{};
   else
     return unary<sin_fn, X>(x);
 }
-template <ScalarExpr X> constexpr auto cos(X x) {
+template <ScalarExpr X>
+constexpr auto cos(X x) {
   if constexpr (is_zero_v<X>)
     return one_t{};
   else
     return unary<cos_fn, X>(x);
 }
-template <ScalarExpr X> constexpr auto sqrt(X x) { return unary<sqrt_fn, X>(x); }
+template <ScalarExpr X>
+constexpr auto sqrt(X x) {
+  return unary<sqrt_fn, X>(x);
+}
 
 // x^N; x^0 = 1, x^1 = x.
-template <int N, ScalarExpr X> constexpr auto pow(X x) {
+template <int N, ScalarExpr X>
+constexpr auto pow(X x) {
   if constexpr (N == 0)
     return one_t{};
   else if constexpr (N == 1)
@@ -229,7 +253,9 @@ template <int N, ScalarExpr X> constexpr auto pow(X x) {
 }
 
 // f(x) with f an opaque function object callable on any scalar type.
-template <class F, ScalarExpr X> constexpr auto invoke(F f, X x) { return call<F, X>(f, x); }
+template <class F, ScalarExpr X>
+constexpr auto invoke(F f, X x) {
+  return call<F, X>(f, x);
+}
 
 }  // namespace kane
-

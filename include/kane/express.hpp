@@ -27,7 +27,8 @@ template <class Up, class Down>
 struct path_coordinates;
 template <class... Up, class... Down>
 struct path_coordinates<list<Up...>, list<Down...>> {
-  static constexpr auto value = unique_indices<Up::step::coordinate::index..., Down::step::coordinate::index...>();
+  static constexpr auto value =
+      unique_indices<Up::step::coordinate::index..., Down::step::coordinate::index...>();
 };
 
 // A factor of a chain: ^P P^F of the edge above F, transposed when walking up.

@@ -37,7 +37,8 @@ struct root_frame : detail::frame_tag {
 
 namespace detail {
 // The frame reached after step K (1-based) of Steps from Parent.
-template <class Parent, class Steps, std::size_t K> struct aux_frame : frame_tag {
+template <class Parent, class Steps, std::size_t K>
+struct aux_frame : frame_tag {
   using tree_parent = std::conditional_t<K == 1, Parent, aux_frame<Parent, Steps, K - 1>>;
   using step = typename at<Steps, K - 1>::type;
 };
@@ -62,7 +63,8 @@ struct frame : detail::frame_tag {
 
  public:
   // The edge of the tree above this frame: its last simple rotation.
-  using tree_parent = std::conditional_t<n_ == 1, Parent, detail::aux_frame<Parent, typename O::steps, n_ - 1>>;
+  using tree_parent =
+      std::conditional_t<n_ == 1, Parent, detail::aux_frame<Parent, typename O::steps, n_ - 1>>;
   using step = typename detail::at<typename O::steps, n_ - 1>::type;
 };
 

@@ -38,15 +38,18 @@ constexpr std::string_view type_name() {
 }
 
 namespace detail {
-template <class F> struct aux_info : std::false_type {};
-template <class P, class Steps, std::size_t K> struct aux_info<aux_frame<P, Steps, K>> : std::true_type {
+template <class F>
+struct aux_info : std::false_type {};
+template <class P, class Steps, std::size_t K>
+struct aux_info<aux_frame<P, Steps, K>> : std::true_type {
   using parent = P;
   static constexpr std::size_t k = K;
 };
 }  // namespace detail
 
 // A frame's name: its type's name; D', D'' for the auxiliary frames from D.
-template <class F> std::string frame_name() {
+template <class F>
+std::string frame_name() {
   if constexpr (detail::aux_info<F>::value)
     return frame_name<typename detail::aux_info<F>::parent>() + std::string(detail::aux_info<F>::k, '\'');
   else
@@ -68,7 +71,8 @@ std::ostream& operator<<(std::ostream& os, const dcm<A, B, S>& p) {
 namespace detail {
 
 // Precedence: 0 sum, 1 product, 2 unary minus, 3 atom.
-template <class X> constexpr int precedence() {
+template <class X>
+constexpr int precedence() {
   if constexpr (is_v<X, add> || is_v<X, sub> || is_v<X, vsum> || is_v<X, vdiff>)
     return 0;
   else if constexpr (is_v<X, mul> || is_v<X, quot> || is_v<X, scaled> || is_v<X, vcross> || is_v<X, vdot>)
@@ -82,10 +86,13 @@ template <class X> constexpr int precedence() {
     return 3;
 }
 
-template <class X> void print_expr(std::ostream& os, const X& x);
-template <class F> void print_function(std::ostream& os, const F& f);
+template <class X>
+void print_expr(std::ostream& os, const X& x);
+template <class F>
+void print_function(std::ostream& os, const F& f);
 
-template <class X> void print_operand(std::ostream& os, const X& x, int min) {
+template <class X>
+void print_operand(std::ostream& os, const X& x, int min) {
   if constexpr (is_v<X, velocity_of> || is_v<X, acceleration_of>)
     print_operand(os, x.v, min);
   else if (precedence<X>() < min) {
@@ -96,7 +103,8 @@ template <class X> void print_operand(std::ostream& os, const X& x, int min) {
     print_expr(os, x);
 }
 
-template <class X> void print_expr(std::ostream& os, const X& x) {
+template <class X>
+void print_expr(std::ostream& os, const X& x) {
   if constexpr (coordinate_info<X>::value || speed_info<X>::value)
     os << (coordinate_info<X>::value ? 'q' : 'u') << X::index << std::string(X::order, '\'');
   else if constexpr (Parameter<X>) {
@@ -132,7 +140,7 @@ template <class X> void print_expr(std::ostream& os, const X& x) {
   } else if constexpr (is_v<X, unary>) {
     os << (std::is_same_v<X, unary<sin_fn, decltype(x.x)>>   ? "sin("
            : std::is_same_v<X, unary<cos_fn, decltype(x.x)>> ? "cos("
-                                                              : "sqrt(");
+                                                             : "sqrt(");
     print_expr(os, x.x);
     os << ')';
   } else if constexpr (power_info<X>::value) {
@@ -167,7 +175,8 @@ template <class X> void print_expr(std::ostream& os, const X& x) {
     print_expr(os, x.v);  // a kinematic quantity: its expression
 }
 
-template <class F> void print_function(std::ostream& os, const F& f) {
+template <class F>
+void print_function(std::ostream& os, const F& f) {
   if constexpr (is_v<F, derivative_of>) {
     print_function(os, f.f);
     os << '\'';
@@ -179,16 +188,14 @@ template <class F> void print_function(std::ostream& os, const F& f) {
 
 // The expression in Kane's notation, e.g. "L1*q1' a2".
 template <class X>
-  requires ScalarExpr<X> || VectorExpr<X>
-std::string to_string(const X& x) {
+requires ScalarExpr<X> || VectorExpr<X> std::string to_string(const X& x) {
   std::ostringstream os;
   detail::print_expr(os, x);
   return os.str();
 }
 
 template <class X>
-  requires ScalarExpr<X> || VectorExpr<X>
-std::ostream& operator<<(std::ostream& os, const X& x) {
+requires ScalarExpr<X> || VectorExpr<X> std::ostream& operator<<(std::ostream& os, const X& x) {
   detail::print_expr(os, x);
   return os;
 }

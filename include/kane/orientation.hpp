@@ -52,12 +52,14 @@ constexpr bool valid_sequence() {
 }  // namespace detail
 
 // C rotated from P about K (components in P, equal in C) by Q.
-template <Axis K, Coordinate Q> struct simple {
+template <Axis K, Coordinate Q>
+struct simple {
   using axis = K;
   using coordinate = Q;
   using steps = detail::list<simple>;
   // ^P P^C
-  template <class S, class Trig> static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
+  template <class S, class Trig>
+  static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
     return detail::elementary<S, K>(t.cos(Q::index), t.sin(Q::index));
   }
 };
@@ -65,7 +67,8 @@ template <Axis K, Coordinate Q> struct simple {
 // Body-fixed I-J-K: about P's axis I by Q1, then the new J by Q2, then the
 // newest K by Q3; three simple rotations through two auxiliary frames, so
 // ^P P^C = E_K(q3) E_J(q2) E_I(q1).
-template <int I, int J, int K, Coordinate Q1, Coordinate Q2, Coordinate Q3> struct body_fixed {
+template <int I, int J, int K, Coordinate Q1, Coordinate Q2, Coordinate Q3>
+struct body_fixed {
   static_assert(detail::valid_sequence<I, J, K>(),
                 "kane: a rotation sequence takes axes 1, 2, 3 with consecutive axes different "
                 "(the twelve sequences 1-2-3 ... 3-2-1 and 1-2-1 ... 3-2-3)");
@@ -81,6 +84,9 @@ struct space_fixed : body_fixed<K, J, I, Q3, Q2, Q1> {};
 // An orientation is a list of simple rotations (a quaternion or explicit
 // dcm orientation would add an edge kind of its own).
 template <class O>
-concept Orientation = requires { typename O::steps; } && detail::size<typename O::steps>::value >= 1;
+concept Orientation = requires {
+  typename O::steps;
+}
+&&detail::size<typename O::steps>::value >= 1;
 
 }  // namespace kane

@@ -28,14 +28,16 @@ template <class P>
 concept Point = std::derived_from<P, detail::point_tag>;
 
 // A root point, fixed in F.
-template <Frame F> struct origin : detail::point_tag {
+template <Frame F>
+struct origin : detail::point_tag {
   using from = void;
   using fixed_frame = F;
   static constexpr zero_vector position{};
 };
 
 // A point located from the point From by the vector Position (r^{From, this}).
-template <class From, auto Position> struct point : detail::point_tag {
+template <class From, auto Position>
+struct point : detail::point_tag {
   static_assert(Point<From>, "kane: point<From, r> needs a point From (kane::origin or kane::point)");
   static_assert(VectorExpr<decltype(Position)>, "kane: point<From, r> needs a vector expression r");
   using from = From;
@@ -43,36 +45,46 @@ template <class From, auto Position> struct point : detail::point_tag {
 };
 
 // ^A v^P and ^A a^P: a vector expression that remembers its frame and point.
-template <class A, class P, class V> struct velocity_of : detail::vector_tag {
+template <class A, class P, class V>
+struct velocity_of : detail::vector_tag {
   using observer = A;
   [[no_unique_address]] V v;
   constexpr explicit velocity_of(V x) : v(x) {}
 };
-template <class A, class P, class V> struct acceleration_of : detail::vector_tag {
+template <class A, class P, class V>
+struct acceleration_of : detail::vector_tag {
   using observer = A;
   [[no_unique_address]] V v;
   constexpr explicit acceleration_of(V x) : v(x) {}
 };
 
 namespace detail {
-template <class A, class P, class V> struct some_frame<velocity_of<A, P, V>> {
+template <class A, class P, class V>
+struct some_frame<velocity_of<A, P, V>> {
   using type = A;
 };
-template <class A, class P, class V> struct some_frame<acceleration_of<A, P, V>> {
+template <class A, class P, class V>
+struct some_frame<acceleration_of<A, P, V>> {
   using type = A;
 };
 
 // list<P, from of P, ..., origin>
-template <class P, class From = typename P::from> struct point_chain {
+template <class P, class From = typename P::from>
+struct point_chain {
   using type = typename push_front<P, typename point_chain<From>::type>::type;
 };
-template <class P> struct point_chain<P, void> {
+template <class P>
+struct point_chain<P, void> {
   using type = list<P>;
 };
 
-template <class... P> constexpr auto sum_positions(list<P...>) { return (zero_vector{} + ... + P::position); }
+template <class... P>
+constexpr auto sum_positions(list<P...>) {
+  return (zero_vector{} + ... + P::position);
+}
 
-template <class P, class A> constexpr bool fixed_in() {
+template <class P, class A>
+constexpr bool fixed_in() {
   if constexpr (std::is_void_v<typename P::from>)
     return std::is_same_v<typename P::fixed_frame, A>;
   else if constexpr (!fixed_in<typename P::from, A>())
@@ -82,20 +94,24 @@ template <class P, class A> constexpr bool fixed_in() {
 }
 
 // The first point of L fixed in A, or void.
-template <class L, class A> struct first_fixed {
+template <class L, class A>
+struct first_fixed {
   using type = void;
 };
-template <class H, class... T, class A> struct first_fixed<list<H, T...>, A> {
+template <class H, class... T, class A>
+struct first_fixed<list<H, T...>, A> {
   using type = std::conditional_t<fixed_in<H, A>(), H, typename first_fixed<list<T...>, A>::type>;
 };
 
-template <class A, class P, class V> constexpr auto measured_velocity(V v) {
+template <class A, class P, class V>
+constexpr auto measured_velocity(V v) {
   if constexpr (is_zero_vector_v<V>)
     return v;
   else
     return velocity_of<A, P, V>(v);
 }
-template <class A, class P, class V> constexpr auto measured_acceleration(V v) {
+template <class A, class P, class V>
+constexpr auto measured_acceleration(V v) {
   if constexpr (is_zero_vector_v<V>)
     return v;
   else
@@ -104,7 +120,8 @@ template <class A, class P, class V> constexpr auto measured_acceleration(V v) {
 }  // namespace detail
 
 // r^PQ, the position of Q from P.
-template <Point P, Point Q> constexpr auto position() {
+template <Point P, Point Q>
+constexpr auto position() {
   using cp = typename detail::point_chain<P>::type;
   using cq = typename detail::point_chain<Q>::type;
   using X = typename detail::first_common<cp, cq>::type;
@@ -116,10 +133,12 @@ template <Point P, Point Q> constexpr auto position() {
            detail::sum_positions(typename detail::before<cp, X>::type{});
 }
 
-template <Point P, Frame A> inline constexpr bool fixed_in_v = detail::fixed_in<P, A>();
+template <Point P, Frame A>
+inline constexpr bool fixed_in_v = detail::fixed_in<P, A>();
 
 // ^A v^P (eq. 15).
-template <Frame A, Point P> constexpr auto velocity(P = {}) {
+template <Frame A, Point P>
+constexpr auto velocity(P = {}) {
   using Q = typename detail::first_fixed<typename detail::point_chain<P>::type, A>::type;
   static_assert(!std::is_void_v<Q>,
                 "kane: no point on this point's chain is fixed in the frame of differentiation; "
@@ -132,25 +151,30 @@ template <Frame A, Point P> constexpr auto velocity(P = {}) {
 }
 
 // ^A a^P = ^A d(^A v^P)/dt (eq. 15).
-template <Frame A, Point P> constexpr auto acceleration(P = {}) {
+template <Frame A, Point P>
+constexpr auto acceleration(P = {}) {
   return detail::measured_acceleration<A, P>(dt<A>(velocity<A, P>()));
 }
 
 // Two points P, Q fixed in B: ^A v^P = ^A v^Q + ^A w^B x r^QP. Checked at
 // compile time: r^QP has a zero B-derivative.
-template <Frame A, Frame B, Point Q, Point P> constexpr auto two_point_velocity() {
+template <Frame A, Frame B, Point Q, Point P>
+constexpr auto two_point_velocity() {
   constexpr auto r = position<Q, P>();
-  static_assert(is_zero_vector_v<decltype(dt<B>(r))>,
-                "kane: the two-point theorem needs both points fixed in the body frame B (r^QP changes in B); "
-                "use one_point_velocity<A, B, Q, P>()");
+  static_assert(
+      is_zero_vector_v<decltype(dt<B>(r))>,
+      "kane: the two-point theorem needs both points fixed in the body frame B (r^QP changes in B); "
+      "use one_point_velocity<A, B, Q, P>()");
   return detail::measured_velocity<A, P>(velocity<A, Q>() + cross(angular_velocity<A, B>(), r));
 }
 // ^A a^P = ^A a^Q + ^A alpha^B x r^QP + ^A w^B x (^A w^B x r^QP).
-template <Frame A, Frame B, Point Q, Point P> constexpr auto two_point_acceleration() {
+template <Frame A, Frame B, Point Q, Point P>
+constexpr auto two_point_acceleration() {
   constexpr auto r = position<Q, P>();
-  static_assert(is_zero_vector_v<decltype(dt<B>(r))>,
-                "kane: the two-point theorem needs both points fixed in the body frame B (r^QP changes in B); "
-                "use one_point_acceleration<A, B, Q, P>()");
+  static_assert(
+      is_zero_vector_v<decltype(dt<B>(r))>,
+      "kane: the two-point theorem needs both points fixed in the body frame B (r^QP changes in B); "
+      "use one_point_acceleration<A, B, Q, P>()");
   constexpr auto w = angular_velocity<A, B>();
   return detail::measured_acceleration<A, P>(acceleration<A, Q>() + cross(angular_acceleration<A, B>(), r) +
                                              cross(w, cross(w, r)));
@@ -158,12 +182,14 @@ template <Frame A, Frame B, Point Q, Point P> constexpr auto two_point_accelerat
 // P moving on B, Q fixed in B: ^A v^P = ^A v^Q + ^B v^P + ^A w^B x r^QP, with
 // ^B v^P = ^B d r^QP/dt (the identity holds for any Q; Q fixed in B makes it
 // the one-point theorem).
-template <Frame A, Frame B, Point Q, Point P> constexpr auto one_point_velocity() {
+template <Frame A, Frame B, Point Q, Point P>
+constexpr auto one_point_velocity() {
   constexpr auto r = position<Q, P>();
   return detail::measured_velocity<A, P>(velocity<A, Q>() + dt<B>(r) + cross(angular_velocity<A, B>(), r));
 }
 // ^A a^P = ^A a^Q + ^B a^P + 2 ^A w^B x ^B v^P + ^A alpha^B x r + ^A w^B x (^A w^B x r).
-template <Frame A, Frame B, Point Q, Point P> constexpr auto one_point_acceleration() {
+template <Frame A, Frame B, Point Q, Point P>
+constexpr auto one_point_acceleration() {
   constexpr auto r = position<Q, P>();
   constexpr auto w = angular_velocity<A, B>();
   constexpr auto vB = dt<B>(r);
@@ -172,21 +198,15 @@ template <Frame A, Frame B, Point Q, Point P> constexpr auto one_point_accelerat
 }
 
 // ^A v^P + ^B v^Q with A != B does not compile; likewise accelerations.
-template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W>
-  requires DifferentFrames<FirstObserver, SecondObserver>
-error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator+(
-    velocity_of<FirstObserver, P, V>, velocity_of<SecondObserver, Q, W>) = delete;
-template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W>
-  requires DifferentFrames<FirstObserver, SecondObserver>
-error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator-(
-    velocity_of<FirstObserver, P, V>, velocity_of<SecondObserver, Q, W>) = delete;
-template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W>
-  requires DifferentFrames<FirstObserver, SecondObserver>
-error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator+(
-    acceleration_of<FirstObserver, P, V>, acceleration_of<SecondObserver, Q, W>) = delete;
-template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W>
-  requires DifferentFrames<FirstObserver, SecondObserver>
-error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator-(
-    acceleration_of<FirstObserver, P, V>, acceleration_of<SecondObserver, Q, W>) = delete;
+// clang-format off
+template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W> requires DifferentFrames<FirstObserver, SecondObserver>
+error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator+(velocity_of<FirstObserver, P, V>, velocity_of<SecondObserver, Q, W>) = delete;
+template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W> requires DifferentFrames<FirstObserver, SecondObserver>
+error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator-(velocity_of<FirstObserver, P, V>, velocity_of<SecondObserver, Q, W>) = delete;
+template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W> requires DifferentFrames<FirstObserver, SecondObserver>
+error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator+(acceleration_of<FirstObserver, P, V>, acceleration_of<SecondObserver, Q, W>) = delete;
+template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W> requires DifferentFrames<FirstObserver, SecondObserver>
+error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator-(acceleration_of<FirstObserver, P, V>, acceleration_of<SecondObserver, Q, W>) = delete;
+// clang-format on
 
 }  // namespace kane

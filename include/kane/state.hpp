@@ -13,7 +13,8 @@ namespace kane {
 // q_1..q_NQ at q[0..NQ-1] with their first and second time derivatives qd,
 // qdd; generalized speeds u and their derivatives ud; parameters p; time t.
 // An aggregate: value-initialised to zero, trivially copyable, no heap.
-template <class S, std::size_t NQ, std::size_t NU = NQ, std::size_t NP = 0> struct state {
+template <class S, std::size_t NQ, std::size_t NU = NQ, std::size_t NP = 0>
+struct state {
   static_assert(Scalar<S>, "kane: state<S, NQ, ...> needs a scalar type S (float, double, ...)");
   using scalar = S;
   static constexpr std::size_t nq = NQ;
@@ -28,15 +29,34 @@ template <class S, std::size_t NQ, std::size_t NU = NQ, std::size_t NP = 0> stru
   std::array<S, NP> p{};
   S t{};
 
-  template <std::size_t I, std::size_t D> S& operator[](coordinate<I, D>) { return pick<I, D>(*this); }
-  template <std::size_t I, std::size_t D> const S& operator[](coordinate<I, D>) const { return pick<I, D>(*this); }
-  template <std::size_t I, std::size_t D> S& operator[](speed<I, D>) { return pick_u<I, D>(*this); }
-  template <std::size_t I, std::size_t D> const S& operator[](speed<I, D>) const { return pick_u<I, D>(*this); }
-  template <std::size_t I> S& operator[](parameter<I>) { return pick_p<I>(*this); }
-  template <std::size_t I> const S& operator[](parameter<I>) const { return pick_p<I>(*this); }
+  template <std::size_t I, std::size_t D>
+  S& operator[](coordinate<I, D>) {
+    return pick<I, D>(*this);
+  }
+  template <std::size_t I, std::size_t D>
+  const S& operator[](coordinate<I, D>) const {
+    return pick<I, D>(*this);
+  }
+  template <std::size_t I, std::size_t D>
+  S& operator[](speed<I, D>) {
+    return pick_u<I, D>(*this);
+  }
+  template <std::size_t I, std::size_t D>
+  const S& operator[](speed<I, D>) const {
+    return pick_u<I, D>(*this);
+  }
+  template <std::size_t I>
+  S& operator[](parameter<I>) {
+    return pick_p<I>(*this);
+  }
+  template <std::size_t I>
+  const S& operator[](parameter<I>) const {
+    return pick_p<I>(*this);
+  }
 
  private:
-  template <std::size_t I, std::size_t D, class Self> static auto& pick(Self& s) {
+  template <std::size_t I, std::size_t D, class Self>
+  static auto& pick(Self& s) {
     static_assert(I <= NQ, "kane: this coordinate is beyond the state; declare the state with NQ >= I");
     static_assert(D <= 2, "kane: a state holds q, q' and q'' only");
     if constexpr (D == 0)
@@ -46,7 +66,8 @@ template <class S, std::size_t NQ, std::size_t NU = NQ, std::size_t NP = 0> stru
     else
       return s.qdd[I - 1];
   }
-  template <std::size_t I, std::size_t D, class Self> static auto& pick_u(Self& s) {
+  template <std::size_t I, std::size_t D, class Self>
+  static auto& pick_u(Self& s) {
     static_assert(I <= NU, "kane: this speed is beyond the state; declare the state with NU >= I");
     static_assert(D <= 1, "kane: a state holds u and u' only");
     if constexpr (D == 0)
@@ -54,14 +75,16 @@ template <class S, std::size_t NQ, std::size_t NU = NQ, std::size_t NP = 0> stru
     else
       return s.ud[I - 1];
   }
-  template <std::size_t I, class Self> static auto& pick_p(Self& s) {
+  template <std::size_t I, class Self>
+  static auto& pick_p(Self& s) {
     static_assert(I <= NP, "kane: this parameter is beyond the state; declare the state with NP >= I");
     return s.p[I - 1];
   }
 };
 
 namespace detail {
-template <class T> struct is_state : std::false_type {};
+template <class T>
+struct is_state : std::false_type {};
 template <class S, std::size_t NQ, std::size_t NU, std::size_t NP>
 struct is_state<state<S, NQ, NU, NP>> : std::true_type {};
 }  // namespace detail

@@ -37,10 +37,10 @@ class vec {
     eigen() = m;
   }
 
-  template <class G>
-  requires DifferentFrames<G, F> vec(const vec<G, S>&,
-                                     error::frames_differ_use_express_to_change_frame<G, F> = {})
-  = delete;
+  // clang-format off
+  template <class G> requires DifferentFrames<G, F>
+  vec(const vec<G, S>&, error::frames_differ_use_express_to_change_frame<G, F> = {}) = delete;
+  // clang-format on
 
   static vec e1() { return vec(S(1), S(0), S(0)); }
   static vec e2() { return vec(S(0), S(1), S(0)); }
@@ -126,32 +126,19 @@ bool is_approx(const vec<F, S>& a, const vec<F, S>& b, S tol) {
 }
 
 // Mixing frames: deleted, the signature names the rule, the fix and the frames.
-template <class LeftFrame, class RightFrame, class S>
-requires DifferentFrames<LeftFrame, RightFrame>
-    error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame>
-operator+(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
-template <class LeftFrame, class RightFrame, class S>
-requires DifferentFrames<LeftFrame, RightFrame>
-    error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame>
-operator-(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
-template <class LeftFrame, class RightFrame, class S>
-requires DifferentFrames<LeftFrame, RightFrame>
-    error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame>
-operator==(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
-template <class LeftFrame, class RightFrame, class S>
-requires DifferentFrames<LeftFrame, RightFrame>
-    error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> dot(
-        const vec<LeftFrame, S>&, const vec<RightFrame, S>&)
-= delete;
-template <class LeftFrame, class RightFrame, class S>
-requires DifferentFrames<LeftFrame, RightFrame>
-    error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> cross(
-        const vec<LeftFrame, S>&, const vec<RightFrame, S>&)
-= delete;
-template <class LeftFrame, class RightFrame, class S>
-requires DifferentFrames<LeftFrame, RightFrame>
-    error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> is_approx(
-        const vec<LeftFrame, S>&, const vec<RightFrame, S>&, S)
-= delete;
+// clang-format off
+template <class LeftFrame, class RightFrame, class S> requires DifferentFrames<LeftFrame, RightFrame>
+error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> operator+(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
+template <class LeftFrame, class RightFrame, class S> requires DifferentFrames<LeftFrame, RightFrame>
+error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> operator-(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
+template <class LeftFrame, class RightFrame, class S> requires DifferentFrames<LeftFrame, RightFrame>
+error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> operator==(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
+template <class LeftFrame, class RightFrame, class S> requires DifferentFrames<LeftFrame, RightFrame>
+error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> dot(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
+template <class LeftFrame, class RightFrame, class S> requires DifferentFrames<LeftFrame, RightFrame>
+error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> cross(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
+template <class LeftFrame, class RightFrame, class S> requires DifferentFrames<LeftFrame, RightFrame>
+error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> is_approx(const vec<LeftFrame, S>&, const vec<RightFrame, S>&, S) = delete;
+// clang-format on
 
 }  // namespace kane

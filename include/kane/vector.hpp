@@ -21,42 +21,50 @@ template <class T>
 concept VectorExpr = std::derived_from<T, detail::vector_tag>;
 
 // e_Fi, i = 1, 2, 3.
-template <class F, int I> struct unit : detail::vector_tag {
+template <class F, int I>
+struct unit : detail::vector_tag {
   static_assert(I >= 1 && I <= 3, "kane: unit vectors are e<F, 1>, e<F, 2>, e<F, 3>");
   using frame = F;
   static constexpr int index = I;
 };
-template <Frame F, int I> inline constexpr unit<F, I> e{};
+template <Frame F, int I>
+inline constexpr unit<F, I> e{};
 
 // The zero vector, as a type.
 struct zero_vector : detail::vector_tag {};
 
-template <class S, class V> struct scaled : detail::vector_tag {
+template <class S, class V>
+struct scaled : detail::vector_tag {
   [[no_unique_address]] S s;
   [[no_unique_address]] V v;
   constexpr scaled(S a, V b) : s(a), v(b) {}
 };
-template <class L, class R> struct vsum : detail::vector_tag {
+template <class L, class R>
+struct vsum : detail::vector_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr vsum(L a, R b) : l(a), r(b) {}
 };
-template <class L, class R> struct vdiff : detail::vector_tag {
+template <class L, class R>
+struct vdiff : detail::vector_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr vdiff(L a, R b) : l(a), r(b) {}
 };
-template <class V> struct vneg : detail::vector_tag {
+template <class V>
+struct vneg : detail::vector_tag {
   [[no_unique_address]] V v;
   constexpr explicit vneg(V a) : v(a) {}
 };
-template <class L, class R> struct vcross : detail::vector_tag {
+template <class L, class R>
+struct vcross : detail::vector_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr vcross(L a, R b) : l(a), r(b) {}
 };
 // p . r, a scalar.
-template <class L, class R> struct vdot : detail::scalar_tag {
+template <class L, class R>
+struct vdot : detail::scalar_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr vdot(L a, R b) : l(a), r(b) {}
@@ -64,26 +72,36 @@ template <class L, class R> struct vdot : detail::scalar_tag {
 
 // ^R w^F and ^R alpha^F with R the root of F: atomic, numbers from the
 // evaluator's outward pass.
-template <class F> struct omega : detail::vector_tag {
+template <class F>
+struct omega : detail::vector_tag {
   using frame = F;
 };
-template <class F> struct alpha : detail::vector_tag {
+template <class F>
+struct alpha : detail::vector_tag {
   using frame = F;
 };
 
-template <class T> inline constexpr bool is_zero_vector_v = std::is_same_v<T, zero_vector>;
+template <class T>
+inline constexpr bool is_zero_vector_v = std::is_same_v<T, zero_vector>;
 
 namespace detail {
-template <class T> struct is_vneg : std::false_type {};
-template <class V> struct is_vneg<vneg<V>> : std::true_type {};
-template <class T> struct is_unit : std::false_type {};
-template <class F, int I> struct is_unit<unit<F, I>> : std::true_type {};
+template <class T>
+struct is_vneg : std::false_type {};
+template <class V>
+struct is_vneg<vneg<V>> : std::true_type {};
+template <class T>
+struct is_unit : std::false_type {};
+template <class F, int I>
+struct is_unit<unit<F, I>> : std::true_type {};
 // Two unit vectors of one frame.
-template <class L, class R> struct same_frame_units : std::false_type {};
-template <class F, int I, int J> struct same_frame_units<unit<F, I>, unit<F, J>> : std::true_type {};
+template <class L, class R>
+struct same_frame_units : std::false_type {};
+template <class F, int I, int J>
+struct same_frame_units<unit<F, I>, unit<F, J>> : std::true_type {};
 }  // namespace detail
 
-template <VectorExpr V> constexpr auto operator-(V v) {
+template <VectorExpr V>
+constexpr auto operator-(V v) {
   if constexpr (is_zero_vector_v<V>)
     return v;
   else if constexpr (detail::is_vneg<V>::value)
@@ -94,7 +112,8 @@ template <VectorExpr V> constexpr auto operator-(V v) {
 
 // The general sum and difference; kinematic quantities add their own checks
 // (angular_velocity.hpp, point.hpp) through more specialised overloads.
-template <VectorExpr L, VectorExpr R> constexpr auto operator+(L l, R r) {
+template <VectorExpr L, VectorExpr R>
+constexpr auto operator+(L l, R r) {
   if constexpr (is_zero_vector_v<L>)
     return r;
   else if constexpr (is_zero_vector_v<R>)
@@ -102,7 +121,8 @@ template <VectorExpr L, VectorExpr R> constexpr auto operator+(L l, R r) {
   else
     return vsum<L, R>(l, r);
 }
-template <VectorExpr L, VectorExpr R> constexpr auto operator-(L l, R r) {
+template <VectorExpr L, VectorExpr R>
+constexpr auto operator-(L l, R r) {
   if constexpr (is_zero_vector_v<R>)
     return l;
   else if constexpr (is_zero_vector_v<L>)
@@ -111,7 +131,8 @@ template <VectorExpr L, VectorExpr R> constexpr auto operator-(L l, R r) {
     return vdiff<L, R>(l, r);
 }
 
-template <ScalarOperand S, VectorExpr V> constexpr auto operator*(S s_, V v) {
+template <ScalarOperand S, VectorExpr V>
+constexpr auto operator*(S s_, V v) {
   auto s = detail::as_expr(s_);
   using X = decltype(s);
   if constexpr (is_zero_v<X> || is_zero_vector_v<V>)
@@ -123,11 +144,18 @@ template <ScalarOperand S, VectorExpr V> constexpr auto operator*(S s_, V v) {
   else
     return scaled<X, V>(s, v);
 }
-template <VectorExpr V, ScalarOperand S> constexpr auto operator*(V v, S s) { return s * v; }
-template <VectorExpr V, ScalarOperand S> constexpr auto operator/(V v, S s) { return (one_t{} / s) * v; }
+template <VectorExpr V, ScalarOperand S>
+constexpr auto operator*(V v, S s) {
+  return s * v;
+}
+template <VectorExpr V, ScalarOperand S>
+constexpr auto operator/(V v, S s) {
+  return (one_t{} / s) * v;
+}
 
 // p x r; e_Fi x e_Fj reduces at compile time.
-template <VectorExpr L, VectorExpr R> constexpr auto cross(L l, R r) {
+template <VectorExpr L, VectorExpr R>
+constexpr auto cross(L l, R r) {
   if constexpr (is_zero_vector_v<L> || is_zero_vector_v<R>)
     return zero_vector{};
   else if constexpr (detail::same_frame_units<L, R>::value) {
@@ -144,7 +172,8 @@ template <VectorExpr L, VectorExpr R> constexpr auto cross(L l, R r) {
 }
 
 // p . r; e_Fi . e_Fj reduces at compile time.
-template <VectorExpr L, VectorExpr R> constexpr auto dot(L l, R r) {
+template <VectorExpr L, VectorExpr R>
+constexpr auto dot(L l, R r) {
   if constexpr (is_zero_vector_v<L> || is_zero_vector_v<R>)
     return zero_t{};
   else if constexpr (detail::same_frame_units<L, R>::value) {

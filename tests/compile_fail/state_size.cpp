@@ -1,5 +1,5 @@
 // A state holds every coordinate it is asked for.
-// case index: kane: this coordinate is beyond the state && (I = 3|<3UL>) && (NQ = 2|state<double, 2)
+// case index: kane: this coordinate is beyond the state && (I = 3|<3UL) && (NQ = 2|state<double, 2)
 // case path: kane: the frames involved use a generalized coordinate beyond the state.s size && direction_cosines && state<double, 2
 #include <kane/kane.hpp>
 

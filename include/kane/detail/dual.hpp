@@ -6,14 +6,17 @@
 
 namespace kane::detail {
 
-template <class S> struct dual {
+template <class S>
+struct dual {
   S v{}, d{};
   constexpr dual(S value = S(), S derivative = S()) : v(value), d(derivative) {}
   friend constexpr dual operator+(dual a, dual b) { return {a.v + b.v, a.d + b.d}; }
   friend constexpr dual operator-(dual a, dual b) { return {a.v - b.v, a.d - b.d}; }
   friend constexpr dual operator-(dual a) { return {-a.v, -a.d}; }
   friend constexpr dual operator*(dual a, dual b) { return {a.v * b.v, a.d * b.v + a.v * b.d}; }
-  friend constexpr dual operator/(dual a, dual b) { return {a.v / b.v, (a.d * b.v - a.v * b.d) / (b.v * b.v)}; }
+  friend constexpr dual operator/(dual a, dual b) {
+    return {a.v / b.v, (a.d * b.v - a.v * b.d) / (b.v * b.v)};
+  }
   friend constexpr dual operator+(dual a, S b) { return {a.v + b, a.d}; }
   friend constexpr dual operator+(S a, dual b) { return {a + b.v, b.d}; }
   friend constexpr dual operator-(dual a, S b) { return {a.v - b, a.d}; }

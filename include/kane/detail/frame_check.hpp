@@ -30,8 +30,10 @@ struct angular_velocities_do_not_chain_the_first_body_must_be_the_second_observe
 template <class FirstObserver, class SecondObserver>
 struct quantities_measured_in_different_frames_measure_both_in_one_frame {};
 // dt(v) of a vector: its derivative depends on the frame; write dt<A>(v).
-template <class Vector> struct a_vector_derivative_needs_a_frame_write_dt_A_of_v {};
-template <class Vector> struct a_vector_derivative_needs_a_frame_write_diff_A_of_v_q {};
+template <class Vector>
+struct a_vector_derivative_needs_a_frame_write_dt_A_of_v {};
+template <class Vector>
+struct a_vector_derivative_needs_a_frame_write_diff_A_of_v_q {};
 }  // namespace error
 
 }  // namespace kane

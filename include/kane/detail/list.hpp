@@ -6,73 +6,97 @@
 
 namespace kane::detail {
 
-template <class... T> struct list {};
+template <class... T>
+struct list {};
 
-template <class T, class L> struct push_front;
-template <class T, class... Ts> struct push_front<T, list<Ts...>> {
+template <class T, class L>
+struct push_front;
+template <class T, class... Ts>
+struct push_front<T, list<Ts...>> {
   using type = list<T, Ts...>;
 };
 
-template <class L> struct size;
-template <class... Ts> struct size<list<Ts...>> : std::integral_constant<std::size_t, sizeof...(Ts)> {};
+template <class L>
+struct size;
+template <class... Ts>
+struct size<list<Ts...>> : std::integral_constant<std::size_t, sizeof...(Ts)> {};
 
-template <class L, std::size_t I> struct at;
-template <class H, class... T> struct at<list<H, T...>, 0> {
+template <class L, std::size_t I>
+struct at;
+template <class H, class... T>
+struct at<list<H, T...>, 0> {
   using type = H;
 };
-template <class H, class... T, std::size_t I> struct at<list<H, T...>, I> : at<list<T...>, I - 1> {};
+template <class H, class... T, std::size_t I>
+struct at<list<H, T...>, I> : at<list<T...>, I - 1> {};
 
-template <class T, class L> struct contains;
+template <class T, class L>
+struct contains;
 template <class T, class... Ts>
 struct contains<T, list<Ts...>> : std::bool_constant<(std::is_same_v<T, Ts> || ...)> {};
 
 // The first element of L that is also in M (void if none).
-template <class L, class M> struct first_common {
+template <class L, class M>
+struct first_common {
   using type = void;
 };
-template <class H, class... T, class M> struct first_common<list<H, T...>, M> {
+template <class H, class... T, class M>
+struct first_common<list<H, T...>, M> {
   using type = std::conditional_t<contains<H, M>::value, H, typename first_common<list<T...>, M>::type>;
 };
 
 // The elements of L before Stop.
-template <class L, class Stop> struct before;
-template <class Stop> struct before<list<>, Stop> {
+template <class L, class Stop>
+struct before;
+template <class Stop>
+struct before<list<>, Stop> {
   using type = list<>;
 };
-template <class H, class... T, class Stop> struct before<list<H, T...>, Stop> {
+template <class H, class... T, class Stop>
+struct before<list<H, T...>, Stop> {
   using type = std::conditional_t<std::is_same_v<H, Stop>, list<>,
                                   typename push_front<H, typename before<list<T...>, Stop>::type>::type>;
 };
 
-template <class L, class R = list<>> struct reverse {
+template <class L, class R = list<>>
+struct reverse {
   using type = R;
 };
-template <class H, class... T, class... R> struct reverse<list<H, T...>, list<R...>> {
+template <class H, class... T, class... R>
+struct reverse<list<H, T...>, list<R...>> {
   using type = typename reverse<list<T...>, list<H, R...>>::type;
 };
 
-template <class... L> struct concat {
+template <class... L>
+struct concat {
   using type = list<>;
 };
-template <class... A> struct concat<list<A...>> {
+template <class... A>
+struct concat<list<A...>> {
   using type = list<A...>;
 };
-template <class... A, class... B, class... Rest> struct concat<list<A...>, list<B...>, Rest...> {
+template <class... A, class... B, class... Rest>
+struct concat<list<A...>, list<B...>, Rest...> {
   using type = typename concat<list<A..., B...>, Rest...>::type;
 };
 
 // L without repeats, first occurrences kept in order.
-template <class L, class Seen = list<>> struct unique {
+template <class L, class Seen = list<>>
+struct unique {
   using type = Seen;
 };
-template <class H, class... T, class... Seen> struct unique<list<H, T...>, list<Seen...>> {
-  using type = typename unique<list<T...>, std::conditional_t<contains<H, list<Seen...>>::value, list<Seen...>,
-                                                              list<Seen..., H>>>::type;
+template <class H, class... T, class... Seen>
+struct unique<list<H, T...>, list<Seen...>> {
+  using type = typename unique<list<T...>, std::conditional_t<contains<H, list<Seen...>>::value,
+                                                              list<Seen...>, list<Seen..., H>>>::type;
 };
 
-template <class T, class L> struct index_of;
-template <class T, class... Ts> struct index_of<T, list<T, Ts...>> : std::integral_constant<std::size_t, 0> {};
+template <class T, class L>
+struct index_of;
+template <class T, class... Ts>
+struct index_of<T, list<T, Ts...>> : std::integral_constant<std::size_t, 0> {};
 template <class T, class H, class... Ts>
-struct index_of<T, list<H, Ts...>> : std::integral_constant<std::size_t, 1 + index_of<T, list<Ts...>>::value> {};
+struct index_of<T, list<H, Ts...>>
+    : std::integral_constant<std::size_t, 1 + index_of<T, list<Ts...>>::value> {};
 
 }  // namespace kane::detail

@@ -15,19 +15,23 @@
 namespace kane::detail {
 
 // list<F, tree parent of F, ..., root>
-template <class F, class P = typename F::tree_parent> struct ancestors {
+template <class F, class P = typename F::tree_parent>
+struct ancestors {
   using type = typename push_front<F, typename ancestors<P>::type>::type;
 };
-template <class F> struct ancestors<F, void> {
+template <class F>
+struct ancestors<F, void> {
   using type = list<F>;
 };
 
-template <class F> using root_of = typename at<typename ancestors<F>::type, size<typename ancestors<F>::type>::value - 1>::type;
+template <class F>
+using root_of = typename at<typename ancestors<F>::type, size<typename ancestors<F>::type>::value - 1>::type;
 
 // From A up to the common ancestor (up: A, ..., excluding it), then down to B
 // (down: from below the common ancestor to B). Each listed frame stands for
 // the edge to its tree parent.
-template <class A, class B> struct path {
+template <class A, class B>
+struct path {
   using common = typename first_common<typename ancestors<A>::type, typename ancestors<B>::type>::type;
   static constexpr bool joined = !std::is_void_v<common>;
   using up = typename before<typename ancestors<A>::type, common>::type;
@@ -35,8 +39,10 @@ template <class A, class B> struct path {
 };
 
 // Frames and their ancestors, each once, every ancestor before its children.
-template <class... F> struct closure {
-  using type = typename unique<typename concat<typename reverse<typename ancestors<F>::type>::type...>::type>::type;
+template <class... F>
+struct closure {
+  using type =
+      typename unique<typename concat<typename reverse<typename ancestors<F>::type>::type...>::type>::type;
 };
 
 }  // namespace kane::detail
