@@ -101,6 +101,9 @@ TEST_CASE("vec: Eigen interop views without copying") {
   const Eigen::Vector3d e(0.5, -1.5, 2.5);
   const vec<N> from(e + Eigen::Vector3d::Ones());
   CHECK(from == vec<N>(1.5, -0.5, 3.5));
+  // On a temporary, eigen() copies: no view outlives its vector.
+  static_assert(std::is_same_v<decltype(vec<N>(1, 2, 3).eigen()), Eigen::Vector3d>);
+  static_assert(std::is_same_v<decltype(kane::dcm<N, A>().eigen()), Eigen::Matrix3d>);
   const vec<N, float> pf(1.0f, 2.0f, 3.0f);
   CHECK(kane::norm(pf) == Approx(std::sqrt(14.0f)));
 }

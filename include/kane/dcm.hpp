@@ -38,7 +38,9 @@ class dcm {
 
   S operator()(int i, int j) const { return m_[i + 3 * j]; }
   // The matrix as an Eigen view (no copy).
-  Eigen::Map<const eigen_type> eigen() const { return Eigen::Map<const eigen_type>(m_); }
+  // On a temporary it is a copy, so that no view outlives its matrix.
+  Eigen::Map<const eigen_type> eigen() const& { return Eigen::Map<const eigen_type>(m_); }
+  eigen_type eigen() && { return Eigen::Map<const eigen_type>(m_); }
 
   // ^B P^A = (^A P^B)^T.
   dcm<B, A, S> transpose() const { return dcm<B, A, S>(eigen().transpose()); }

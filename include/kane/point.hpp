@@ -129,8 +129,8 @@ constexpr auto position() {
   if constexpr (std::is_void_v<X>)
     return zero_vector{};
   else
-    return detail::sum_positions(typename detail::before<cq, X>::type{}) -
-           detail::sum_positions(typename detail::before<cp, X>::type{});
+    return detail::sum_positions(typename detail::reverse<typename detail::before<cq, X>::type>::type{}) -
+           detail::sum_positions(typename detail::reverse<typename detail::before<cp, X>::type>::type{});
 }
 
 template <Point P, Frame A>

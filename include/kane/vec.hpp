@@ -50,8 +50,10 @@ class vec {
   S& operator[](int i) { return c_[i]; }
 
   // The components as an Eigen vector (a view: no copy).
-  Eigen::Map<const eigen_type> eigen() const { return Eigen::Map<const eigen_type>(c_); }
-  Eigen::Map<eigen_type> eigen() { return Eigen::Map<eigen_type>(c_); }
+  // On a temporary it is a copy, so that no view outlives its vector.
+  Eigen::Map<const eigen_type> eigen() const& { return Eigen::Map<const eigen_type>(c_); }
+  Eigen::Map<eigen_type> eigen() & { return Eigen::Map<eigen_type>(c_); }
+  eigen_type eigen() && { return Eigen::Map<const eigen_type>(c_); }
 
   vec& operator+=(const vec& o) {
     eigen() += o.eigen();

@@ -1,0 +1,52 @@
+// A 6-revolute arm: joint axes z, y, y, x, y, x, each about the previous
+// body's axis; joint i+1 at L_i along b_i x; the end point at L6 along b6 x.
+// Pose, velocity and acceleration of the end point and of the last body.
+#include <cstdio>
+
+#include <kane/kane.hpp>
+
+template <std::size_t I> using q = kane::coordinate<I>;
+using kane::axis::x;
+using kane::axis::y;
+using kane::axis::z;
+
+struct N : kane::root_frame {};
+struct B1 : kane::frame<N, kane::simple<z, q<1>>> {};
+struct B2 : kane::frame<B1, kane::simple<y, q<2>>> {};
+struct B3 : kane::frame<B2, kane::simple<y, q<3>>> {};
+struct B4 : kane::frame<B3, kane::simple<x, q<4>>> {};
+struct B5 : kane::frame<B4, kane::simple<y, q<5>>> {};
+struct B6 : kane::frame<B5, kane::simple<x, q<6>>> {};
+
+struct O : kane::origin<N> {};
+struct J2 : kane::point<O, 0.3 * kane::e<B1, 1>> {};
+struct J3 : kane::point<J2, 0.25 * kane::e<B2, 1>> {};
+struct J4 : kane::point<J3, 0.2 * kane::e<B3, 1>> {};
+struct J5 : kane::point<J4, 0.15 * kane::e<B4, 1>> {};
+struct J6 : kane::point<J5, 0.1 * kane::e<B5, 1>> {};
+struct End : kane::point<J6, 0.05 * kane::e<B6, 1>> {};
+
+template <class F> void show(const char* what, const kane::vec<F>& v) {
+  std::printf("%-10s (% .6f, % .6f, % .6f)\n", what, v[0], v[1], v[2]);
+}
+
+int main() {
+  kane::state<double, 6> s;
+  s.q = {0.1, -0.4, 0.8, 0.3, -1.2, 0.6};
+  s.qd = {0.5, 0.2, -0.3, 1.0, 0.4, -0.7};
+  s.qdd = {0.1, -0.2, 0.3, -0.1, 0.2, 0.05};
+
+  kane::evaluator<decltype(s), kane::frames<B6>> ev;
+  ev.update(s);  // one outward pass: sin/cos, e_Bi, ^N w^Bi, ^N alpha^Bi
+
+  const auto NPB6 = kane::direction_cosines<N, B6>(s);
+  std::printf("^N P^B6 row 1  (% .6f, % .6f, % .6f)\n", NPB6(0, 0), NPB6(0, 1), NPB6(0, 2));
+  show("r^O/End", kane::express<N>(kane::position<O, End>(), ev));
+  show("^N v^End", kane::express<N>(kane::velocity<N, End>(), ev));
+  show("^N a^End", kane::express<N>(kane::acceleration<N, End>(), ev));
+  show("^N w^B6", kane::express<N>(kane::angular_velocity<N, B6>(), ev));
+  show("^N al^B6", kane::express<N>(kane::angular_acceleration<N, B6>(), ev));
+  // The end point is fixed in B6: the two-point theorem from J6 gives the same velocity.
+  const auto v2pt = kane::express<N>(kane::two_point_velocity<N, B6, J6, End>(), ev);
+  return kane::is_approx(v2pt, kane::express<N>(kane::velocity<N, End>(), ev), 1e-14) ? 0 : 1;
+}
