@@ -5,7 +5,8 @@
 
 #include <kane/kane.hpp>
 
-template <std::size_t I> using q = kane::coordinate<I>;
+template <std::size_t I>
+using q = kane::coordinate<I>;
 using kane::axis::x;
 using kane::axis::y;
 using kane::axis::z;
@@ -26,7 +27,8 @@ struct J5 : kane::point<J4, 0.15 * kane::e<B4, 1>> {};
 struct J6 : kane::point<J5, 0.1 * kane::e<B5, 1>> {};
 struct End : kane::point<J6, 0.05 * kane::e<B6, 1>> {};
 
-template <class F> void show(const char* what, const kane::vec<F>& v) {
+template <class F>
+void show(const char* what, const kane::vec<F>& v) {
   std::printf("%-10s (% .6f, % .6f, % .6f)\n", what, v[0], v[1], v[2]);
 }
 
