@@ -256,10 +256,21 @@ constexpr auto partial_in(V v) {
     return -partial_in<A, Leaf>(v.v);
   else if constexpr (is_v<V, vcross>)
     return cross(partial_in<A, Leaf>(v.l), v.r) + cross(v.l, partial_in<A, Leaf>(v.r));
-  else
+  else if constexpr (is_v<V, omega> && coordinate_info<Leaf>::value && Leaf::order == 1) {
+    // d(^R w^F)/dq_s': the axes of the edges from the root to F turned by q_s
+    using p = path<root_of<typename V::frame>, typename V::frame>;
+    return partial_omega<Leaf::index>(typename p::up{}, typename p::down{});
+  } else if constexpr (is_v<V, omega> && !(coordinate_info<Leaf>::value && Leaf::order == 0))
+    return zero_vector{};  // no u, t or q'' in ^R w^F
+  else if constexpr (is_v<V, angular_velocity_of> && !(coordinate_info<Leaf>::value && Leaf::order == 0))
+    return partial_in<A, Leaf>(expand(v));
+  else if constexpr (is_v<V, omega> || is_v<V, alpha> || is_v<V, angular_velocity_of> ||
+                     is_v<V, angular_acceleration_of>)
     static_assert(!sizeof(V),
                   "kane: partial derivatives apply to vectors of unit vectors and scalars (positions); "
                   "an angular velocity or acceleration node has none here");
+  else
+    return partial_in<A, Leaf>(v.v);  // a kinematic quantity: its expression
 }
 
 }  // namespace detail

@@ -9,16 +9,20 @@
 // e_F1, e_F2, e_F3, ^R w^F and ^R alpha^F. For an edge P -> F that turns about
 // k by q: e_Fi = R(k, q) e_Pi, ^R w^F = ^R w^P + q' k,
 // ^R alpha^F = ^R alpha^P + q'' k + q' ^R w^P x k.
+// With a speed set (speeds.hpp), q' and q'' are first solved from u and u'.
 // update(s) keeps a pointer to s: s must outlive the evaluations that follow.
 // Evaluating allocates nothing and calls no sin or cos of a frame coordinate.
 #pragma once
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <type_traits>
+#include <utility>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 
 #include "kane/angular_velocity.hpp"
 #include "kane/derivative.hpp"
@@ -26,6 +30,7 @@
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
 #include "kane/expr.hpp"
+#include "kane/speeds.hpp"
 #include "kane/state.hpp"
 #include "kane/vec.hpp"
 #include "kane/vector.hpp"
@@ -66,34 +71,87 @@ struct step_coordinates<list<F...>> {
 };
 }  // namespace detail
 
-template <State St, class Frames, level Level = level::acceleration>
+// What update(s) found when it solved the kinematic differential equations.
+enum class solve_status { ok, singular, not_finite };
+
+namespace detail {
+template <class Ev, class X>
+typename Ev::scalar eval_scalar(const X& x, const Ev& ev);
+template <class Ev, class V>
+typename Ev::vector3 eval_vector(const V& v, const Ev& ev);
+}  // namespace detail
+
+// Speeds: void to read q' and q'' from the state; a speed set to solve them
+// from the state's u and u'.
+template <State St, class Frames, level Level = level::acceleration, class Speeds = void>
 class evaluator;
 
-template <State St, Frame... Fs, level Level>
-class evaluator<St, frames<Fs...>, Level> {
+template <State St, Frame... Fs, level Level, class Speeds>
+class evaluator<St, frames<Fs...>, Level, Speeds> {
+  static constexpr bool solves = !std::is_void_v<Speeds>;
+  static constexpr std::size_t nq = St::nq;
+
  public:
   using state_type = St;
   using scalar = typename St::scalar;
+  using speed_set = Speeds;
   using closure = typename detail::closure<Fs...>::type;
   static constexpr level computed = Level;
   static constexpr std::size_t size = detail::size<closure>::value;
   using matrix3 = Eigen::Matrix<scalar, 3, 3>;
   using vector3 = Eigen::Matrix<scalar, 3, 1>;
+  using matrixn = Eigen::Matrix<scalar, int(nq), int(nq)>;
+  using vectorn = Eigen::Matrix<scalar, int(nq), 1>;
 
   evaluator() {
+    static_assert(!solves || SpeedSet<Speeds>, "kane: the fourth argument of evaluator is a speed set (speeds.hpp)");
+    if constexpr (solves) {
+      static_assert(Speeds::n == nq, "kane: a speed set defines as many speeds as the state has coordinates");
+      static_assert(St::nu >= nq, "kane: the state holds fewer speeds than the speed set defines");
+    }
+    w_kde_.setIdentity();
+    x_kde_.setZero();
     for (auto& c : c_) c.setIdentity();
     for (auto& w : w_) w.setZero();
     for (auto& a : a_) a.setZero();
   }
 
-  // The outward pass at s; s must outlive the evaluations that follow.
+  // The outward pass at s; s must outlive the evaluations that follow. With a
+  // speed set, q' and q'' are solved from s.u and s.ud first; if Y is singular
+  // or not finite, status() says so, and q', q'' and all computed from them
+  // are NaN.
   void update(const St& s) {
     st_ = &s;
     trig_ = detail::make_trig<cached>(s);
-    pass(closure{});
+    pose_pass(closure{});
+    if constexpr (Level >= level::velocity) {
+      if constexpr (solves) solve_rates();
+      velocity_pass(closure{});
+      if constexpr (Level >= level::acceleration) {
+        if constexpr (solves) solve_accelerations();
+        acceleration_pass(closure{});
+      }
+    }
   }
 
   const St& state() const { return *st_; }
+  solve_status status() const { return status_; }
+
+  // q_I, q_I', q_I'': from the state, or solved from the speeds.
+  template <std::size_t I, std::size_t D>
+  scalar coordinate_value() const {
+    static_assert(I >= 1 && I <= nq, "kane: this coordinate is beyond the state; declare the state with NQ >= I");
+    static_assert(D <= 2, "kane: a state holds q, q' and q'' only");
+    if constexpr (D == 0)
+      return st_->q[I - 1];
+    else if constexpr (D == 1)
+      return solves ? qd_[I - 1] : st_->qd[I - 1];
+    else
+      return solves ? qdd_[I - 1] : st_->qdd[I - 1];
+  }
+  // q' = W u + X (W the identity and X zero without a speed set).
+  const matrixn& W() const { return w_kde_; }
+  const vectorn& X() const { return x_kde_; }
 
   template <class F>
   static constexpr bool holds = detail::contains<F, closure>::value;
@@ -105,16 +163,14 @@ class evaluator<St, frames<Fs...>, Level> {
   }
   template <class F>
   const vector3& omega() const {
-    static_assert(
-        Level >= level::velocity,
-        "kane: this evaluator computes no angular velocities; declare it with level::velocity or higher");
+    static_assert(Level >= level::velocity,
+                  "kane: this evaluator computes no angular velocities; declare it with level::velocity or higher");
     return w_[index<F>()];
   }
   template <class F>
   const vector3& alpha() const {
-    static_assert(
-        Level >= level::acceleration,
-        "kane: this evaluator computes no angular accelerations; declare it with level::acceleration");
+    static_assert(Level >= level::acceleration,
+                  "kane: this evaluator computes no angular accelerations; declare it with level::acceleration");
     return a_[index<F>()];
   }
 
@@ -156,54 +212,133 @@ class evaluator<St, frames<Fs...>, Level> {
       return 0;
   }
 
+  template <class F>
+  static constexpr bool is_edge = !std::is_void_v<typename F::tree_parent>;
+
   template <class... F>
-  void pass(detail::list<F...>) {
-    (edge<F>(), ...);
+  void pose_pass(detail::list<F...>) {
+    (pose_edge<F>(), ...);
+  }
+  template <class... F>
+  void velocity_pass(detail::list<F...>) {
+    (velocity_edge<F>(), ...);
+  }
+  template <class... F>
+  void acceleration_pass(detail::list<F...>) {
+    (acceleration_edge<F>(), ...);
+  }
+
+  // The axis k of the edge above F, in the root's components (fixed in both frames).
+  template <class F>
+  vector3 edge_axis() const {
+    using K = typename F::step::axis;
+    constexpr int p = detail::unit_axis<K>::principal;
+    if constexpr (p >= 0) {
+      return c_[index<F>()].col(p);
+    } else {
+      constexpr auto k = detail::unit_axis<K>::value;
+      return c_[index<F>()] * vector3(scalar(k[0]), scalar(k[1]), scalar(k[2]));
+    }
   }
 
   template <class F>
-  void edge() {
-    if constexpr (!std::is_void_v<typename F::tree_parent>) {
+  void pose_edge() {
+    if constexpr (is_edge<F>) {
       using P = typename F::tree_parent;
       using K = typename F::step::axis;
       constexpr std::size_t q = F::step::coordinate::index;
-      constexpr std::size_t i = index<F>(), ip = index<P>();
       constexpr int p = detail::unit_axis<K>::principal;
       const scalar c = trig_.cos(q), s = trig_.sin(q);
-      const matrix3& cp = c_[ip];
-      matrix3& cf = c_[i];
-      vector3 k;
-      if constexpr (std::is_void_v<typename P::tree_parent>) {
-        // The parent is a root: its axes are the identity.
-        cf = detail::elementary<scalar, K>(c, s).transpose();
-        if constexpr (p >= 0)
-          k = vector3::Unit(p);
-        else {
-          constexpr auto kk = detail::unit_axis<K>::value;
-          k = vector3(scalar(kk[0]), scalar(kk[1]), scalar(kk[2]));
-        }
+      const matrix3& cp = c_[index<P>()];
+      matrix3& cf = c_[index<F>()];
+      if constexpr (!is_edge<P>) {
+        cf = detail::elementary<scalar, K>(c, s).transpose();  // the parent is a root: its axes are the identity
       } else if constexpr (p >= 0) {
-        constexpr int a = (p + 1) % 3, b = (p + 2) % 3;  // e_Fa = c e_Pa + s e_Pb, e_Fb = -s e_Pa + c e_Pb
+        constexpr int a = (p + 1) % 3, b = (p + 2) % 3;  // e_Fa = c e_Pa + s e_Pb, e_Fb = c e_Pb - s e_Pa
         cf.col(p) = cp.col(p);
         cf.col(a) = c * cp.col(a) + s * cp.col(b);
         cf.col(b) = c * cp.col(b) - s * cp.col(a);
-        k = cp.col(p);
       } else {
-        constexpr auto kk = detail::unit_axis<K>::value;
         cf.noalias() = cp * detail::elementary<scalar, K>(c, s).transpose();
-        k = cp * vector3(scalar(kk[0]), scalar(kk[1]), scalar(kk[2]));
-      }
-      if constexpr (Level >= level::velocity) {
-        const scalar qd = st_->qd[q - 1];
-        w_[i] = w_[ip] + qd * k;
-        if constexpr (Level >= level::acceleration)
-          a_[i] = a_[ip] + st_->qdd[q - 1] * k + qd * w_[ip].cross(k);
       }
     }
   }
 
+  template <class F>
+  void velocity_edge() {
+    if constexpr (is_edge<F>) {
+      constexpr std::size_t q = F::step::coordinate::index;
+      w_[index<F>()] = w_[index<typename F::tree_parent>()] + coordinate_value<q, 1>() * edge_axis<F>();
+    }
+  }
+
+  template <class F>
+  void acceleration_edge() {
+    if constexpr (is_edge<F>) {
+      constexpr std::size_t q = F::step::coordinate::index;
+      constexpr std::size_t ip = index<typename F::tree_parent>();
+      const vector3 k = edge_axis<F>();
+      a_[index<F>()] = a_[ip] + coordinate_value<q, 2>() * k + coordinate_value<q, 1>() * w_[ip].cross(k);
+    }
+  }
+
+  template <std::size_t R>
+  static constexpr auto definition() {
+    return std::get<R>(Speeds::definitions);
+  }
+
+  // Y q' + Z = u, so q' = W u + X.
+  void solve_rates() {
+    matrixn y;
+    vectorn z;
+    fill<false>(y, z, std::make_index_sequence<nq>{});
+    const Eigen::FullPivLU<matrixn> lu(y);
+    status_ = !(y.allFinite() && z.allFinite()) ? solve_status::not_finite
+              : !lu.isInvertible()               ? solve_status::singular
+                                                 : solve_status::ok;
+    if (status_ == solve_status::ok) {
+      w_kde_ = lu.inverse();
+      x_kde_ = -w_kde_ * z;
+    } else {
+      w_kde_.setConstant(std::numeric_limits<scalar>::quiet_NaN());
+      x_kde_.setConstant(std::numeric_limits<scalar>::quiet_NaN());
+    }
+    Eigen::Map<vectorn>(qd_.data()) = w_kde_ * Eigen::Map<const vectorn>(st_->u.data()) + x_kde_;
+  }
+
+  // u' = Y q'' + Y' q' + Z', so q'' = W (u' - Y' q' - Z').
+  void solve_accelerations() {
+    matrixn yd;
+    vectorn zd;
+    fill<true>(yd, zd, std::make_index_sequence<nq>{});
+    const vectorn qd = Eigen::Map<const vectorn>(qd_.data());
+    Eigen::Map<vectorn>(qdd_.data()) = w_kde_ * (Eigen::Map<const vectorn>(st_->ud.data()) - yd * qd - zd);
+  }
+
+  // Y and Z (or their time derivatives) at this state.
+  template <bool Derivative, std::size_t... R>
+  void fill(matrixn& y, vectorn& z, std::index_sequence<R...>) const {
+    (fill_row<Derivative, R>(y, z, std::make_index_sequence<nq>{}), ...);
+  }
+  template <bool Derivative, std::size_t R, std::size_t... C>
+  void fill_row(matrixn& y, vectorn& z, std::index_sequence<C...>) const {
+    auto value = [this](auto x) {
+      if constexpr (Derivative)
+        return detail::eval_scalar(dt(x), *this);
+      else
+        return detail::eval_scalar(x, *this);
+    };
+    ((y(R, C) = value(diff(definition<R>(), coordinate<C + 1, 1>{}))), ...);
+    z(R) = value(detail::at_rest(definition<R>()));
+  }
+
   const St* st_ = nullptr;
-  detail::trig<scalar, St::nq> trig_{};
+  solve_status status_ = solve_status::ok;
+  std::array<scalar, nq> qd_{};
+  std::array<scalar, nq> qdd_{};
+  matrixn w_kde_;
+  vectorn x_kde_;
+  detail::trig<scalar, nq> trig_{};
   std::array<matrix3, size> c_;
   std::array<vector3, size> w_;
   std::array<vector3, size> a_;
@@ -212,19 +347,29 @@ class evaluator<St, frames<Fs...>, Level> {
 namespace detail {
 
 template <class X>
-struct is_evaluator : std::false_type {};
-template <class St, class Fr, level L>
-struct is_evaluator<evaluator<St, Fr, L>> : std::true_type {};
+struct is_v_weight : std::false_type {};
+template <std::size_t S, std::size_t R>
+struct is_v_weight<kde_weight<S, R>> : std::true_type {
+  static constexpr std::size_t s = S, r = R;
+};
+template <class X>
+struct is_v_offset : std::false_type {};
+template <std::size_t S>
+struct is_v_offset<kde_offset<S>> : std::true_type {
+  static constexpr std::size_t s = S;
+};
 
-template <class Ev, class X>
-typename Ev::scalar eval_scalar(const X& x, const Ev& ev);
-template <class Ev, class V>
-typename Ev::vector3 eval_vector(const V& v, const Ev& ev);
+template <class X>
+struct is_evaluator : std::false_type {};
+template <class St, class Fr, level L, class Sp>
+struct is_evaluator<evaluator<St, Fr, L, Sp>> : std::true_type {};
 
 template <class Ev, class X>
 typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
   using S = typename Ev::scalar;
-  if constexpr (coordinate_info<X>::value || speed_info<X>::value)
+  if constexpr (coordinate_info<X>::value)
+    return ev.template coordinate_value<X::index, X::order>();
+  else if constexpr (speed_info<X>::value)
     return ev.state()[x];
   else if constexpr (Parameter<X>)
     return ev.state()[parameter<X::index>{}];
@@ -232,6 +377,10 @@ typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
     return ev.state().t;
   else if constexpr (is_constant<X>::value)
     return S(X::num) / S(X::den);
+  else if constexpr (is_v_weight<X>::value)
+    return ev.W()(is_v_weight<X>::s - 1, is_v_weight<X>::r - 1);
+  else if constexpr (is_v_offset<X>::value)
+    return ev.X()(is_v_offset<X>::s - 1);
   else if constexpr (std::is_same_v<X, literal>)
     return S(x.value);
   else if constexpr (is_v<X, add>)
@@ -244,26 +393,24 @@ typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
     return eval_scalar(x.l, ev) / eval_scalar(x.r, ev);
   else if constexpr (is_v<X, neg>)
     return -eval_scalar(x.x, ev);
-  else if constexpr (std::is_same_v<X, unary<sin_fn, decltype(x.x)>> ||
-                     std::is_same_v<X, unary<cos_fn, decltype(x.x)>>) {
+  else if constexpr (is_v<X, unary>) {
+    using Fn = typename unary_info<X>::fn;
     using Arg = decltype(x.x);
-    constexpr bool is_sin = std::is_same_v<X, unary<sin_fn, Arg>>;
-    if constexpr (coordinate_info<Arg>::value && Arg::order == 0) {
-      if constexpr (is_sin)
+    if constexpr (!std::is_same_v<Fn, sqrt_fn> && Coordinate<Arg>) {
+      if constexpr (std::is_same_v<Fn, sin_fn>)
         return ev.template sin_q<Arg::index>();
       else
         return ev.template cos_q<Arg::index>();
     } else {
-      using std::cos, std::sin;
+      using std::cos, std::sin, std::sqrt;
       const S a = eval_scalar(x.x, ev);
-      if constexpr (is_sin)
+      if constexpr (std::is_same_v<Fn, sin_fn>)
         return sin(a);
-      else
+      else if constexpr (std::is_same_v<Fn, cos_fn>)
         return cos(a);
+      else
+        return sqrt(a);
     }
-  } else if constexpr (std::is_same_v<X, unary<sqrt_fn, decltype(x.x)>>) {
-    using std::sqrt;
-    return sqrt(eval_scalar(x.x, ev));
   } else if constexpr (power_info<X>::value) {
     const S a = eval_scalar(x.x, ev);
     constexpr int n = power_info<X>::n;

@@ -15,6 +15,7 @@
 
 #include "kane/dcm.hpp"
 #include "kane/derivative.hpp"
+#include "kane/evaluator.hpp"
 #include "kane/point.hpp"
 #include "kane/vec.hpp"
 #include "kane/vector.hpp"

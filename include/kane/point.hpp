@@ -197,6 +197,14 @@ constexpr auto one_point_acceleration() {
                                              cross(angular_acceleration<A, B>(), r) + cross(w, cross(w, r)));
 }
 
+// The velocity in A of the point of body B at P, given Q a point of B:
+// ^A v^Q + ^A w^B x r^QP. That Q belongs to B is the caller's statement (for
+// a rolling contact, Q may be the contact point, whose velocity is zero).
+template <Frame A, Frame B, Point Q, Point P>
+constexpr auto body_point_velocity() {
+  return velocity<A, Q>() + cross(angular_velocity<A, B>(), position<Q, P>());
+}
+
 // ^A v^P + ^B v^Q with A != B does not compile; likewise accelerations.
 // clang-format off
 template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W> requires DifferentFrames<FirstObserver, SecondObserver>

@@ -34,6 +34,9 @@ template <class Vector>
 struct a_vector_derivative_needs_a_frame_write_dt_A_of_v {};
 template <class Vector>
 struct a_vector_derivative_needs_a_frame_write_diff_A_of_v_q {};
+// partial_velocity(v, q<1>): partial velocities are d/du_r; pass u<r>.
+template <class NotASpeed>
+struct partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r {};
 }  // namespace error
 
 }  // namespace kane

@@ -1,0 +1,141 @@
+// Partial velocities and partial angular velocities (seed eq. 18-19).
+//
+// A velocity v (or angular velocity w) is linear in the speeds:
+//   v = sum_r v_r u_r + v_t,   v_r = dv/du_r.
+// Symbolic: partial_velocity<Speeds>(v, u<r>) is the type-level d/du_r, built
+// from dv/dq_s' and dq_s'/du_r = W_sr (type-level 0 or 1 for qdot_speeds, a
+// number of the evaluator otherwise); velocity_remainder<Speeds>(v) is v_t.
+// Numeric: partial_velocities<A>(v, ev) is the 3 x n table of the v_r
+// expressed in A, remainder<A>(v, ev) is v_t in A.
+#pragma once
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+#include <Eigen/Core>
+
+#include "kane/derivative.hpp"
+#include "kane/detail/frame_check.hpp"
+#include "kane/evaluator.hpp"
+#include "kane/expr.hpp"
+#include "kane/speeds.hpp"
+#include "kane/vector.hpp"
+
+namespace kane {
+
+namespace detail {
+
+template <class Sp, std::size_t S, std::size_t R>
+constexpr auto weight() {
+  if constexpr (!Sp::identity)
+    return kde_weight<S, R>{};
+  else if constexpr (S == R)
+    return one_t{};
+  else
+    return zero_t{};
+}
+template <class Sp, std::size_t S>
+constexpr auto offset() {
+  if constexpr (Sp::identity)
+    return zero_t{};
+  else
+    return kde_offset<S>{};
+}
+
+// dx/dLeaf for a scalar or a vector (a derivative by q', u or t is the same in every frame).
+template <class Leaf, class X>
+constexpr auto d(X x) {
+  if constexpr (ScalarExpr<X>)
+    return partial<Leaf>(x);
+  else
+    return partial_in<root_frame_of_t<X>, Leaf>(x);
+}
+
+template <class Sp, std::size_t R, class X, std::size_t... S>
+constexpr auto partial_u(X x, std::index_sequence<S...>) {
+  return (d<speed<R>>(x) + ... + (d<coordinate<S + 1, 1>>(x) * weight<Sp, S + 1, R>()));
+}
+template <class Sp, class X, std::size_t... S>
+constexpr auto remainder_u(X x, std::index_sequence<S...>) {
+  return (at_rest(x) + ... + (d<coordinate<S + 1, 1>>(x) * offset<Sp, S + 1>()));
+}
+
+template <class T>
+struct is_speed_tag : std::false_type {};
+template <std::size_t I>
+struct is_speed_tag<speed<I, 0>> : std::true_type {};
+
+template <class Ev>
+using speeds_of = std::conditional_t<std::is_void_v<typename Ev::speed_set>, qdot_speeds<Ev::state_type::nq>,
+                                     typename Ev::speed_set>;
+
+}  // namespace detail
+
+// v_R = dv/du_R (eq. 18-19), for v a velocity, angular velocity or constraint.
+template <SpeedSet Sp, class X, std::size_t R>
+  requires(ScalarExpr<X> || VectorExpr<X>)
+constexpr auto partial_velocity(X x, speed<R, 0>) {
+  static_assert(R >= 1 && R <= Sp::n, "kane: u_R is not a generalized speed of this system (u_1 .. u_n)");
+  return detail::partial_u<Sp, R>(x, std::make_index_sequence<Sp::n>{});
+}
+// clang-format off
+template <SpeedSet Sp, class X, class Leaf> requires(!detail::is_speed_tag<Leaf>::value)
+error::partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r<Leaf> partial_velocity(X x, Leaf) = delete;
+// clang-format on
+
+// v_t = v - sum_r v_r u_r.
+template <SpeedSet Sp, class X>
+  requires(ScalarExpr<X> || VectorExpr<X>)
+constexpr auto velocity_remainder(X x) {
+  return detail::remainder_u<Sp>(x, std::make_index_sequence<Sp::n>{});
+}
+
+namespace detail {
+// x as numbers: a scalar, or a vector in A.
+template <class A, class X, class Ev>
+auto numbers(const X& x, const Ev& ev) {
+  using S = typename Ev::scalar;
+  if constexpr (ScalarExpr<X>)
+    return Eigen::Matrix<S, 1, 1>(eval_scalar(x, ev));
+  else
+    return Eigen::Matrix<S, 3, 1>(express<A>(x, ev).eigen());
+}
+
+// The columns dx/dq_s' (s = 1..n) and dx/du_r (r = 1..n), in A.
+template <class A, class X, class Ev, std::size_t... S>
+auto rate_columns(const X& x, const Ev& ev, std::index_sequence<S...>) {
+  using col = decltype(numbers<A>(x, ev));
+  Eigen::Matrix<typename Ev::scalar, col::RowsAtCompileTime, int(sizeof...(S))> qd, u;
+  ((qd.col(S) = numbers<A>(d<coordinate<S + 1, 1>>(x), ev)), ...);
+  ((u.col(S) = numbers<A>(d<speed<S + 1>>(x), ev)), ...);
+  return std::pair{qd, u};
+}
+}  // namespace detail
+
+// The table [v_1 ... v_n] in A (rows 1 for a scalar x, 3 for a vector).
+template <Frame A, class X, class Ev>
+  requires(detail::is_evaluator<Ev>::value && (ScalarExpr<X> || VectorExpr<X>))
+auto partial_velocities(const X& x, const Ev& ev) {
+  constexpr std::size_t n = detail::speeds_of<Ev>::n;
+  const auto [qd, u] = detail::rate_columns<A>(x, ev, std::make_index_sequence<n>{});
+  if constexpr (detail::speeds_of<Ev>::identity)
+    return decltype(qd)(qd + u);
+  else
+    return decltype(qd)(qd * ev.W() + u);
+}
+
+// v_t in A.
+template <Frame A, class X, class Ev>
+  requires(detail::is_evaluator<Ev>::value && (ScalarExpr<X> || VectorExpr<X>))
+auto remainder(const X& x, const Ev& ev) {
+  constexpr std::size_t n = detail::speeds_of<Ev>::n;
+  auto rest = detail::numbers<A>(detail::at_rest(x), ev);
+  if constexpr (!detail::speeds_of<Ev>::identity) {
+    const auto [qd, u] = detail::rate_columns<A>(x, ev, std::make_index_sequence<n>{});
+    rest += qd * ev.X();
+  }
+  return rest;
+}
+
+}  // namespace kane

@@ -1,0 +1,117 @@
+// Generalized speeds u_r = sum_s Y_rs(q, t) q_s' + Z_r(q, t) (seed eq. 17).
+//
+//   kane::qdot_speeds<6>                       u_r = q_r'
+//   kane::speeds<dot(w, e<L, 1>), ...>         any n expressions linear in q'
+//
+// Y_rs = du_r/dq_s' and Z_r = u_r at q' = 0 are built at compile time. The
+// evaluator solves the kinematic differential equations at each state:
+// q' = W u + X with W = Y^-1, X = -Y^-1 Z, and q'' = W (u' - Y' q' - Z').
+#pragma once
+
+#include <cstddef>
+#include <tuple>
+#include <utility>
+
+#include "kane/derivative.hpp"
+#include "kane/expr.hpp"
+#include "kane/vector.hpp"
+
+namespace kane {
+
+namespace detail {
+struct speed_set_tag {};
+}  // namespace detail
+
+template <class T>
+concept SpeedSet = std::derived_from<T, detail::speed_set_tag>;
+
+// u_r = q_r', r = 1..N.
+template <std::size_t N> struct qdot_speeds : detail::speed_set_tag {
+  static constexpr std::size_t n = N;
+  static constexpr bool identity = true;
+};
+
+// u_r = U_r, r = 1..n: expressions in q, q' and t, linear in q'.
+template <auto... U> struct speeds : detail::speed_set_tag {
+  static_assert((ScalarExpr<decltype(U)> && ...), "kane: speeds<u1, ..., un> takes scalar expressions");
+  static constexpr std::size_t n = sizeof...(U);
+  static constexpr bool identity = false;
+  static constexpr std::tuple<decltype(U)...> definitions{U...};
+};
+
+// W_SR = dq_S'/du_R and X_S = q_S' at u = 0: numbers the evaluator solves for.
+template <std::size_t S, std::size_t R>
+struct kde_weight : detail::scalar_tag {};
+template <std::size_t S>
+struct kde_offset : detail::scalar_tag {};
+
+namespace detail {
+template <class X>
+struct kde_info : std::false_type {};
+template <std::size_t S, std::size_t R>
+struct kde_info<kde_weight<S, R>> : std::true_type {};
+template <std::size_t S>
+struct kde_info<kde_offset<S>> : std::true_type {};
+
+template <class X> struct unary_info;
+template <class Fn, class A> struct unary_info<unary<Fn, A>> {
+  using fn = Fn;
+};
+template <class Fn, class A> constexpr auto make_unary(A a) {
+  if constexpr (std::is_same_v<Fn, sin_fn>)
+    return sin(a);
+  else if constexpr (std::is_same_v<Fn, cos_fn>)
+    return cos(a);
+  else
+    return sqrt(a);
+}
+
+// Replace q', q'', u, u' by zero (the part of an expression linear in them
+// drops out): x at rest.
+template <class X> constexpr auto at_rest(X x) {
+  if constexpr (coordinate_info<X>::value) {
+    if constexpr (X::order == 0)
+      return x;
+    else
+      return zero_t{};
+  } else if constexpr (speed_info<X>::value)
+    return zero_t{};
+  else if constexpr (ScalarExpr<X> && (LeafConstant<X> || std::is_same_v<X, time_variable> || kde_info<X>::value))
+    return x;
+  else if constexpr (is_v<X, add> || is_v<X, vsum>)
+    return at_rest(x.l) + at_rest(x.r);
+  else if constexpr (is_v<X, sub> || is_v<X, vdiff>)
+    return at_rest(x.l) - at_rest(x.r);
+  else if constexpr (is_v<X, mul>)
+    return at_rest(x.l) * at_rest(x.r);
+  else if constexpr (is_v<X, quot>)
+    return at_rest(x.l) / at_rest(x.r);
+  else if constexpr (is_v<X, neg>)
+    return -at_rest(x.x);
+  else if constexpr (is_v<X, vneg>)
+    return -at_rest(x.v);
+  else if constexpr (is_v<X, unary>)
+    return make_unary<typename unary_info<X>::fn>(at_rest(x.x));
+  else if constexpr (power_info<X>::value)
+    return pow<power_info<X>::n>(at_rest(x.x));
+  else if constexpr (is_v<X, call>)
+    return invoke(x.f, at_rest(x.x));
+  else if constexpr (is_v<X, scaled>)
+    return at_rest(x.s) * at_rest(x.v);
+  else if constexpr (is_v<X, vcross>)
+    return cross(at_rest(x.l), at_rest(x.r));
+  else if constexpr (is_v<X, vdot>)
+    return dot(at_rest(x.l), at_rest(x.r));
+  else if constexpr (is_unit<X>::value || is_zero_vector_v<X>)
+    return x;
+  else if constexpr (is_v<X, omega> || is_v<X, angular_velocity_of>)
+    return zero_vector{};  // linear in q' with no explicit time
+  else if constexpr (is_v<X, alpha> || is_v<X, angular_acceleration_of>)
+    static_assert(!sizeof(X), "kane: an angular acceleration is not linear in the speeds");
+  else
+    return at_rest(x.v);  // a kinematic quantity: its expression
+}
+
+}  // namespace detail
+
+}  // namespace kane

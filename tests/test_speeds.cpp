@@ -1,0 +1,282 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "data/sympy_speeds.hpp"
+#include "trees.hpp"
+
+using kane::dot;
+using kane::e;
+using trees::N;
+
+namespace {
+template <std::size_t I>
+using q = kane::coordinate<I>;
+struct Rad : kane::parameter<1> {};
+inline constexpr Rad r;
+
+// The rolling disc: yaw q1 about n3, lean q2 about y1, spin q3 about l2.
+struct Y : kane::frame<N, kane::simple<kane::axis::z, q<1>>> {};
+struct L : kane::frame<Y, kane::simple<kane::axis::x, q<2>>> {};
+struct R : kane::frame<L, kane::simple<kane::axis::y, q<3>>> {};
+inline constexpr auto w = kane::angular_velocity<N, R>();
+// u1..u3: ^N w^R in L.
+using disc3_speeds = kane::speeds<dot(w, e<L, 1>), dot(w, e<L, 2>), dot(w, e<L, 3>)>;
+// Three coordinates: the contact point C has zero velocity; the centre is C + r l3.
+struct C : kane::origin<N> {};
+struct Centre : kane::point<C, r * e<L, 3>> {};
+inline constexpr auto v_centre = kane::body_point_velocity<N, R, C, Centre>();
+
+// Five coordinates: the contact point at q4 n1 + q5 n2, u4 = q4', u5 = q5' dependent.
+struct O : kane::origin<N> {};
+struct Contact : kane::point<O, kane::q<4> * e<N, 1> + kane::q<5> * e<N, 2>> {};
+struct Centre5 : kane::point<Contact, r * e<L, 3>> {};
+struct Below : kane::point<Centre5, -r * e<L, 3>> {};  // the disc's point at the contact
+using disc5_speeds = kane::speeds<dot(w, e<L, 1>), dot(w, e<L, 2>), dot(w, e<L, 3>), kane::dt(kane::q<4>),
+                                  kane::dt(kane::q<5>)>;
+inline constexpr auto v_contact = kane::body_point_velocity<N, R, Centre5, Below>();
+using rolling = kane::nonholonomic<disc5_speeds, kane::dependent<4, 5>, dot(v_contact, e<N, 1>),
+                                   dot(v_contact, e<N, 2>)>;
+static_assert(rolling::p == 3 && rolling::independents == std::array<std::size_t, 3>{1, 2, 3});
+
+using St3 = kane::state<double, 3, 3, 1>;
+using St5 = kane::state<double, 5, 5, 1>;
+using Ev3 = kane::evaluator<St3, kane::frames<R>, kane::level::velocity, disc3_speeds>;
+using Ev5 = kane::evaluator<St5, kane::frames<R>, kane::level::velocity, disc5_speeds>;
+
+template <class M>
+double max_diff(const M& m, const double* rowmajor) {
+  double d = 0;
+  for (int i = 0; i < m.rows(); ++i)
+    for (int j = 0; j < m.cols(); ++j) d = std::fmax(d, std::fabs(m(i, j) - rowmajor[i * m.cols() + j]));
+  return d;
+}
+
+// Symbolic partials with u = q': type-level, no evaluator numbers involved.
+using q6 = kane::qdot_speeds<6>;
+static_assert(std::is_same_v<decltype(kane::partial_velocity<q6>(kane::dt(kane::q<2>) * e<N, 1>, kane::u<2>)),
+                             kane::unit<N, 1>>);
+static_assert(std::is_same_v<decltype(kane::partial_velocity<q6>(kane::dt(kane::q<2>) * e<N, 1>, kane::u<3>)),
+                             kane::zero_vector>);
+template <class X, class Leaf>
+concept has_partial = requires(X x, Leaf l) { kane::partial_velocity<q6>(x, l); };
+static_assert(has_partial<kane::unit<N, 1>, kane::speed<1>> && !has_partial<kane::unit<N, 1>, kane::coordinate<1>>);
+}  // namespace
+
+TEST_CASE("speeds: the rolling disc's kinematic differential equations and partial velocities against SymPy") {
+  for (const auto& c : sympy_speeds::disc) {
+    St3 s;
+    s.q = {c.q[0], c.q[1], c.q[2]};
+    s.u = {c.u[0], c.u[1], c.u[2]};
+    s.p = {c.r};
+    Ev3 ev;
+    ev.update(s);
+    REQUIRE(ev.status() == kane::solve_status::ok);
+    CHECK(ev.coordinate_value<1, 1>() == Approx(c.qd[0]).margin(1e-13));
+    CHECK(ev.coordinate_value<2, 1>() == Approx(c.qd[1]).margin(1e-13));
+    CHECK(ev.coordinate_value<3, 1>() == Approx(c.qd[2]).margin(1e-13));
+    // ^N w^R in L equals u.
+    const auto wL = kane::express<L>(w, ev);
+    for (int i = 0; i < 3; ++i) CHECK(wL[i] == Approx(c.u[i]).margin(1e-13));
+    const auto vc = kane::express<N>(v_centre, ev);
+    for (int i = 0; i < 3; ++i) CHECK(vc[i] == Approx(c.vc_N[i]).margin(1e-13));
+    const auto V = kane::partial_velocities<N>(v_centre, ev);
+    const auto Wt = kane::partial_velocities<N>(w, ev);
+    CHECK(max_diff(V, c.vc_partials) < 1e-13);
+    CHECK(max_diff(Wt, c.w_partials) < 1e-13);
+    // Closed forms: v_1 = -r l2, v_2 = r l1, v_3 = 0; w_r = l_r; remainders zero.
+    const auto l = ev.axes<L>();
+    CHECK((V.col(0) + c.r * l.col(1)).norm() < 1e-14);
+    CHECK((V.col(1) - c.r * l.col(0)).norm() < 1e-14);
+    CHECK(V.col(2).norm() < 1e-14);
+    CHECK((Wt - l).norm() < 1e-14);
+    CHECK(kane::remainder<N>(v_centre, ev).norm() < 1e-14);
+    // v = sum v_r u_r + v_t
+    const Eigen::Vector3d u(c.u[0], c.u[1], c.u[2]);
+    CHECK((V * u + kane::remainder<N>(v_centre, ev) - vc.eigen()).norm() < 1e-13);
+  }
+}
+
+TEST_CASE("speeds: the five-coordinate disc's constraints, A, B and nonholonomic partial velocities") {
+  for (const auto& c : sympy_speeds::disc) {
+    St5 s;
+    for (int i = 0; i < 5; ++i) s.q[i] = c.q[i], s.u[i] = c.u[i];
+    s.p = {c.r};
+    Ev5 ev;
+    ev.update(s);
+    REQUIRE(ev.status() == kane::solve_status::ok);
+    const auto sol = kane::solve_constraints<rolling>(ev);
+    REQUIRE(sol.status == kane::solve_status::ok);
+    CHECK(max_diff(sol.A, c.A) < 1e-13);
+    CHECK(std::abs(sol.B(0) - c.B[0]) < 1e-14);
+    CHECK(std::abs(sol.B(1) - c.B[1]) < 1e-14);
+    // Closed form: u4 = r c1 (u2 - tan q2 u3), u5 = r s1 (u2 - tan q2 u3).
+    const double c1 = std::cos(c.q[0]), s1 = std::sin(c.q[0]), t2 = std::tan(c.q[1]);
+    Eigen::Matrix<double, 2, 3> A;
+    A << 0, c.r * c1, -c.r * c1 * t2, 0, c.r * s1, -c.r * s1 * t2;
+    CHECK((sol.A - A).cwiseAbs().maxCoeff() < 1e-13);
+    // The nonholonomic partial velocities of the centre equal the holonomic
+    // ones of the three-coordinate disc; so do the partial angular velocities.
+    const auto v5 = kane::velocity<N, Centre5>();
+    const auto Vnh = kane::nonholonomic_partial_velocities<N, rolling>(v5, ev, sol);
+    CHECK(max_diff(Vnh, c.v5_partials) < 1e-13);
+    CHECK(max_diff(Vnh, c.vc_partials) < 1e-13);
+    CHECK(max_diff(kane::nonholonomic_partial_velocities<N, rolling>(w, ev, sol), c.w_partials) < 1e-13);
+    CHECK(kane::nonholonomic_remainder<N, rolling>(v5, ev, sol).norm() < 1e-14);
+    // Constraints hold for u_dep = A u_ind + B: the contact point is at rest.
+    St5 s2 = s;
+    const Eigen::Vector3d ui(c.u[0], c.u[1], c.u[2]);
+    const Eigen::Vector2d ud = sol.A * ui + sol.B;
+    s2.u[3] = ud(0);
+    s2.u[4] = ud(1);
+    Ev5 ev2;
+    ev2.update(s2);
+    CHECK(kane::express<N>(v_contact, ev2).eigen().norm() < 1e-13);
+  }
+}
+
+TEST_CASE("speeds: law tests over random states: v = sum v_r u_r + v_t, constraints satisfied") {
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<double> d(-1.3, 1.3);
+  for (int k = 0; k < 300; ++k) {
+    St5 s;
+    for (int i = 0; i < 5; ++i) s.q[i] = d(rng), s.u[i] = 2 * d(rng);
+    s.p = {0.2 + std::abs(d(rng))};
+    Ev5 ev;
+    ev.update(s);
+    REQUIRE(ev.status() == kane::solve_status::ok);
+    const auto v5 = kane::velocity<N, Centre5>();
+    const Eigen::Matrix<double, 5, 1> u = Eigen::Map<const Eigen::Matrix<double, 5, 1>>(s.u.data());
+    CHECK((kane::partial_velocities<N>(v5, ev) * u + kane::remainder<N>(v5, ev) -
+           kane::express<N>(v5, ev).eigen())
+              .norm() < 1e-12);
+    CHECK((kane::partial_velocities<N>(w, ev) * u + kane::remainder<N>(w, ev) - kane::express<N>(w, ev).eigen())
+              .norm() < 1e-12);
+    const auto sol = kane::solve_constraints<rolling>(ev);
+    St5 s2 = s;
+    const Eigen::Vector2d ud = sol.A * u.head<3>() + sol.B;
+    s2.u[3] = ud(0);
+    s2.u[4] = ud(1);
+    Ev5 ev2;
+    ev2.update(s2);
+    CHECK(kane::express<N>(v_contact, ev2).eigen().norm() < 1e-12);
+    // With the dependent speeds from the constraints, v = sum v~_s u_s + v~_t.
+    const auto Vnh = kane::nonholonomic_partial_velocities<N, rolling>(v5, ev2, sol);
+    CHECK((Vnh * u.head<3>() + kane::nonholonomic_remainder<N, rolling>(v5, ev2, sol) -
+           kane::express<N>(v5, ev2).eigen())
+              .norm() < 1e-12);
+  }
+}
+
+TEST_CASE("speeds: a singular dependent block gives NaN and a status, never a trap") {
+  // Upright and spinning about the vertical with q2 = pi/2: tan q2 blows up; at
+  // q2 = pi/2 exactly the lean speeds cannot be solved: Y is singular.
+  St5 s;
+  s.q = {0.3, std::acos(-1.0) / 2, 0.1, 0, 0};
+  s.u = {1, 1, 1, 0, 0};
+  s.p = {0.5};
+  Ev5 ev;
+  ev.update(s);
+  CHECK(ev.status() == kane::solve_status::singular);
+  CHECK(std::isnan(ev.coordinate_value<1, 1>()));
+  CHECK(std::isnan(kane::express<N>(v_contact, ev)[0]));
+  const auto sol = kane::solve_constraints<rolling>(ev);
+  CHECK(sol.status != kane::solve_status::ok);
+  CHECK(std::isnan(sol.A(0, 0)));
+  // NaN in the state: not finite.
+  s.q[1] = std::numeric_limits<double>::quiet_NaN();
+  ev.update(s);
+  CHECK(ev.status() == kane::solve_status::not_finite);
+}
+
+namespace {
+struct B321 : kane::frame<N, kane::body_fixed<3, 2, 1, q<1>, q<2>, q<3>>> {};
+inline constexpr auto wb = kane::angular_velocity<N, B321>();
+using body_speeds = kane::speeds<dot(wb, e<B321, 1>), dot(wb, e<B321, 2>), dot(wb, e<B321, 3>)>;
+using St321 = kane::state<double, 3>;
+using Ev321 = kane::evaluator<St321, kane::frames<B321>, kane::level::acceleration, body_speeds>;
+}  // namespace
+
+TEST_CASE("speeds: a 3-2-1 body with body-frame angular velocity components as speeds") {
+  for (const auto& c : sympy_speeds::body321) {
+    St321 s;
+    s.q = {c.q[0], c.q[1], c.q[2]};
+    s.u = {c.u[0], c.u[1], c.u[2]};
+    Ev321 ev;
+    ev.update(s);
+    REQUIRE(ev.status() == kane::solve_status::ok);
+    // Closed form: psi' = (u2 s3 + u3 c3)/c2, theta' = u2 c3 - u3 s3, phi' = u1 + (u2 s3 + u3 c3) tan q2.
+    const double s3 = std::sin(c.q[2]), c3 = std::cos(c.q[2]), c2 = std::cos(c.q[1]), t2 = std::tan(c.q[1]);
+    const double a = c.u[1] * s3 + c.u[2] * c3;
+    CHECK(ev.coordinate_value<1, 1>() == Approx(a / c2).margin(1e-13));
+    CHECK(ev.coordinate_value<2, 1>() == Approx(c.u[1] * c3 - c.u[2] * s3).margin(1e-13));
+    CHECK(ev.coordinate_value<3, 1>() == Approx(c.u[0] + a * t2).margin(1e-13));
+    CHECK(ev.coordinate_value<1, 1>() == Approx(c.qd[0]).margin(1e-13));
+    CHECK(ev.coordinate_value<2, 1>() == Approx(c.qd[1]).margin(1e-13));
+    CHECK(ev.coordinate_value<3, 1>() == Approx(c.qd[2]).margin(1e-13));
+  }
+  // The speeds' derivatives give q'': the body's angular acceleration in B is u'.
+  std::mt19937 rng(43);
+  std::uniform_real_distribution<double> d(-1.2, 1.2);
+  for (int k = 0; k < 100; ++k) {
+    St321 s;
+    for (int i = 0; i < 3; ++i) s.q[i] = d(rng), s.u[i] = d(rng), s.ud[i] = d(rng);
+    Ev321 ev;
+    ev.update(s);
+    const auto alpha = kane::express<B321>(kane::angular_acceleration<N, B321>(), ev);
+    for (int i = 0; i < 3; ++i) CHECK(alpha[i] == Approx(s.ud[i]).margin(1e-12));
+  }
+  // Gimbal lock: q2 = pi/2 makes Y singular.
+  St321 s;
+  s.q = {0.2, std::acos(-1.0) / 2, -0.4};
+  s.u = {0.1, 0.2, 0.3};
+  Ev321 ev;
+  ev.update(s);
+  CHECK(ev.status() == kane::solve_status::singular);
+  CHECK(std::isnan(ev.coordinate_value<2, 1>()));
+  CHECK(std::isnan(kane::express<N>(wb, ev)[0]));
+}
+
+namespace {
+using namespace trees;
+struct A1 : kane::frame<N, kane::simple<kane::axis::z, trees::q1>> {};
+struct A2 : kane::frame<A1, kane::simple<kane::axis::y, trees::q2>> {};
+struct A3 : kane::frame<A2, kane::simple<kane::axis::y, trees::q3>> {};
+struct A4 : kane::frame<A3, kane::simple<kane::axis::x, trees::q4>> {};
+struct A5 : kane::frame<A4, kane::simple<kane::axis::y, trees::q5>> {};
+struct A6 : kane::frame<A5, kane::simple<kane::axis::x, trees::q6>> {};
+struct O6 : kane::origin<N> {};
+struct End : kane::point<O6, 0.3 * e<A1, 1> + 0.25 * e<A2, 1> + 0.2 * e<A3, 1> + 0.15 * e<A4, 1> +
+                                 0.1 * e<A5, 1> + 0.05 * e<A6, 1>> {};
+}  // namespace
+
+TEST_CASE("speeds: the 6x6 geometric Jacobian of a 6-revolute arm; J u is the velocity") {
+  using St = kane::state<double, 6>;
+  const auto wE = kane::angular_velocity<N, A6>();
+  const auto vE = kane::velocity<N, End>();
+  for (const auto& c : sympy_speeds::arm_jacobian) {
+    St s;
+    for (int i = 0; i < 6; ++i) s.q[i] = c.q[i];
+    kane::evaluator<St, kane::frames<A6>, kane::level::velocity> ev;
+    ev.update(s);
+    Eigen::Matrix<double, 6, 6> J;
+    J << kane::partial_velocities<N>(wE, ev), kane::partial_velocities<N>(vE, ev);
+    CHECK(max_diff(J, c.J) < 1e-13);
+  }
+  std::mt19937 rng(47);
+  std::uniform_real_distribution<double> d(-3, 3);
+  for (int k = 0; k < 300; ++k) {
+    St s;
+    for (int i = 0; i < 6; ++i) s.q[i] = d(rng), s.qd[i] = d(rng);
+    kane::evaluator<St, kane::frames<A6>, kane::level::velocity> ev;
+    ev.update(s);
+    Eigen::Matrix<double, 6, 6> J;
+    J << kane::partial_velocities<N>(wE, ev), kane::partial_velocities<N>(vE, ev);
+    const Eigen::Matrix<double, 6, 1> u = Eigen::Map<const Eigen::Matrix<double, 6, 1>>(s.qd.data());
+    Eigen::Matrix<double, 6, 1> twist;
+    twist << kane::express<N>(wE, ev).eigen(), kane::express<N>(vE, ev).eigen();
+    CHECK((J * u - twist).norm() < 1e-12);
+  }
+}
