@@ -48,7 +48,18 @@ int main() {
   show("^N a^End", kane::express<N>(kane::acceleration<N, End>(), ev));
   show("^N w^B6", kane::express<N>(kane::angular_velocity<N, B6>(), ev));
   show("^N al^B6", kane::express<N>(kane::angular_acceleration<N, B6>(), ev));
+  // The 6x6 geometric Jacobian: partial angular velocities of B6 over partial
+  // velocities of the end point, u = q'.
+  Eigen::Matrix<double, 6, 6> J;
+  J << kane::partial_velocities<N>(kane::angular_velocity<N, B6>(), ev),
+      kane::partial_velocities<N>(kane::velocity<N, End>(), ev);
+  std::printf("J row 4  ");
+  for (int j = 0; j < 6; ++j) std::printf(" % .4f", J(3, j));
+  std::printf("\n");
+  const Eigen::Matrix<double, 6, 1> u = Eigen::Map<const Eigen::Matrix<double, 6, 1>>(s.qd.data());
+  const bool jacobian_ok =
+      (J.bottomRows<3>() * u - kane::express<N>(kane::velocity<N, End>(), ev).eigen()).norm() < 1e-14;
   // The end point is fixed in B6: the two-point theorem from J6 gives the same velocity.
   const auto v2pt = kane::express<N>(kane::two_point_velocity<N, B6, J6, End>(), ev);
-  return kane::is_approx(v2pt, kane::express<N>(kane::velocity<N, End>(), ev), 1e-14) ? 0 : 1;
+  return jacobian_ok && kane::is_approx(v2pt, kane::express<N>(kane::velocity<N, End>(), ev), 1e-14) ? 0 : 1;
 }

@@ -37,8 +37,8 @@ struct Below : kane::point<Centre5, -r * e<L, 3>> {};  // the disc's point at th
 using disc5_speeds = kane::speeds<dot(w, e<L, 1>), dot(w, e<L, 2>), dot(w, e<L, 3>), kane::dt(kane::q<4>),
                                   kane::dt(kane::q<5>)>;
 inline constexpr auto v_contact = kane::body_point_velocity<N, R, Centre5, Below>();
-using rolling = kane::nonholonomic<disc5_speeds, kane::dependent<4, 5>, dot(v_contact, e<N, 1>),
-                                   dot(v_contact, e<N, 2>)>;
+using rolling =
+    kane::nonholonomic<disc5_speeds, kane::dependent<4, 5>, dot(v_contact, e<N, 1>), dot(v_contact, e<N, 2>)>;
 static_assert(rolling::p == 3 && rolling::independents == std::array<std::size_t, 3>{1, 2, 3});
 
 using St3 = kane::state<double, 3, 3, 1>;
@@ -61,11 +61,15 @@ static_assert(std::is_same_v<decltype(kane::partial_velocity<q6>(kane::dt(kane::
 static_assert(std::is_same_v<decltype(kane::partial_velocity<q6>(kane::dt(kane::q<2>) * e<N, 1>, kane::u<3>)),
                              kane::zero_vector>);
 template <class X, class Leaf>
-concept has_partial = requires(X x, Leaf l) { kane::partial_velocity<q6>(x, l); };
-static_assert(has_partial<kane::unit<N, 1>, kane::speed<1>> && !has_partial<kane::unit<N, 1>, kane::coordinate<1>>);
+concept has_partial = requires(X x, Leaf l) {
+  kane::partial_velocity<q6>(x, l);
+};
+static_assert(has_partial<kane::unit<N, 1>, kane::speed<1>> &&
+              !has_partial<kane::unit<N, 1>, kane::coordinate<1>>);
 }  // namespace
 
-TEST_CASE("speeds: the rolling disc's kinematic differential equations and partial velocities against SymPy") {
+TEST_CASE(
+    "speeds: the rolling disc's kinematic differential equations and partial velocities against SymPy") {
   for (const auto& c : sympy_speeds::disc) {
     St3 s;
     s.q = {c.q[0], c.q[1], c.q[2]};
@@ -152,8 +156,9 @@ TEST_CASE("speeds: law tests over random states: v = sum v_r u_r + v_t, constrai
     CHECK((kane::partial_velocities<N>(v5, ev) * u + kane::remainder<N>(v5, ev) -
            kane::express<N>(v5, ev).eigen())
               .norm() < 1e-12);
-    CHECK((kane::partial_velocities<N>(w, ev) * u + kane::remainder<N>(w, ev) - kane::express<N>(w, ev).eigen())
-              .norm() < 1e-12);
+    CHECK(
+        (kane::partial_velocities<N>(w, ev) * u + kane::remainder<N>(w, ev) - kane::express<N>(w, ev).eigen())
+            .norm() < 1e-12);
     const auto sol = kane::solve_constraints<rolling>(ev);
     St5 s2 = s;
     const Eigen::Vector2d ud = sol.A * u.head<3>() + sol.B;
@@ -279,4 +284,42 @@ TEST_CASE("speeds: the 6x6 geometric Jacobian of a 6-revolute arm; J u is the ve
     twist << kane::express<N>(wE, ev).eigen(), kane::express<N>(vE, ev).eigen();
     CHECK((J * u - twist).norm() < 1e-12);
   }
+}
+
+TEST_CASE("speeds: holonomic constraints, their residuals, velocity constraints and n = 3v - M") {
+  // Two particles (x1, y1, z1, x2, y2, z2) = q1..q6 of a planar double pendulum.
+  using kane::q;
+  struct L1 : kane::parameter<1> {};
+  struct L2 : kane::parameter<2> {};
+  constexpr L1 l1;
+  constexpr L2 l2;
+  using cfg =
+      kane::configuration<2, 0, q<3>, q<6>, kane::pow<2>(q<1>) + kane::pow<2>(q<2>) - kane::pow<2>(l1),
+                          kane::pow<2>(q<4> - q<1>) + kane::pow<2>(q<5> - q<2>) - kane::pow<2>(l2)>;
+  static_assert(cfg::constraints == 4 && cfg::n == 2);
+  static_assert(kane::configuration<0, 1>::n == 6);
+  using St = kane::state<double, 6, 6, 2>;
+  St s;
+  const double a = 0.4, b = 1.1, la = 1.2, lb = 0.7;
+  s.p = {la, lb};
+  s.q = {la * std::cos(a),
+         la * std::sin(a),
+         0,
+         la * std::cos(a) + lb * std::cos(a + b),
+         la * std::sin(a) + lb * std::sin(a + b),
+         0};
+  s.qd = {0.3, -0.2, 0.1, 0.5, 0.4, -0.6};
+  kane::evaluator<St, kane::frames<N>, kane::level::pose> ev;
+  ev.update(s);
+  for (double r : kane::residuals<cfg>(ev)) CHECK(std::abs(r) < 1e-14);
+  s.q[0] += 0.01;  // off the constraint surface
+  const auto res = kane::residuals<cfg>(ev);
+  const double x1 = s.q[0], y1 = s.q[1];
+  CHECK(res[2] == Approx(x1 * x1 + y1 * y1 - la * la));
+  // df/dt = 2 x1 x1' + 2 y1 y1' for the third; z1' for the first.
+  const auto vres = kane::velocity_residuals<cfg>(ev);
+  CHECK(vres[0] == Approx(0.1));
+  CHECK(vres[2] == Approx(2 * x1 * 0.3 + 2 * y1 * -0.2));
+  const double dx = s.q[3] - x1, dy = s.q[4] - y1;
+  CHECK(vres[3] == Approx(2 * dx * (0.5 - 0.3) + 2 * dy * (0.4 + 0.2)));
 }

@@ -26,7 +26,8 @@ namespace kane {
 
 template <std::size_t Particles, std::size_t RigidBodies, auto... F>
 struct configuration {
-  static_assert((ScalarExpr<decltype(F)> && ...), "kane: configuration constraints are scalar expressions f(q, t)");
+  static_assert((ScalarExpr<decltype(F)> && ...),
+                "kane: configuration constraints are scalar expressions f(q, t)");
   static constexpr std::size_t constraints = sizeof...(F);
   static_assert(3 * Particles + 6 * RigidBodies >= constraints,
                 "kane: more holonomic constraints than coordinates (3 per particle, 6 per rigid body)");
@@ -44,15 +45,18 @@ struct configuration {
 template <class Config, class Ev>
 auto residuals(const Ev& ev) {
   return [&]<std::size_t... K>(std::index_sequence<K...>) {
-    return std::array<typename Ev::scalar, Config::constraints>{evaluate(std::get<K>(Config::equations), ev)...};
-  }(std::make_index_sequence<Config::constraints>{});
+    return std::array<typename Ev::scalar, Config::constraints>{
+        evaluate(std::get<K>(Config::equations), ev)...};
+  }
+  (std::make_index_sequence<Config::constraints>{});
 }
 template <class Config, class Ev>
 auto velocity_residuals(const Ev& ev) {
   return [&]<std::size_t... K>(std::index_sequence<K...>) {
     return std::array<typename Ev::scalar, Config::constraints>{
         evaluate(Config::template velocity_constraint<K>(), ev)...};
-  }(std::make_index_sequence<Config::constraints>{});
+  }
+  (std::make_index_sequence<Config::constraints>{});
 }
 
 template <std::size_t... R>
@@ -69,7 +73,8 @@ struct nonholonomic<Sp, dependent<D...>, C...> {
   static_assert(sizeof...(C) == m,
                 "kane: m dependent speeds need m constraint equations; the counts in "
                 "nonholonomic<Speeds, dependent<...>, c...> differ");
-  static_assert(((D >= 1 && D <= n) && ...), "kane: the dependent speeds must be speeds of the system (u_1 .. u_n)");
+  static_assert(((D >= 1 && D <= n) && ...),
+                "kane: the dependent speeds must be speeds of the system (u_1 .. u_n)");
   static_assert(m < n, "kane: at least one speed must stay independent");
   static constexpr std::size_t p = n - m;  // degrees of freedom
   static constexpr std::array<std::size_t, m> dependents{D...};
@@ -83,12 +88,14 @@ struct nonholonomic<Sp, dependent<D...>, C...> {
     }
     return r;
   }();
-  static_assert([] {
-    for (std::size_t i = 0; i < m; ++i)
-      for (std::size_t j = 0; j < i; ++j)
-        if (dependents[i] == dependents[j]) return false;
-    return true;
-  }(), "kane: a dependent speed is named twice");
+  static_assert(
+      [] {
+        for (std::size_t i = 0; i < m; ++i)
+          for (std::size_t j = 0; j < i; ++j)
+            if (dependents[i] == dependents[j]) return false;
+        return true;
+      }(),
+      "kane: a dependent speed is named twice");
   static constexpr std::tuple<decltype(C)...> equations{C...};
 };
 
@@ -113,7 +120,8 @@ auto solve_constraints(const Ev& ev) {
   [&]<std::size_t... K>(std::index_sequence<K...>) {
     ((coeff.row(K) = partial_velocities<root_frame>(std::get<K>(NH::equations), ev)), ...);
     ((c0(K) = remainder<root_frame>(std::get<K>(NH::equations), ev)(0)), ...);
-  }(std::make_index_sequence<m>{});
+  }
+  (std::make_index_sequence<m>{});
   Eigen::Matrix<S, int(m), int(m)> dep;
   Eigen::Matrix<S, int(m), int(p)> ind;
   for (std::size_t k = 0; k < m; ++k) dep.col(k) = coeff.col(NH::dependents[k] - 1);
@@ -121,8 +129,8 @@ auto solve_constraints(const Ev& ev) {
   constraint_solution<S, m, p> out;
   const Eigen::FullPivLU<Eigen::Matrix<S, int(m), int(m)>> lu(dep);
   out.status = !(coeff.allFinite() && c0.allFinite()) ? solve_status::not_finite
-               : !lu.isInvertible()                    ? solve_status::singular
-                                                       : solve_status::ok;
+               : !lu.isInvertible()                   ? solve_status::singular
+                                                      : solve_status::ok;
   if (out.status == solve_status::ok) {
     const Eigen::Matrix<S, int(m), int(m)> inv = lu.inverse();
     out.A = -inv * ind;

@@ -104,7 +104,8 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   using vectorn = Eigen::Matrix<scalar, int(nq), 1>;
 
   evaluator() {
-    static_assert(!solves || SpeedSet<Speeds>, "kane: the fourth argument of evaluator is a speed set (speeds.hpp)");
+    static_assert(!solves || SpeedSet<Speeds>,
+                  "kane: the fourth argument of evaluator is a speed set (speeds.hpp)");
     if constexpr (solves) {
       static_assert(Speeds::n == nq, "kane: a speed set defines as many speeds as the state has coordinates");
       static_assert(St::nu >= nq, "kane: the state holds fewer speeds than the speed set defines");
@@ -140,7 +141,8 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   // q_I, q_I', q_I'': from the state, or solved from the speeds.
   template <std::size_t I, std::size_t D>
   scalar coordinate_value() const {
-    static_assert(I >= 1 && I <= nq, "kane: this coordinate is beyond the state; declare the state with NQ >= I");
+    static_assert(I >= 1 && I <= nq,
+                  "kane: this coordinate is beyond the state; declare the state with NQ >= I");
     static_assert(D <= 2, "kane: a state holds q, q' and q'' only");
     if constexpr (D == 0)
       return st_->q[I - 1];
@@ -163,14 +165,16 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   }
   template <class F>
   const vector3& omega() const {
-    static_assert(Level >= level::velocity,
-                  "kane: this evaluator computes no angular velocities; declare it with level::velocity or higher");
+    static_assert(
+        Level >= level::velocity,
+        "kane: this evaluator computes no angular velocities; declare it with level::velocity or higher");
     return w_[index<F>()];
   }
   template <class F>
   const vector3& alpha() const {
-    static_assert(Level >= level::acceleration,
-                  "kane: this evaluator computes no angular accelerations; declare it with level::acceleration");
+    static_assert(
+        Level >= level::acceleration,
+        "kane: this evaluator computes no angular accelerations; declare it with level::acceleration");
     return a_[index<F>()];
   }
 
@@ -252,7 +256,8 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
       const matrix3& cp = c_[index<P>()];
       matrix3& cf = c_[index<F>()];
       if constexpr (!is_edge<P>) {
-        cf = detail::elementary<scalar, K>(c, s).transpose();  // the parent is a root: its axes are the identity
+        cf = detail::elementary<scalar, K>(c, s)
+                 .transpose();  // the parent is a root: its axes are the identity
       } else if constexpr (p >= 0) {
         constexpr int a = (p + 1) % 3, b = (p + 2) % 3;  // e_Fa = c e_Pa + s e_Pb, e_Fb = c e_Pb - s e_Pa
         cf.col(p) = cp.col(p);
@@ -294,8 +299,8 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
     fill<false>(y, z, std::make_index_sequence<nq>{});
     const Eigen::FullPivLU<matrixn> lu(y);
     status_ = !(y.allFinite() && z.allFinite()) ? solve_status::not_finite
-              : !lu.isInvertible()               ? solve_status::singular
-                                                 : solve_status::ok;
+              : !lu.isInvertible()              ? solve_status::singular
+                                                : solve_status::ok;
     if (status_ == solve_status::ok) {
       w_kde_ = lu.inverse();
       x_kde_ = -w_kde_ * z;

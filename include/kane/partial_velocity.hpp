@@ -74,8 +74,7 @@ using speeds_of = std::conditional_t<std::is_void_v<typename Ev::speed_set>, qdo
 
 // v_R = dv/du_R (eq. 18-19), for v a velocity, angular velocity or constraint.
 template <SpeedSet Sp, class X, std::size_t R>
-  requires(ScalarExpr<X> || VectorExpr<X>)
-constexpr auto partial_velocity(X x, speed<R, 0>) {
+requires(ScalarExpr<X> || VectorExpr<X>) constexpr auto partial_velocity(X x, speed<R, 0>) {
   static_assert(R >= 1 && R <= Sp::n, "kane: u_R is not a generalized speed of this system (u_1 .. u_n)");
   return detail::partial_u<Sp, R>(x, std::make_index_sequence<Sp::n>{});
 }
@@ -86,8 +85,7 @@ error::partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r<Leaf>
 
 // v_t = v - sum_r v_r u_r.
 template <SpeedSet Sp, class X>
-  requires(ScalarExpr<X> || VectorExpr<X>)
-constexpr auto velocity_remainder(X x) {
+requires(ScalarExpr<X> || VectorExpr<X>) constexpr auto velocity_remainder(X x) {
   return detail::remainder_u<Sp>(x, std::make_index_sequence<Sp::n>{});
 }
 
@@ -115,8 +113,8 @@ auto rate_columns(const X& x, const Ev& ev, std::index_sequence<S...>) {
 
 // The table [v_1 ... v_n] in A (rows 1 for a scalar x, 3 for a vector).
 template <Frame A, class X, class Ev>
-  requires(detail::is_evaluator<Ev>::value && (ScalarExpr<X> || VectorExpr<X>))
-auto partial_velocities(const X& x, const Ev& ev) {
+requires(detail::is_evaluator<Ev>::value &&
+         (ScalarExpr<X> || VectorExpr<X>)) auto partial_velocities(const X& x, const Ev& ev) {
   constexpr std::size_t n = detail::speeds_of<Ev>::n;
   const auto [qd, u] = detail::rate_columns<A>(x, ev, std::make_index_sequence<n>{});
   if constexpr (detail::speeds_of<Ev>::identity)
@@ -127,8 +125,8 @@ auto partial_velocities(const X& x, const Ev& ev) {
 
 // v_t in A.
 template <Frame A, class X, class Ev>
-  requires(detail::is_evaluator<Ev>::value && (ScalarExpr<X> || VectorExpr<X>))
-auto remainder(const X& x, const Ev& ev) {
+requires(detail::is_evaluator<Ev>::value && (ScalarExpr<X> || VectorExpr<X>)) auto remainder(const X& x,
+                                                                                             const Ev& ev) {
   constexpr std::size_t n = detail::speeds_of<Ev>::n;
   auto rest = detail::numbers<A>(detail::at_rest(x), ev);
   if constexpr (!detail::speeds_of<Ev>::identity) {

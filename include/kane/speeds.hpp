@@ -26,13 +26,15 @@ template <class T>
 concept SpeedSet = std::derived_from<T, detail::speed_set_tag>;
 
 // u_r = q_r', r = 1..N.
-template <std::size_t N> struct qdot_speeds : detail::speed_set_tag {
+template <std::size_t N>
+struct qdot_speeds : detail::speed_set_tag {
   static constexpr std::size_t n = N;
   static constexpr bool identity = true;
 };
 
 // u_r = U_r, r = 1..n: expressions in q, q' and t, linear in q'.
-template <auto... U> struct speeds : detail::speed_set_tag {
+template <auto... U>
+struct speeds : detail::speed_set_tag {
   static_assert((ScalarExpr<decltype(U)> && ...), "kane: speeds<u1, ..., un> takes scalar expressions");
   static constexpr std::size_t n = sizeof...(U);
   static constexpr bool identity = false;
@@ -53,11 +55,14 @@ struct kde_info<kde_weight<S, R>> : std::true_type {};
 template <std::size_t S>
 struct kde_info<kde_offset<S>> : std::true_type {};
 
-template <class X> struct unary_info;
-template <class Fn, class A> struct unary_info<unary<Fn, A>> {
+template <class X>
+struct unary_info;
+template <class Fn, class A>
+struct unary_info<unary<Fn, A>> {
   using fn = Fn;
 };
-template <class Fn, class A> constexpr auto make_unary(A a) {
+template <class Fn, class A>
+constexpr auto make_unary(A a) {
   if constexpr (std::is_same_v<Fn, sin_fn>)
     return sin(a);
   else if constexpr (std::is_same_v<Fn, cos_fn>)
@@ -68,7 +73,8 @@ template <class Fn, class A> constexpr auto make_unary(A a) {
 
 // Replace q', q'', u, u' by zero (the part of an expression linear in them
 // drops out): x at rest.
-template <class X> constexpr auto at_rest(X x) {
+template <class X>
+constexpr auto at_rest(X x) {
   if constexpr (coordinate_info<X>::value) {
     if constexpr (X::order == 0)
       return x;
@@ -76,7 +82,8 @@ template <class X> constexpr auto at_rest(X x) {
       return zero_t{};
   } else if constexpr (speed_info<X>::value)
     return zero_t{};
-  else if constexpr (ScalarExpr<X> && (LeafConstant<X> || std::is_same_v<X, time_variable> || kde_info<X>::value))
+  else if constexpr (ScalarExpr<X> &&
+                     (LeafConstant<X> || std::is_same_v<X, time_variable> || kde_info<X>::value))
     return x;
   else if constexpr (is_v<X, add> || is_v<X, vsum>)
     return at_rest(x.l) + at_rest(x.r);
