@@ -127,7 +127,7 @@ auto solve_constraints(const Ev& ev) {
   for (std::size_t k = 0; k < m; ++k) dep.col(k) = coeff.col(NH::dependents[k] - 1);
   for (std::size_t k = 0; k < p; ++k) ind.col(k) = coeff.col(NH::independents[k] - 1);
   constraint_solution<S, m, p> out;
-  const Eigen::FullPivLU<Eigen::Matrix<S, int(m), int(m)>> lu(dep);
+  const auto lu = detail::full_piv_lu(dep);
   out.status = !(coeff.allFinite() && c0.allFinite()) ? solve_status::not_finite
                : !lu.isInvertible()                   ? solve_status::singular
                                                       : solve_status::ok;

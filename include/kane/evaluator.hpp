@@ -77,6 +77,16 @@ enum class solve_status { ok, singular, not_finite };
 namespace detail {
 template <class Ev, class X>
 typename Ev::scalar eval_scalar(const X& x, const Ev& ev);
+
+// LU with full pivoting; the rank threshold is Eigen's default, eps * size,
+// set explicitly (g++ -O3 otherwise warns that Eigen reads it uninitialised).
+template <class M>
+Eigen::FullPivLU<M> full_piv_lu(const M& m) {
+  Eigen::FullPivLU<M> lu;
+  lu.setThreshold(std::numeric_limits<typename M::Scalar>::epsilon() * typename M::Scalar(M::RowsAtCompileTime));
+  lu.compute(m);
+  return lu;
+}
 template <class Ev, class V>
 typename Ev::vector3 eval_vector(const V& v, const Ev& ev);
 }  // namespace detail
@@ -297,7 +307,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
     matrixn y;
     vectorn z;
     fill<false>(y, z, std::make_index_sequence<nq>{});
-    const Eigen::FullPivLU<matrixn> lu(y);
+    const auto lu = detail::full_piv_lu(y);
     status_ = !(y.allFinite() && z.allFinite()) ? solve_status::not_finite
               : !lu.isInvertible()              ? solve_status::singular
                                                 : solve_status::ok;
