@@ -1,14 +1,9 @@
-// kane beside the hand-written rolling disc, one binary; outputs agree to
-// 1e-12 before anything is timed. Inputs cycle over 64 random states.
-#include <benchmark/benchmark.h>
-
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
+// kane beside the hand-written rolling disc.
 #include <random>
 #include <vector>
 
 #include "disc.hpp"
+#include "harness.hpp"
 
 namespace {
 std::vector<disc::input> inputs() {
@@ -23,40 +18,17 @@ std::vector<disc::input> inputs() {
 }
 const std::vector<disc::input> states = inputs();
 
-void agree_or_exit() {
+void agree() {
   for (const auto& in : states) {
     disc::output k{}, h{};
     disc::kane_partials(in, k);
     disc::hand_partials(in, h);
-    double d = 0;
-    for (int i = 0; i < 6; ++i) d = std::fmax(d, std::fabs(k.A[i] - h.A[i]));
-    for (int i = 0; i < 9; ++i) d = std::fmax(d, std::fabs(k.V[i] - h.V[i]));
-    if (!(d <= 1e-12)) {
-      std::fprintf(stderr, "kane and hand-written disagree by %g\n", d);
-      std::exit(1);
-    }
-  }
-}
-
-template <void (*F)(const disc::input&, disc::output&)>
-void run(benchmark::State& st) {
-  disc::output out{};
-  std::size_t i = 0;
-  for (auto _ : st) {
-    F(states[i++ & 63], out);
-    benchmark::DoNotOptimize(out);
-    benchmark::ClobberMemory();
+    bench::require_agreement(std::fmax(bench::max_diff(k.A, h.A, 6), bench::max_diff(k.V, h.V, 9)));
   }
 }
 }  // namespace
 
-BENCHMARK(run<disc::hand_partials>)->Name("disc/nonholonomic_partials/hand");
-BENCHMARK(run<disc::kane_partials>)->Name("disc/nonholonomic_partials/kane");
+BENCHMARK(bench::run<disc::hand_partials, states>)->Name("disc/nonholonomic_partials/hand");
+BENCHMARK(bench::run<disc::kane_partials, states>)->Name("disc/nonholonomic_partials/kane");
 
-int main(int argc, char** argv) {
-  agree_or_exit();
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return bench::main(argc, argv, agree); }
