@@ -21,8 +21,7 @@ struct O : kane::origin<N> {};
 struct Contact : kane::point<O, kane::q<4> * e<N, 1> + kane::q<5> * e<N, 2>> {};
 struct Centre : kane::point<Contact, r * e<L, 3>> {};
 struct Below : kane::point<Centre, -r * e<L, 3>> {};
-using speeds5 = kane::speeds<dot(w, e<L, 1>), dot(w, e<L, 2>), dot(w, e<L, 3>), kane::dt(kane::q<4>),
-                             kane::dt(kane::q<5>)>;
+using speeds5 = kane::angular_velocity_speeds<N, R, L, kane::dt(kane::q<4>), kane::dt(kane::q<5>)>;
 inline constexpr auto v_below = kane::body_point_velocity<N, R, Centre, Below>();
 using rolling =
     kane::nonholonomic<speeds5, kane::dependent<4, 5>, dot(v_below, e<N, 1>), dot(v_below, e<N, 2>)>;

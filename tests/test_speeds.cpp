@@ -24,6 +24,7 @@ struct R : kane::frame<L, kane::simple<kane::axis::y, q<3>>> {};
 inline constexpr auto w = kane::angular_velocity<N, R>();
 // u1..u3: ^N w^R in L.
 using disc3_speeds = kane::speeds<dot(w, e<L, 1>), dot(w, e<L, 2>), dot(w, e<L, 3>)>;
+static_assert(std::is_same_v<disc3_speeds, kane::angular_velocity_speeds<N, R, L>>);
 // Three coordinates: the contact point C has zero velocity; the centre is C + r l3.
 struct C : kane::origin<N> {};
 struct Centre : kane::point<C, r * e<L, 3>> {};
@@ -34,8 +35,7 @@ struct O : kane::origin<N> {};
 struct Contact : kane::point<O, kane::q<4> * e<N, 1> + kane::q<5> * e<N, 2>> {};
 struct Centre5 : kane::point<Contact, r * e<L, 3>> {};
 struct Below : kane::point<Centre5, -r * e<L, 3>> {};  // the disc's point at the contact
-using disc5_speeds = kane::speeds<dot(w, e<L, 1>), dot(w, e<L, 2>), dot(w, e<L, 3>), kane::dt(kane::q<4>),
-                                  kane::dt(kane::q<5>)>;
+using disc5_speeds = kane::angular_velocity_speeds<N, R, L, kane::dt(kane::q<4>), kane::dt(kane::q<5>)>;
 inline constexpr auto v_contact = kane::body_point_velocity<N, R, Centre5, Below>();
 using rolling =
     kane::nonholonomic<disc5_speeds, kane::dependent<4, 5>, dot(v_contact, e<N, 1>), dot(v_contact, e<N, 2>)>;
@@ -176,6 +176,19 @@ TEST_CASE("speeds: law tests over random states: v = sum v_r u_r + v_t, constrai
 }
 
 TEST_CASE("speeds: a singular dependent block gives NaN and a status, never a trap") {
+  {
+    // u1 + u2 + u3 = 0 and 2 u1 + 2 u2 + 2 u3 = 1: the block of u2, u3 is singular.
+    using kane::u;
+    using nh = kane::nonholonomic<kane::qdot_speeds<3>, kane::dependent<2, 3>, u<1> + u<2> + u<3>,
+                                  2.0 * (u<1> + u<2> + u<3>)-1.0>;
+    kane::state<double, 3> s;
+    kane::evaluator<kane::state<double, 3>, kane::frames<Y>, kane::level::velocity> ev;
+    ev.update(s);
+    const auto sol = kane::solve_constraints<nh>(ev);
+    CHECK(sol.status == kane::solve_status::singular);
+    CHECK(std::isnan(sol.A(1, 0)));
+    CHECK(std::isnan(sol.B(0)));
+  }
   // Upright and spinning about the vertical with q2 = pi/2: tan q2 blows up; at
   // q2 = pi/2 exactly the lean speeds cannot be solved: Y is singular.
   St5 s;

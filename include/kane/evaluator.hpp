@@ -83,7 +83,8 @@ typename Ev::scalar eval_scalar(const X& x, const Ev& ev);
 template <class M>
 Eigen::FullPivLU<M> full_piv_lu(const M& m) {
   Eigen::FullPivLU<M> lu;
-  lu.setThreshold(std::numeric_limits<typename M::Scalar>::epsilon() * typename M::Scalar(M::RowsAtCompileTime));
+  lu.setThreshold(std::numeric_limits<typename M::Scalar>::epsilon() *
+                  typename M::Scalar(M::RowsAtCompileTime));
   lu.compute(m);
   return lu;
 }

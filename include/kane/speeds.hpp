@@ -2,6 +2,7 @@
 //
 //   kane::qdot_speeds<6>                       u_r = q_r'
 //   kane::speeds<dot(w, e<L, 1>), ...>         any n expressions linear in q'
+//   kane::angular_velocity_speeds<N, R, L>     u_i = ^N w^R . l_i
 //
 // Y_rs = du_r/dq_s' and Z_r = u_r at q' = 0 are built at compile time. The
 // evaluator solves the kinematic differential equations at each state:
@@ -12,6 +13,7 @@
 #include <tuple>
 #include <utility>
 
+#include "kane/angular_velocity.hpp"
 #include "kane/derivative.hpp"
 #include "kane/expr.hpp"
 #include "kane/vector.hpp"
@@ -40,6 +42,13 @@ struct speeds : detail::speed_set_tag {
   static constexpr bool identity = false;
   static constexpr std::tuple<decltype(U)...> definitions{U...};
 };
+
+// u_1..u_3 = ^A w^B . f_1..3 (the components of ^A w^B in F), then Extra...
+// (for instance kane::dt(kane::q<4>)).
+template <class A, class B, class F, auto... Extra>
+using angular_velocity_speeds =
+    speeds<dot(angular_velocity<A, B>(), e<F, 1>), dot(angular_velocity<A, B>(), e<F, 2>),
+           dot(angular_velocity<A, B>(), e<F, 3>), Extra...>;
 
 // W_SR = dq_S'/du_R and X_S = q_S' at u = 0: numbers the evaluator solves for.
 template <std::size_t S, std::size_t R>
