@@ -12,13 +12,24 @@ struct input {
   std::array<double, 6> q, qd, qdd;
 };
 struct output {
-  double R[9];  // columns e_B6,1..3 in N, column-major
-  double p[3], w[3], v[3], alpha[3], a[3];
+  double R[9];      // Q1: columns e_B6,1..3 in N, column-major
+  double p[3];      // Q1: the end point
+  double w[3];      // Q2: ^N w^B6
+  double v[3];      // Q2: ^N v^End
+  double J[36];     // Q3: rows w_r (B6) over v_r (End), column-major 6 x 6
+  double alpha[3];  // Q4: ^N alpha^B6
+  double a[3];      // Q4: ^N a^End
 };
 
-// Q1: R and p.  ALL: everything.
-void kane_pose(const input&, output&);
+// Q1 .. Q4 fill their fields; all fills every field.
+void kane_q1(const input&, output&);
+void kane_q2(const input&, output&);
+void kane_q3(const input&, output&);
+void kane_q4(const input&, output&);
 void kane_all(const input&, output&);
-void hand_pose(const input&, output&);
+void hand_q1(const input&, output&);
+void hand_q2(const input&, output&);
+void hand_q3(const input&, output&);
+void hand_q4(const input&, output&);
 void hand_all(const input&, output&);
 }  // namespace arm6

@@ -1,4 +1,5 @@
-// kane's implementation of the 6-revolute chain (arm6.hpp).
+// kane's implementation of the 6-revolute chain (arm6.hpp). The evaluators
+// live as long as the program, as a controller's would.
 #include <kane/kane.hpp>
 
 #include "arm6.hpp"
@@ -27,35 +28,79 @@ struct J6 : kane::point<J5, 0.1 * kane::e<B5, 1>> {};
 struct End : kane::point<J6, 0.05 * kane::e<B6, 1>> {};
 
 using state = kane::state<double, 6>;
+template <kane::level Level>
+using evaluator = kane::evaluator<state, kane::frames<B6>, Level>;
+
+state s;
+evaluator<kane::level::pose> ev_pose;
+evaluator<kane::level::velocity> ev_velocity;
+evaluator<kane::level::acceleration> ev_all;
+
+constexpr auto r_end = kane::position<O, End>();
+constexpr auto w6 = kane::angular_velocity<N, B6>();
+constexpr auto v_end = kane::velocity<N, End>();
+constexpr auto alpha6 = kane::angular_acceleration<N, B6>();
+constexpr auto a_end = kane::acceleration<N, End>();
 
 template <class V>
 void store(const V& v, double* out) {
   out[0] = v[0], out[1] = v[1], out[2] = v[2];
 }
+template <class Ev>
+void q1(const Ev& ev, arm6::output& out) {
+  Eigen::Map<Eigen::Matrix3d>(out.R) = ev.template axes<B6>();
+  store(kane::express<N>(r_end, ev), out.p);
+}
+template <class Ev>
+void q2(const Ev& ev, arm6::output& out) {
+  store(kane::express<N>(w6, ev), out.w);
+  store(kane::express<N>(v_end, ev), out.v);
+}
+template <class Ev>
+void q3(const Ev& ev, arm6::output& out) {
+  Eigen::Map<Eigen::Matrix<double, 6, 6>> J(out.J);
+  J.topRows<3>() = kane::partial_velocities<N>(w6, ev);
+  J.bottomRows<3>() = kane::partial_velocities<N>(v_end, ev);
+}
+template <class Ev>
+void q4(const Ev& ev, arm6::output& out) {
+  store(kane::express<N>(alpha6, ev), out.alpha);
+  store(kane::express<N>(a_end, ev), out.a);
+}
 }  // namespace
 
 namespace arm6 {
-void kane_pose(const input& in, output& out) {
-  state s;
+void kane_q1(const input& in, output& out) {
   s.q = in.q;
-  kane::evaluator<state, kane::frames<B6>, kane::level::pose> ev;
-  ev.update(s);
-  Eigen::Map<Eigen::Matrix3d>(out.R) = ev.axes<B6>();
-  store(kane::express<N>(kane::position<O, End>(), ev), out.p);
+  ev_pose.update(s);
+  q1(ev_pose, out);
 }
-
-void kane_all(const input& in, output& out) {
-  state s;
+void kane_q2(const input& in, output& out) {
+  s.q = in.q;
+  s.qd = in.qd;
+  ev_velocity.update(s);
+  q2(ev_velocity, out);
+}
+void kane_q3(const input& in, output& out) {
+  s.q = in.q;
+  ev_pose.update(s);
+  q3(ev_pose, out);
+}
+void kane_q4(const input& in, output& out) {
   s.q = in.q;
   s.qd = in.qd;
   s.qdd = in.qdd;
-  kane::evaluator<state, kane::frames<B6>> ev;
-  ev.update(s);
-  Eigen::Map<Eigen::Matrix3d>(out.R) = ev.axes<B6>();
-  store(kane::express<N>(kane::position<O, End>(), ev), out.p);
-  store(kane::express<N>(kane::angular_velocity<N, B6>(), ev), out.w);
-  store(kane::express<N>(kane::velocity<N, End>(), ev), out.v);
-  store(kane::express<N>(kane::angular_acceleration<N, B6>(), ev), out.alpha);
-  store(kane::express<N>(kane::acceleration<N, End>(), ev), out.a);
+  ev_all.update(s);
+  q4(ev_all, out);
+}
+void kane_all(const input& in, output& out) {
+  s.q = in.q;
+  s.qd = in.qd;
+  s.qdd = in.qdd;
+  ev_all.update(s);
+  q1(ev_all, out);
+  q2(ev_all, out);
+  q3(ev_all, out);
+  q4(ev_all, out);
 }
 }  // namespace arm6

@@ -36,8 +36,8 @@ struct B4 : kane::frame<B3, kane::simple<kane::axis::x, q<4>>> {};
 struct B5 : kane::frame<B4, kane::simple<kane::axis::y, q<5>>> {};
 struct B6 : kane::frame<B5, kane::simple<kane::axis::x, q<6>>> {};
 struct O : kane::origin<N> {};
-struct End : kane::point<O, 0.3 * e<B1, 1> + 0.25 * e<B2, 1> + 0.2 * e<B3, 1> + 0.15 * e<B4, 1> + 0.1 * e<B5, 1> +
-                                0.05 * e<B6, 1>> {};
+struct End : kane::point<O, 0.3 * e<B1, 1> + 0.25 * e<B2, 1> + 0.2 * e<B3, 1> + 0.15 * e<B4, 1> +
+                                0.1 * e<B5, 1> + 0.05 * e<B6, 1>> {};
 
 struct Y : kane::frame<N, kane::simple<kane::axis::z, q<1>>> {};
 struct L : kane::frame<Y, kane::simple<kane::axis::x, q<2>>> {};
@@ -49,7 +49,8 @@ struct Centre : kane::point<Contact, r * e<L, 3>> {};
 struct Below : kane::point<Centre, -r * e<L, 3>> {};
 using speeds5 = kane::angular_velocity_speeds<N, R, L, kane::dt(kane::q<4>), kane::dt(kane::q<5>)>;
 inline constexpr auto v_below = kane::body_point_velocity<N, R, Centre, Below>();
-using rolling = kane::nonholonomic<speeds5, kane::dependent<4, 5>, dot(v_below, e<N, 1>), dot(v_below, e<N, 2>)>;
+using rolling =
+    kane::nonholonomic<speeds5, kane::dependent<4, 5>, dot(v_below, e<N, 1>), dot(v_below, e<N, 2>)>;
 }  // namespace
 
 int main() {
@@ -77,7 +78,8 @@ int main() {
   kane::evaluator<decltype(d), kane::frames<R>, kane::level::acceleration, speeds5> ed;
   ed.update(d);
   const auto sol = kane::solve_constraints<rolling>(ed);
-  sink += sol.A(0, 1) + kane::nonholonomic_partial_velocities<N, rolling>(kane::velocity<N, Centre>(), ed, sol)(1, 1);
+  sink += sol.A(0, 1) +
+          kane::nonholonomic_partial_velocities<N, rolling>(kane::velocity<N, Centre>(), ed, sol)(1, 1);
   sink += kane::nonholonomic_remainder<N, rolling>(kane::velocity<N, Centre>(), ed, sol)(0);
   const long counted = allocations - before;
 

@@ -41,10 +41,22 @@ TEST_CASE("io: expressions print in Kane's notation") {
   CHECK(kane::to_string(kane::pow<2>(q<1> + q<2>)) == "(q1 + q2)^2");
   CHECK(kane::to_string(kane::cross(l * kane::dt(q<1>) * e<A, 1>, e<B, 2>)) == "(L*q1' a1) x b2");
   CHECK(kane::to_string(kane::angular_velocity<N, C>()) == "^N w^C");
-  CHECK(kane::to_string(kane::dt<N>(l * e<A, 1>)) == "L (^N w^A x a1)");
+  CHECK(kane::to_string(kane::dt<N>(l * e<A, 1>)) == "^N w^A x (L a1)");
   CHECK(kane::to_string(kane::dt(kane::invoke(ramp{}, q<3>))) == "ramp'(q3)*q3'");
   CHECK(kane::to_string(e<E::tree_parent, 3>) == "d''3");
   std::ostringstream os;
   os << kane::dt<A>(kane::angular_velocity<N, B>());
   CHECK(os.str() == "^N alpha^B - ^N w^A x ^N w^B");
+}
+
+TEST_CASE("io: crosses with one atomic left operand merge at compile time") {
+  using kane::e;
+  constexpr L l;
+  const auto w = kane::angular_velocity<N, A>();
+  static_assert(std::is_same_v<decltype(l * kane::cross(w, e<A, 1>) + 2.0 * kane::cross(w, e<B, 2>)),
+                               kane::vcross<kane::angular_velocity_of<N, A>,
+                                            kane::vsum<kane::scaled<L, kane::unit<A, 1>>,
+                                                       kane::scaled<kane::literal, kane::unit<B, 2>>>>>);
+  CHECK(kane::to_string(l * kane::cross(w, e<A, 1>) + 2.0 * kane::cross(w, e<B, 2>)) ==
+        "^N w^A x (L a1 + 2 b2)");
 }

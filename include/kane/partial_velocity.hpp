@@ -103,8 +103,8 @@ auto numbers(const X& x, const Ev& ev) {
 // The columns dx/dq_s' (s = 1..n) and dx/du_r (r = 1..n), in A.
 template <class A, class X, class Ev, std::size_t... S>
 auto rate_columns(const X& x, const Ev& ev, std::index_sequence<S...>) {
-  using col = decltype(numbers<A>(x, ev));
-  Eigen::Matrix<typename Ev::scalar, col::RowsAtCompileTime, int(sizeof...(S))> qd, u;
+  constexpr int rows = ScalarExpr<X> ? 1 : 3;
+  Eigen::Matrix<typename Ev::scalar, rows, int(sizeof...(S))> qd, u;
   ((qd.col(S) = numbers<A>(d<coordinate<S + 1, 1>>(x), ev)), ...);
   ((u.col(S) = numbers<A>(d<speed<S + 1>>(x), ev)), ...);
   return std::pair{qd, u};

@@ -93,6 +93,15 @@ template <class T>
 struct is_unit : std::false_type {};
 template <class F, int I>
 struct is_unit<unit<F, I>> : std::true_type {};
+// a x b with a an empty (atomic) type; two of them with the same a.
+template <class V>
+struct cross_with_empty_left : std::false_type {};
+template <class A, class B>
+struct cross_with_empty_left<vcross<A, B>> : std::bool_constant<std::is_empty_v<A>> {};
+template <class L, class R>
+struct crosses_with_one_left : std::false_type {};
+template <class A, class B, class C>
+struct crosses_with_one_left<vcross<A, B>, vcross<A, C>> : std::bool_constant<std::is_empty_v<A>> {};
 // Two unit vectors of one frame.
 template <class L, class R>
 struct same_frame_units : std::false_type {};
@@ -118,6 +127,8 @@ constexpr auto operator+(L l, R r) {
     return r;
   else if constexpr (is_zero_vector_v<R>)
     return l;
+  else if constexpr (detail::crosses_with_one_left<L, R>::value)
+    return cross(l.l, l.r + r.r);  // a x b + a x c = a x (b + c)
   else
     return vsum<L, R>(l, r);
 }
@@ -141,6 +152,8 @@ constexpr auto operator*(S s_, V v) {
     return v;
   else if constexpr (std::is_same_v<X, constant<-1>>)
     return -v;
+  else if constexpr (detail::cross_with_empty_left<V>::value)
+    return cross(v.l, s * v.r);  // s (a x b) = a x (s b), so that a x b + a x c can merge
   else
     return scaled<X, V>(s, v);
 }
