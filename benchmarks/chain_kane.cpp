@@ -52,10 +52,14 @@ void kane_all(const input& in, output& out) {
   store(kane::express<N>(kane::angular_acceleration<N, B>(), ev), out.alpha);
   store(kane::express<N>(kane::acceleration<N, End>(), ev), out.a);
 }
+#ifdef KANE_CHAIN_ONLY  // the compile-cost script builds one length at a time
+template void kane_all<KANE_CHAIN_ONLY>(const input&, output&);
+#else
 template void kane_all<2>(const input&, output&);
 template void kane_all<4>(const input&, output&);
 template void kane_all<6>(const input&, output&);
 template void kane_all<10>(const input&, output&);
 template void kane_all<16>(const input&, output&);
 template void kane_all<20>(const input&, output&);
+#endif
 }  // namespace chain
