@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include <kane/io.hpp>
+#include <kane/print.hpp>
 #include <kane/kane.hpp>
 
 using q1 = kane::coordinate<1>;

@@ -20,4 +20,4 @@
 #include "kane/vec.hpp"
 #include "kane/vector.hpp"
 
-// Printing: #include <kane/io.hpp> (kept out of the core).
+// Printing: #include <kane/print.hpp> (kept out of the core).

@@ -2,13 +2,13 @@
 
 #include <sstream>
 
-#include <kane/io.hpp>
+#include <kane/print.hpp>
 
 #include "trees.hpp"
 
 using namespace trees;
 
-TEST_CASE("io: frames print by name, vectors and dcms in Kane's notation") {
+TEST_CASE("print: frames print by name, vectors and dcms in Kane's notation") {
   STATIC_REQUIRE(kane::type_name<N>() == "N");
   CHECK(kane::frame_name<E>() == "E");
   CHECK(kane::frame_name<E::tree_parent>() == "D''");
@@ -32,7 +32,7 @@ struct ramp {
 };
 }  // namespace
 
-TEST_CASE("io: expressions print in Kane's notation") {
+TEST_CASE("print: expressions print in Kane's notation") {
   using kane::e;
   using kane::q;
   constexpr L l;
@@ -49,7 +49,7 @@ TEST_CASE("io: expressions print in Kane's notation") {
   CHECK(os.str() == "^N alpha^B - ^N w^A x ^N w^B");
 }
 
-TEST_CASE("io: crosses with one atomic left operand merge at compile time") {
+TEST_CASE("print: crosses with one atomic left operand merge at compile time") {
   using kane::e;
   constexpr L l;
   const auto w = kane::angular_velocity<N, A>();
