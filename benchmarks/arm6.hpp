@@ -32,4 +32,9 @@ void hand_q2(const input&, output&);
 void hand_q3(const input&, output&);
 void hand_q4(const input&, output&);
 void hand_all(const input&, output&);
+void kdl_q1(const input&, output&);
+void kdl_q2(const input&, output&);
+void kdl_q3(const input&, output&);
+void kdl_q4(const input&, output&);
+void kdl_all(const input&, output&);
 }  // namespace arm6

@@ -22,10 +22,11 @@ double diff(const arm6::output& a, const arm6::output& b) {
 
 void agree() {
   for (const auto& in : states) {
-    arm6::output k{}, h{};
+    arm6::output k{}, h{}, o{};
     arm6::kane_all(in, k);
     arm6::hand_all(in, h);
-    double d = diff(k, h);
+    arm6::kdl_all(in, o);
+    double d = std::fmax(diff(k, h), diff(o, h));
     void (*kq[])(const arm6::input&, arm6::output&) = {arm6::kane_q1, arm6::kane_q2, arm6::kane_q3,
                                                        arm6::kane_q4};
     void (*hq[])(const arm6::input&, arm6::output&) = {arm6::hand_q1, arm6::hand_q2, arm6::hand_q3,
@@ -53,5 +54,10 @@ BENCHMARK(bench::run<arm6::hand_q4, states>)->Name("arm6/Q4_acceleration/hand");
 BENCHMARK(bench::run<arm6::kane_q4, states>)->Name("arm6/Q4_acceleration/kane");
 BENCHMARK(bench::run<arm6::hand_all, states>)->Name("arm6/ALL/hand");
 BENCHMARK(bench::run<arm6::kane_all, states>)->Name("arm6/ALL/kane");
+BENCHMARK(bench::run<arm6::kdl_q1, states>)->Name("arm6/Q1_pose/kdl");
+BENCHMARK(bench::run<arm6::kdl_q2, states>)->Name("arm6/Q2_velocity/kdl");
+BENCHMARK(bench::run<arm6::kdl_q3, states>)->Name("arm6/Q3_jacobian/kdl");
+BENCHMARK(bench::run<arm6::kdl_q4, states>)->Name("arm6/Q4_acceleration/kdl");
+BENCHMARK(bench::run<arm6::kdl_all, states>)->Name("arm6/ALL/kdl");
 
 int main(int argc, char** argv) { return bench::main(argc, argv, agree); }

@@ -26,8 +26,8 @@ inline void turn(M3& R, double q) {
 // Body(i) for i = 0..5, unrolled so that every axis index is a constant.
 template <class Body>
 inline void joints(Body body) {
-  [&]<int... I>(std::integer_sequence<int, I...>) { (body(std::integral_constant<int, I>{}), ...); }(
-      std::make_integer_sequence<int, 6>{});
+  [&]<int... I>(std::integer_sequence<int, I...>) { (body(std::integral_constant<int, I>{}), ...); }
+  (std::make_integer_sequence<int, 6>{});
 }
 void store(const V3& v, double* out) { Eigen::Map<V3>{out} = v; }
 }  // namespace
