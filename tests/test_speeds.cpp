@@ -336,3 +336,21 @@ TEST_CASE("speeds: holonomic constraints, their residuals, velocity constraints 
   const double dx = s.q[3] - x1, dy = s.q[4] - y1;
   CHECK(vres[3] == Approx(2 * dx * (0.5 - 0.3) + 2 * dy * (0.4 + 0.2)));
 }
+
+TEST_CASE("speeds: qdot_speeds read u and u' as q' and q''") {
+  using St = kane::state<double, 6>;
+  std::mt19937 rng(53);
+  std::uniform_real_distribution<double> d(-2, 2);
+  const auto aE = kane::acceleration<N, End>();
+  for (int k = 0; k < 50; ++k) {
+    St s, t;
+    for (int i = 0; i < 6; ++i)
+      s.q[i] = t.q[i] = d(rng), s.qd[i] = t.u[i] = d(rng), s.qdd[i] = t.ud[i] = d(rng);
+    kane::evaluator<St, kane::frames<A6>> from_q;
+    kane::evaluator<St, kane::frames<A6>, kane::level::acceleration, kane::qdot_speeds<6>> from_u;
+    from_q.update(s);
+    from_u.update(t);
+    CHECK(from_u.status() == kane::solve_status::ok);
+    CHECK(kane::is_approx(kane::express<N>(aE, from_u), kane::express<N>(aE, from_q), 1e-14));
+  }
+}

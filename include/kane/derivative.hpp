@@ -264,8 +264,12 @@ constexpr auto partial_in(V v) {
     return zero_vector{};  // no u, t or q'' in ^R w^F
   else if constexpr (is_v<V, angular_velocity_of> && !(coordinate_info<Leaf>::value && Leaf::order == 0))
     return partial_in<A, Leaf>(expand(v));
-  else if constexpr (is_v<V, omega> || is_v<V, alpha> || is_v<V, angular_velocity_of> ||
-                     is_v<V, angular_acceleration_of>)
+  else if constexpr (is_v<V, alpha> || is_v<V, angular_acceleration_of>)
+    static_assert(
+        !sizeof(V),
+        "kane: an angular acceleration is not linear in the speeds and has no partial derivatives here; "
+        "take partial velocities of velocities and angular velocities");
+  else if constexpr (is_v<V, omega> || is_v<V, angular_velocity_of>)
     static_assert(!sizeof(V),
                   "kane: partial derivatives apply to vectors of unit vectors and scalars (positions); "
                   "an angular velocity or acceleration node has none here");

@@ -305,6 +305,13 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
 
   // Y q' + Z = u, so q' = W u + X.
   void solve_rates() {
+    if constexpr (Speeds::identity) {  // u = q'
+      for (std::size_t i = 0; i < nq; ++i) qd_[i] = st_->u[i];
+    } else {
+      solve_general_rates();
+    }
+  }
+  void solve_general_rates() {
     matrixn y;
     vectorn z;
     fill<false>(y, z, std::make_index_sequence<nq>{});
@@ -324,6 +331,13 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
 
   // u' = Y q'' + Y' q' + Z', so q'' = W (u' - Y' q' - Z').
   void solve_accelerations() {
+    if constexpr (Speeds::identity) {
+      for (std::size_t i = 0; i < nq; ++i) qdd_[i] = st_->ud[i];
+    } else {
+      solve_general_accelerations();
+    }
+  }
+  void solve_general_accelerations() {
     matrixn yd;
     vectorn zd;
     fill<true>(yd, zd, std::make_index_sequence<nq>{});
