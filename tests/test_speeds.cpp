@@ -270,7 +270,7 @@ struct End : kane::point<O6, 0.3 * e<A1, 1> + 0.25 * e<A2, 1> + 0.2 * e<A3, 1> +
                                  0.1 * e<A5, 1> + 0.05 * e<A6, 1>> {};
 }  // namespace
 
-TEST_CASE("speeds: the 6x6 geometric Jacobian of a 6-revolute arm; J u is the velocity") {
+TEST_CASE("speeds: the 6x6 geometric Jacobian of a 6-revolute arm, and J u is the velocity") {
   using St = kane::state<double, 6>;
   const auto wE = kane::angular_velocity<N, A6>();
   const auto vE = kane::velocity<N, End>();
