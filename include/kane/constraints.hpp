@@ -118,8 +118,13 @@ auto solve_constraints(const Ev& ev) {
   Eigen::Matrix<S, int(m), int(n)> coeff;
   Eigen::Matrix<S, int(m), 1> c0;
   [&]<std::size_t... K>(std::index_sequence<K...>) {
-    ((coeff.row(K) = partial_velocities<root_frame>(std::get<K>(NH::equations), ev)), ...);
-    ((c0(K) = remainder<root_frame>(std::get<K>(NH::equations), ev)(0)), ...);
+    (
+        [&] {
+          const auto [row, rest] = linear_in_speeds<root_frame>(std::get<K>(NH::equations), ev);
+          coeff.row(K) = row;
+          c0(K) = rest(0);
+        }(),
+        ...);
   }
   (std::make_index_sequence<m>{});
   Eigen::Matrix<S, int(m), int(m)> dep;
@@ -156,8 +161,7 @@ auto nonholonomic_partial_velocities(const X& x, const Ev& ev, const Sol& sol) {
 // v~_t = v_t + sum_r v_r B_r, in F.
 template <Frame F, class NH, class X, class Ev, class Sol>
 auto nonholonomic_remainder(const X& x, const Ev& ev, const Sol& sol) {
-  const auto all = partial_velocities<F>(x, ev);
-  auto rest = remainder<F>(x, ev);
+  auto [all, rest] = linear_in_speeds<F>(x, ev);
   for (std::size_t r = 0; r < NH::m; ++r) rest += all.col(NH::dependents[r] - 1) * sol.B(r);
   return rest;
 }

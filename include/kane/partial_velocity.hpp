@@ -111,29 +111,35 @@ auto rate_columns(const X& x, const Ev& ev, std::index_sequence<S...>) {
 }
 }  // namespace detail
 
-// The table [v_1 ... v_n] in A (rows 1 for a scalar x, 3 for a vector).
+// x = T u + t in A: the table T = [v_1 ... v_n] (rows 1 for a scalar x, 3 for
+// a vector) and the remainder t, from one pass over dx/dq_s' and dx/du_r.
+template <Frame A, class X, class Ev>
+requires(detail::is_evaluator<Ev>::value &&
+         (ScalarExpr<X> || VectorExpr<X>)) auto linear_in_speeds(const X& x, const Ev& ev) {
+  constexpr std::size_t n = detail::speeds_of<Ev>::n;
+  const auto [qd, u] = detail::rate_columns<A>(x, ev, std::make_index_sequence<n>{});
+  using table = std::remove_const_t<decltype(qd)>;
+  auto rest = detail::numbers<A>(detail::at_rest(x), ev);
+  if constexpr (detail::speeds_of<Ev>::identity) {
+    return std::pair{table(qd + u), rest};
+  } else {
+    rest += qd * ev.X();
+    return std::pair{table(qd * ev.W() + u), rest};
+  }
+}
+
+// The table [v_1 ... v_n] in A.
 template <Frame A, class X, class Ev>
 requires(detail::is_evaluator<Ev>::value &&
          (ScalarExpr<X> || VectorExpr<X>)) auto partial_velocities(const X& x, const Ev& ev) {
-  constexpr std::size_t n = detail::speeds_of<Ev>::n;
-  const auto [qd, u] = detail::rate_columns<A>(x, ev, std::make_index_sequence<n>{});
-  if constexpr (detail::speeds_of<Ev>::identity)
-    return decltype(qd)(qd + u);
-  else
-    return decltype(qd)(qd * ev.W() + u);
+  return linear_in_speeds<A>(x, ev).first;
 }
 
 // v_t in A.
 template <Frame A, class X, class Ev>
 requires(detail::is_evaluator<Ev>::value && (ScalarExpr<X> || VectorExpr<X>)) auto remainder(const X& x,
                                                                                              const Ev& ev) {
-  constexpr std::size_t n = detail::speeds_of<Ev>::n;
-  auto rest = detail::numbers<A>(detail::at_rest(x), ev);
-  if constexpr (!detail::speeds_of<Ev>::identity) {
-    const auto [qd, u] = detail::rate_columns<A>(x, ev, std::make_index_sequence<n>{});
-    rest += qd * ev.X();
-  }
-  return rest;
+  return linear_in_speeds<A>(x, ev).second;
 }
 
 }  // namespace kane
