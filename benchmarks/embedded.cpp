@@ -1,5 +1,6 @@
-// The rolling disc and the 6-revolute arm for a Cortex-M4: compiled with
-// arm-none-eabi-g++ -fno-exceptions -fno-rtti -Os, in float (KANE_EMBEDDED_SCALAR=float) or double.
+// The rolling disc and the 6-revolute arm as two C functions: compiled for a
+// Cortex-M4 with arm-none-eabi-g++ -fno-exceptions -fno-rtti -Os, in float
+// (KANE_EMBEDDED_SCALAR=float) or double, and run by the zero-allocation test.
 #include <kane/kane.hpp>
 
 #ifndef KANE_EMBEDDED_SCALAR
@@ -39,19 +40,27 @@ using rolling =
     kane::nonholonomic<speeds5, kane::dependent<4, 5>, dot(v_below, e<N, 1>), dot(v_below, e<N, 2>)>;
 }  // namespace
 
-// ^N a^End and the 6x3 Jacobian rows of the end point, in N.
+// Everything of the arm in N: ^N P^B6 (9), r, v, a of the end point, ^N w^B6,
+// ^N alpha^B6 (3 each), the Jacobian rows of the end point (18).
 extern "C" void arm_step(const real* q, const real* qd, const real* qdd, real* out) {
   kane::state<real, 6> s;
   for (int i = 0; i < 6; ++i) s.q[i] = q[i], s.qd[i] = qd[i], s.qdd[i] = qdd[i];
   kane::evaluator<kane::state<real, 6>, kane::frames<B6>> ev;
   ev.update(s);
-  const auto a = kane::express<N>(kane::acceleration<N, End>(), ev);
+  const auto P = kane::direction_cosines<N, B6>(s);
+  for (int i = 0; i < 9; ++i) out[i] = P(i % 3, i / 3);
+  const kane::vec<N, real> v[] = {kane::express<N>(kane::position<O, End>(), ev),
+                                  kane::express<N>(kane::velocity<N, End>(), ev),
+                                  kane::express<N>(kane::acceleration<N, End>(), ev),
+                                  kane::express<N>(kane::angular_velocity<N, B6>(), ev),
+                                  kane::express<N>(kane::angular_acceleration<N, B6>(), ev)};
+  for (int k = 0; k < 5; ++k)
+    for (int i = 0; i < 3; ++i) out[9 + 3 * k + i] = v[k][i];
   const auto J = kane::partial_velocities<N>(kane::velocity<N, End>(), ev);
-  for (int i = 0; i < 3; ++i) out[i] = a[i];
-  for (int i = 0; i < 18; ++i) out[3 + i] = J(i % 3, i / 3);
+  for (int i = 0; i < 18; ++i) out[24 + i] = J(i % 3, i / 3);
 }
 
-// A and the nonholonomic partial velocities of the disc's centre.
+// A (6) and the nonholonomic partial velocities of the disc's centre (9) and their remainder (3).
 extern "C" int disc_step(const real* q, const real* u, real radius, real* out) {
   kane::state<real, 5, 5, 1> s;
   for (int i = 0; i < 5; ++i) s.q[i] = q[i], s.u[i] = u[i];
@@ -62,5 +71,7 @@ extern "C" int disc_step(const real* q, const real* u, real radius, real* out) {
   const auto V = kane::nonholonomic_partial_velocities<N, rolling>(kane::velocity<N, Centre>(), ev, sol);
   for (int i = 0; i < 6; ++i) out[i] = sol.A(i % 2, i / 2);
   for (int i = 0; i < 9; ++i) out[6 + i] = V(i % 3, i / 3);
+  const auto t = kane::nonholonomic_remainder<N, rolling>(kane::velocity<N, Centre>(), ev, sol);
+  for (int i = 0; i < 3; ++i) out[15 + i] = t(i);
   return sol.status == kane::solve_status::ok ? 0 : 1;
 }
