@@ -29,6 +29,7 @@
 #include "kane/detail/list.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
+#include "kane/detail/v3.hpp"
 #include "kane/expr.hpp"
 #include "kane/speeds.hpp"
 #include "kane/state.hpp"
@@ -89,7 +90,7 @@ Eigen::FullPivLU<M> full_piv_lu(const M& m) {
   return lu;
 }
 template <class Ev, class V>
-typename Ev::vector3 eval_vector(const V& v, const Ev& ev);
+v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev);
 }  // namespace detail
 
 // Speeds: void to read q' and q'' from the state; a speed set to solve them
@@ -123,16 +124,14 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
     }
     w_kde_.setIdentity();
     x_kde_.setZero();
-    for (auto& c : c_) c.setIdentity();
-    for (auto& w : w_) w.setZero();
-    for (auto& a : a_) a.setZero();
+    for (auto& c : c_) c = {1, 0, 0, 0, 1, 0, 0, 0, 1};
   }
 
   // The outward pass at s; s must outlive the evaluations that follow. With a
   // speed set, q' and q'' are solved from s.u and s.ud first; if Y is singular
   // or not finite, status() says so, and q', q'' and all computed from them
   // are NaN.
-  void update(const St& s) {
+  KANE_FLATTEN void update(const St& s) {
     st_ = &s;
     trig_ = detail::make_trig<cached>(s);
     pose_pass(closure{});
@@ -171,22 +170,22 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
 
   // Columns e_F1, e_F2, e_F3 in the root's components: (^R P^F)^T.
   template <class F>
-  const matrix3& axes() const {
-    return c_[index<F>()];
+  Eigen::Map<const matrix3> axes() const {
+    return Eigen::Map<const matrix3>(c_[index<F>()].data());
   }
   template <class F>
-  const vector3& omega() const {
+  Eigen::Map<const vector3> omega() const {
     static_assert(
         Level >= level::velocity,
         "kane: this evaluator computes no angular velocities; declare it with level::velocity or higher");
-    return w_[index<F>()];
+    return Eigen::Map<const vector3>(w_[index<F>()].data());
   }
   template <class F>
-  const vector3& alpha() const {
+  Eigen::Map<const vector3> alpha() const {
     static_assert(
         Level >= level::acceleration,
         "kane: this evaluator computes no angular accelerations; declare it with level::acceleration");
-    return a_[index<F>()];
+    return Eigen::Map<const vector3>(a_[index<F>()].data());
   }
 
   // sin q_I and cos q_I: from the cache when a frame turns by q_I.
@@ -243,16 +242,22 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
     (acceleration_edge<F>(), ...);
   }
 
+  using v3 = detail::v3<scalar>;
+  template <class F>
+  v3 column(int j) const {
+    return detail::load3(c_[index<F>()].data() + 3 * j);
+  }
+
   // The axis k of the edge above F, in the root's components (fixed in both frames).
   template <class F>
-  vector3 edge_axis() const {
+  v3 edge_axis() const {
     using K = typename F::step::axis;
     constexpr int p = detail::unit_axis<K>::principal;
     if constexpr (p >= 0) {
-      return c_[index<F>()].col(p);
+      return column<F>(p);
     } else {
       constexpr auto k = detail::unit_axis<K>::value;
-      return c_[index<F>()] * vector3(scalar(k[0]), scalar(k[1]), scalar(k[2]));
+      return scalar(k[0]) * column<F>(0) + scalar(k[1]) * column<F>(1) + scalar(k[2]) * column<F>(2);
     }
   }
 
@@ -264,18 +269,27 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
       constexpr std::size_t q = F::step::coordinate::index;
       constexpr int p = detail::unit_axis<K>::principal;
       const scalar c = trig_.cos(q), s = trig_.sin(q);
-      const matrix3& cp = c_[index<P>()];
-      matrix3& cf = c_[index<F>()];
-      if constexpr (!is_edge<P>) {
-        cf = detail::elementary<scalar, K>(c, s)
-                 .transpose();  // the parent is a root: its axes are the identity
-      } else if constexpr (p >= 0) {
+      scalar* cf = c_[index<F>()].data();
+      if constexpr (p >= 0) {
         constexpr int a = (p + 1) % 3, b = (p + 2) % 3;  // e_Fa = c e_Pa + s e_Pb, e_Fb = c e_Pb - s e_Pa
-        cf.col(p) = cp.col(p);
-        cf.col(a) = c * cp.col(a) + s * cp.col(b);
-        cf.col(b) = c * cp.col(b) - s * cp.col(a);
-      } else {
-        cf.noalias() = cp * detail::elementary<scalar, K>(c, s).transpose();
+        if constexpr (!is_edge<P>) {                     // the parent's axes are the identity
+          c_[index<F>()] = {};
+          cf[3 * p + p] = scalar(1);
+          cf[3 * a + a] = c, cf[3 * a + b] = s;
+          cf[3 * b + a] = -s, cf[3 * b + b] = c;
+        } else {
+          const v3 ea = column<P>(a), eb = column<P>(b);
+          detail::store3(cf + 3 * p, column<P>(p));
+          detail::store3(cf + 3 * a, c * ea + s * eb);
+          detail::store3(cf + 3 * b, c * eb - s * ea);
+        }
+      } else {  // e_Fj = sum_k (^P P^F)_jk e_Pk
+        const matrix3 e = detail::elementary<scalar, K>(c, s);
+        Eigen::Map<matrix3> m(cf);
+        if constexpr (!is_edge<P>)
+          m = e.transpose();
+        else
+          m.noalias() = axes<P>() * e.transpose();
       }
     }
   }
@@ -284,7 +298,8 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   void velocity_edge() {
     if constexpr (is_edge<F>) {
       constexpr std::size_t q = F::step::coordinate::index;
-      w_[index<F>()] = w_[index<typename F::tree_parent>()] + coordinate_value<q, 1>() * edge_axis<F>();
+      const v3 wp = detail::load3(w_[index<typename F::tree_parent>()].data());
+      detail::store3(w_[index<F>()].data(), wp + coordinate_value<q, 1>() * edge_axis<F>());
     }
   }
 
@@ -293,8 +308,10 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
     if constexpr (is_edge<F>) {
       constexpr std::size_t q = F::step::coordinate::index;
       constexpr std::size_t ip = index<typename F::tree_parent>();
-      const vector3 k = edge_axis<F>();
-      a_[index<F>()] = a_[ip] + coordinate_value<q, 2>() * k + coordinate_value<q, 1>() * w_[ip].cross(k);
+      const v3 k = edge_axis<F>();
+      const v3 wp = detail::load3(w_[ip].data()), ap = detail::load3(a_[ip].data());
+      detail::store3(a_[index<F>()].data(),
+                     ap + coordinate_value<q, 2>() * k + coordinate_value<q, 1>() * detail::cross3(wp, k));
     }
   }
 
@@ -369,9 +386,9 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   matrixn w_kde_;
   vectorn x_kde_;
   detail::trig<scalar, nq> trig_{};
-  std::array<matrix3, size> c_;
-  std::array<vector3, size> w_;
-  std::array<vector3, size> a_;
+  std::array<std::array<scalar, 9>, size> c_;  // e_F1, e_F2, e_F3 in R, column after column
+  std::array<std::array<scalar, 3>, size> w_{};
+  std::array<std::array<scalar, 3>, size> a_{};
 };
 
 namespace detail {
@@ -450,24 +467,23 @@ typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
   } else if constexpr (is_v<X, call>)
     return x.f(eval_scalar(x.x, ev));
   else if constexpr (is_v<X, vdot>)
-    return eval_vector(x.l, ev).dot(eval_vector(x.r, ev));
+    return dot3(eval_vector(x.l, ev), eval_vector(x.r, ev));
   else
     static_assert(!sizeof(X), "kane: evaluation of an unknown scalar node");
 }
 
 // Components in the root frame.
 template <class Ev, class V>
-typename Ev::vector3 eval_vector(const V& v, const Ev& ev) {
+v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev) {
   using S = typename Ev::scalar;
-  using V3 = typename Ev::vector3;
   if constexpr (is_zero_vector_v<V>)
-    return V3::Zero();
+    return {S(0), S(0), S(0)};
   else if constexpr (is_unit<V>::value) {
     using F = typename V::frame;
     if constexpr (std::is_void_v<typename F::tree_parent>)
-      return V3::Unit(V::index - 1);
+      return {S(V::index == 1), S(V::index == 2), S(V::index == 3)};
     else
-      return ev.template axes<F>().col(V::index - 1);
+      return load3(ev.template axes<F>().data() + 3 * (V::index - 1));
   } else if constexpr (is_v<V, scaled>) {
     const S s = eval_scalar(v.s, ev);
     return s * eval_vector(v.v, ev);
@@ -477,41 +493,48 @@ typename Ev::vector3 eval_vector(const V& v, const Ev& ev) {
     return eval_vector(v.l, ev) - eval_vector(v.r, ev);
   else if constexpr (is_v<V, vneg>)
     return -eval_vector(v.v, ev);
-  else if constexpr (is_v<V, vcross>) {
-    const V3 l = eval_vector(v.l, ev);
-    const V3 r = eval_vector(v.r, ev);
-    return l.cross(r);
-  } else if constexpr (is_v<V, omega>)
-    return ev.template omega<typename V::frame>();
+  else if constexpr (is_v<V, vcross>)
+    return cross3(eval_vector(v.l, ev), eval_vector(v.r, ev));
+  else if constexpr (is_v<V, omega>)
+    return load3(ev.template omega<typename V::frame>().data());
   else if constexpr (is_v<V, alpha>)
-    return ev.template alpha<typename V::frame>();
+    return load3(ev.template alpha<typename V::frame>().data());
   else if constexpr (is_v<V, angular_velocity_of> || is_v<V, angular_acceleration_of>)
     return eval_vector(expand(v), ev);
   else
     return eval_vector(v.v, ev);  // a kinematic quantity: its expression
 }
 
+// ^A components of the root components r.
+template <class A, class Ev>
+v3<typename Ev::scalar> in_frame(const v3<typename Ev::scalar>& r, const Ev& ev) {
+  if constexpr (std::is_same_v<A, root_of<A>>)
+    return r;
+  else {
+    const auto* c = ev.template axes<A>().data();
+    return {dot3(load3(c), r), dot3(load3(c + 3), r), dot3(load3(c + 6), r)};
+  }
+}
+
 }  // namespace detail
 
 // The value of a scalar expression.
 template <ScalarExpr X, class Ev>
-requires detail::is_evaluator<Ev>::value typename Ev::scalar evaluate(const X& x, const Ev& ev) {
+requires detail::is_evaluator<Ev>::value KANE_FLATTEN typename Ev::scalar evaluate(const X& x, const Ev& ev) {
   return detail::eval_scalar(x, ev);
 }
 
 // ^A v: the components of the vector expression v in A.
 template <Frame A, VectorExpr V, class Ev>
-requires detail::is_evaluator<Ev>::value vec<A, typename Ev::scalar> express(const V& v, const Ev& ev) {
+requires detail::is_evaluator<Ev>::value KANE_FLATTEN vec<A, typename Ev::scalar> express(const V& v,
+                                                                                          const Ev& ev) {
   using R = detail::root_of<A>;
   using VR = detail::root_frame_of_t<V>;
   static_assert(std::is_same_v<VR, root_frame> || std::is_same_v<VR, R>,
                 "kane: no path of the frame tree joins the vector's frames and the frame of expression; "
                 "express it in a frame of its own tree");
-  const typename Ev::vector3 r = detail::eval_vector(v, ev);
-  if constexpr (std::is_same_v<A, R>)
-    return vec<A, typename Ev::scalar>(r);
-  else
-    return vec<A, typename Ev::scalar>(ev.template axes<A>().transpose() * r);
+  const auto r = detail::in_frame<A>(detail::eval_vector(v, ev), ev);
+  return vec<A, typename Ev::scalar>(r.x, r.y, r.z);
 }
 
 }  // namespace kane

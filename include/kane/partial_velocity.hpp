@@ -94,38 +94,39 @@ namespace detail {
 template <class A, class X, class Ev>
 auto numbers(const X& x, const Ev& ev) {
   using S = typename Ev::scalar;
-  if constexpr (ScalarExpr<X>)
+  if constexpr (ScalarExpr<X>) {
     return Eigen::Matrix<S, 1, 1>(eval_scalar(x, ev));
-  else
-    return Eigen::Matrix<S, 3, 1>(express<A>(x, ev).eigen());
-}
-
-// The columns dx/dq_s' (s = 1..n) and dx/du_r (r = 1..n), in A.
-template <class A, class X, class Ev, std::size_t... S>
-auto rate_columns(const X& x, const Ev& ev, std::index_sequence<S...>) {
-  constexpr int rows = ScalarExpr<X> ? 1 : 3;
-  Eigen::Matrix<typename Ev::scalar, rows, int(sizeof...(S))> qd, u;
-  ((qd.col(S) = numbers<A>(d<coordinate<S + 1, 1>>(x), ev)), ...);
-  ((u.col(S) = numbers<A>(d<speed<S + 1>>(x), ev)), ...);
-  return std::pair{qd, u};
+  } else {
+    const auto r = in_frame<A>(eval_vector(x, ev), ev);
+    return Eigen::Matrix<S, 3, 1>(r.x, r.y, r.z);
+  }
 }
 }  // namespace detail
 
 // x = T u + t in A: the table T = [v_1 ... v_n] (rows 1 for a scalar x, 3 for
-// a vector) and the remainder t, from one pass over dx/dq_s' and dx/du_r.
+// a vector) and the remainder t. With u = q' the columns are d(x)/du_r +
+// d(x)/dq_r'; otherwise T = [dx/dq'] W + [dx/du] and t = x_0 + [dx/dq'] X.
 template <Frame A, class X, class Ev>
-requires(detail::is_evaluator<Ev>::value &&
-         (ScalarExpr<X> || VectorExpr<X>)) auto linear_in_speeds(const X& x, const Ev& ev) {
-  constexpr std::size_t n = detail::speeds_of<Ev>::n;
-  const auto [qd, u] = detail::rate_columns<A>(x, ev, std::make_index_sequence<n>{});
-  using table = std::remove_const_t<decltype(qd)>;
+requires(detail::is_evaluator<Ev>::value && (ScalarExpr<X> || VectorExpr<X>)) KANE_FLATTEN
+    auto linear_in_speeds(const X& x, const Ev& ev) {
+  using Sp = detail::speeds_of<Ev>;
+  using table = Eigen::Matrix<typename Ev::scalar, ScalarExpr<X> ? 1 : 3, int(Sp::n)>;
+  table t;
   auto rest = detail::numbers<A>(detail::at_rest(x), ev);
-  if constexpr (detail::speeds_of<Ev>::identity) {
-    return std::pair{table(qd + u), rest};
-  } else {
-    rest += qd * ev.X();
-    return std::pair{table(qd * ev.W() + u), rest};
+  [&]<std::size_t... R>(std::index_sequence<R...>) {
+    using detail::d, detail::numbers;
+    if constexpr (Sp::identity) {
+      ((t.col(R) = numbers<A>(d<speed<R + 1>>(x) + d<coordinate<R + 1, 1>>(x), ev)), ...);
+    } else {
+      table qd;
+      ((qd.col(R) = numbers<A>(d<coordinate<R + 1, 1>>(x), ev)), ...);
+      ((t.col(R) = numbers<A>(d<speed<R + 1>>(x), ev)), ...);
+      t += qd * ev.W();
+      rest += qd * ev.X();
+    }
   }
+  (std::make_index_sequence<Sp::n>{});
+  return std::pair{t, rest};
 }
 
 // The table [v_1 ... v_n] in A.

@@ -80,7 +80,7 @@ struct point_chain<P, void> {
 
 template <class... P>
 constexpr auto sum_positions(list<P...>) {
-  return (zero_vector{} + ... + P::position);
+  return (P::position + ... + zero_vector{});  // right fold: the tails are the sums from each point on
 }
 
 template <class P, class A>

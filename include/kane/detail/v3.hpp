@@ -1,0 +1,54 @@
+// Three components by value: the evaluators' working vector. Plain scalars
+// stay in registers; fixed-size Eigen temporaries returned through deep
+// expression trees went through the stack (store-forwarding stalls).
+#pragma once
+
+namespace kane::detail {
+
+template <class S>
+struct v3 {
+  S x, y, z;
+};
+
+template <class S>
+constexpr v3<S> operator+(const v3<S>& a, const v3<S>& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <class S>
+constexpr v3<S> operator-(const v3<S>& a, const v3<S>& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <class S>
+constexpr v3<S> operator-(const v3<S>& a) {
+  return {-a.x, -a.y, -a.z};
+}
+template <class S>
+constexpr v3<S> operator*(const S& s, const v3<S>& a) {
+  return {s * a.x, s * a.y, s * a.z};
+}
+template <class S>
+constexpr v3<S> cross3(const v3<S>& a, const v3<S>& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+template <class S>
+constexpr S dot3(const v3<S>& a, const v3<S>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+template <class S>
+constexpr v3<S> load3(const S* p) {
+  return {p[0], p[1], p[2]};
+}
+template <class S>
+constexpr void store3(S* p, const v3<S>& a) {
+  p[0] = a.x, p[1] = a.y, p[2] = a.z;
+}
+
+}  // namespace kane::detail
+
+// Entry points of evaluation inline their whole expression tree: common
+// subexpressions of one call meet in one function body (at -O2 too).
+#if defined(__GNUC__)
+#define KANE_FLATTEN [[gnu::flatten]]
+#else
+#define KANE_FLATTEN
+#endif
