@@ -36,6 +36,46 @@ template <class X, int N>
 struct power_info<power<X, N>> : std::true_type {
   static constexpr int n = N;
 };
+template <template <class, class> class T, class L, class R>
+constexpr bool binary_node(T<L, R>*) {
+  return is_v<T<L, R>, add> || is_v<T<L, R>, sub> || is_v<T<L, R>, mul> || is_v<T<L, R>, quot> ||
+         is_v<T<L, R>, vsum> || is_v<T<L, R>, vdiff> || is_v<T<L, R>, vcross> || is_v<T<L, R>, vdot>;
+}
+constexpr bool binary_node(void*) { return false; }
+template <template <class, class> class T, class L, class R, class A, class B>
+constexpr auto rebuild(T<L, R>*, A a, B b) {
+  return T<A, B>(a, b);
+}
+template <class Fn, class X, class A>
+constexpr auto rebuild(unary<Fn, X>*, A a) {
+  return unary<Fn, A>(a);
+}
+
+// The expression X (a template argument) with every literal moved into its
+// type: nodes become empty, so derivatives of X cost nothing to build.
+template <auto X>
+constexpr auto freeze() {
+  using T = std::remove_cv_t<decltype(X)>;
+  if constexpr (std::is_same_v<T, literal>)
+    return fixed<X>{};
+  else if constexpr (std::is_empty_v<T>)
+    return X;
+  else if constexpr (binary_node(static_cast<T*>(nullptr)))
+    return rebuild(static_cast<T*>(nullptr), freeze<X.l>(), freeze<X.r>());
+  else if constexpr (is_v<T, scaled>)
+    return scaled(freeze<X.s>(), freeze<X.v>());
+  else if constexpr (is_v<T, neg>)
+    return neg(freeze<X.x>());
+  else if constexpr (is_v<T, vneg>)
+    return vneg(freeze<X.v>());
+  else if constexpr (is_v<T, unary>)
+    return rebuild(static_cast<T*>(nullptr), freeze<X.x>());
+  else if constexpr (power_info<T>::value)
+    return power<decltype(freeze<X.x>()), power_info<T>::n>(freeze<X.x>());
+  else
+    return X;  // a call keeps its function object
+}
+
 template <class X>
 struct coordinate_info : std::false_type {};
 template <std::size_t I, std::size_t D>
@@ -46,7 +86,7 @@ template <std::size_t I, std::size_t D>
 struct speed_info<speed<I, D>> : std::true_type {};
 
 template <class X>
-concept LeafConstant = is_constant<X>::value || std::is_same_v<X, literal> || Parameter<X>;
+concept LeafConstant = is_constant<X>::value || std::is_same_v<X, literal> || is_fixed<X>::value || Parameter<X>;
 
 // A frame that the vector V uses (void if none): its root is V's root.
 template <class V>

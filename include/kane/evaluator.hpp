@@ -430,6 +430,8 @@ typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
     return ev.X()(is_v_offset<X>::s - 1);
   else if constexpr (std::is_same_v<X, literal>)
     return S(x.value);
+  else if constexpr (is_fixed<X>::value)
+    return S(X::value);
   else if constexpr (is_v<X, add>)
     return eval_scalar(x.l, ev) + eval_scalar(x.r, ev);
   else if constexpr (is_v<X, sub>)

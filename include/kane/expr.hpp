@@ -2,7 +2,7 @@
 //
 // Nodes describe, evaluators compute. Storage rule: every node holds its
 // operands by value. Leaves are empty types and the only numbers a node may
-// hold are literals, so a copy costs nothing and an expression kept in an
+// hold are literals (types, fixed<>, inside template arguments), so a copy costs nothing and an expression kept in an
 // `auto` variable never refers to a temporary. Runtime values live in the
 // state, never in nodes.
 //
@@ -40,6 +40,12 @@ using one_t = constant<1>;
 struct literal : detail::scalar_tag {
   double value;
   constexpr explicit literal(double v) : value(v) {}
+};
+// A literal moved into the type: numbers of template arguments (point
+// positions, speed definitions, constraints) become constants of the code.
+template <literal V>
+struct fixed : detail::scalar_tag {
+  static constexpr double value = V.value;
 };
 
 template <class L, class R>
@@ -106,6 +112,10 @@ struct call : detail::scalar_tag {
 
 namespace detail {
 
+template <class T>
+struct is_fixed : std::false_type {};
+template <literal V>
+struct is_fixed<fixed<V>> : std::true_type {};
 template <class T>
 struct is_neg : std::false_type {};
 template <class X>

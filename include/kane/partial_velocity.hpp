@@ -103,44 +103,59 @@ auto numbers(const X& x, const Ev& ev) {
 }
 }  // namespace detail
 
+namespace detail {
 // x = T u + t in A: the table T = [v_1 ... v_n] (rows 1 for a scalar x, 3 for
-// a vector) and the remainder t. With u = q' the columns are d(x)/du_r +
-// d(x)/dq_r'; otherwise T = [dx/dq'] W + [dx/du] and t = x_0 + [dx/dq'] X.
-template <Frame A, class X, class Ev>
-requires(detail::is_evaluator<Ev>::value && (ScalarExpr<X> || VectorExpr<X>)) KANE_FLATTEN
-    auto linear_in_speeds(const X& x, const Ev& ev) {
-  using Sp = detail::speeds_of<Ev>;
-  using table = Eigen::Matrix<typename Ev::scalar, ScalarExpr<X> ? 1 : 3, int(Sp::n)>;
-  table t;
-  auto rest = detail::numbers<A>(detail::at_rest(x), ev);
+// a vector) and the remainder t, each computed only if asked for. With u = q'
+// the columns are dx/du_r + dx/dq_r'; otherwise T = [dx/dq'] W + [dx/du] and
+// t = x_0 + [dx/dq'] X.
+template <class A, bool Table, bool Rest, class X, class Ev>
+KANE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
+  using Sp = speeds_of<Ev>;
+  constexpr int rows = ScalarExpr<X> ? 1 : 3;
+  Eigen::Matrix<typename Ev::scalar, rows, int(Sp::n)> t, qd;
+  Eigen::Matrix<typename Ev::scalar, rows, 1> rest;
   [&]<std::size_t... R>(std::index_sequence<R...>) {
-    using detail::d, detail::numbers;
+    if constexpr (Rest) rest = numbers<A>(at_rest(x), ev);
     if constexpr (Sp::identity) {
-      ((t.col(R) = numbers<A>(d<speed<R + 1>>(x) + d<coordinate<R + 1, 1>>(x), ev)), ...);
+      if constexpr (Table) ((t.col(R) = numbers<A>(d<speed<R + 1>>(x) + d<coordinate<R + 1, 1>>(x), ev)), ...);
     } else {
-      table qd;
       ((qd.col(R) = numbers<A>(d<coordinate<R + 1, 1>>(x), ev)), ...);
-      ((t.col(R) = numbers<A>(d<speed<R + 1>>(x), ev)), ...);
-      t += qd * ev.W();
-      rest += qd * ev.X();
+      if constexpr (Table) {
+        ((t.col(R) = numbers<A>(d<speed<R + 1>>(x), ev)), ...);
+        t += qd * ev.W();
+      }
+      if constexpr (Rest) rest += qd * ev.X();
     }
   }
   (std::make_index_sequence<Sp::n>{});
-  return std::pair{t, rest};
+  if constexpr (Table && Rest)
+    return std::pair{t, rest};
+  else if constexpr (Table)
+    return t;
+  else
+    return rest;
+}
+}  // namespace detail
+
+// The pair (T, t) of x = T u + t in A.
+template <Frame A, class X, class Ev>
+requires(detail::is_evaluator<Ev>::value &&
+         (ScalarExpr<X> || VectorExpr<X>)) auto linear_in_speeds(const X& x, const Ev& ev) {
+  return detail::linear_parts<A, true, true>(x, ev);
 }
 
 // The table [v_1 ... v_n] in A.
 template <Frame A, class X, class Ev>
 requires(detail::is_evaluator<Ev>::value &&
          (ScalarExpr<X> || VectorExpr<X>)) auto partial_velocities(const X& x, const Ev& ev) {
-  return linear_in_speeds<A>(x, ev).first;
+  return detail::linear_parts<A, true, false>(x, ev);
 }
 
 // v_t in A.
 template <Frame A, class X, class Ev>
 requires(detail::is_evaluator<Ev>::value && (ScalarExpr<X> || VectorExpr<X>)) auto remainder(const X& x,
                                                                                              const Ev& ev) {
-  return linear_in_speeds<A>(x, ev).second;
+  return detail::linear_parts<A, false, true>(x, ev);
 }
 
 }  // namespace kane

@@ -41,7 +41,7 @@ struct point : detail::point_tag {
   static_assert(Point<From>, "kane: point<From, r> needs a point From (kane::origin or kane::point)");
   static_assert(VectorExpr<decltype(Position)>, "kane: point<From, r> needs a vector expression r");
   using from = From;
-  static constexpr auto position = Position;
+  static constexpr auto position = detail::freeze<Position>();
 };
 
 // ^A v^P and ^A a^P: a vector expression that remembers its frame and point.

@@ -118,7 +118,7 @@ void print_expr(std::ostream& os, const X& x) {
   else if constexpr (is_constant<X>::value) {
     os << X::num;
     if constexpr (X::den != 1) os << '/' << X::den;
-  } else if constexpr (std::is_same_v<X, literal>)
+  } else if constexpr (std::is_same_v<X, literal> || is_fixed<X>::value)
     os << x.value;
   else if constexpr (is_v<X, add> || is_v<X, vsum>) {
     print_operand(os, x.l, 0);
