@@ -134,13 +134,18 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   KANE_FLATTEN void update(const St& s) {
     st_ = &s;
     trig_ = detail::make_trig<cached>(s);
-    pose_pass(closure{});
-    if constexpr (Level >= level::velocity) {
-      if constexpr (solves) solve_rates();
-      velocity_pass(closure{});
-      if constexpr (Level >= level::acceleration) {
-        if constexpr (solves) solve_accelerations();
-        acceleration_pass(closure{});
+    constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
+    if constexpr (!solves) {
+      pass<true, velocity, acceleration>(closure{});  // frame after frame, all levels at once
+    } else {  // Y, Z need the axes; Y', Z' the angular velocities
+      pass<true, false, false>(closure{});
+      if constexpr (velocity) {
+        solve_rates();
+        pass<false, true, false>(closure{});
+      }
+      if constexpr (acceleration) {
+        solve_accelerations();
+        pass<false, false, true>(closure{});
       }
     }
   }
@@ -229,17 +234,15 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   template <class F>
   static constexpr bool is_edge = !std::is_void_v<typename F::tree_parent>;
 
-  template <class... F>
-  void pose_pass(detail::list<F...>) {
-    (pose_edge<F>(), ...);
-  }
-  template <class... F>
-  void velocity_pass(detail::list<F...>) {
-    (velocity_edge<F>(), ...);
-  }
-  template <class... F>
-  void acceleration_pass(detail::list<F...>) {
-    (acceleration_edge<F>(), ...);
+  template <bool Pose, bool Velocity, bool Acceleration, class... F>
+  void pass(detail::list<F...>) {
+    (
+        [this] {
+          if constexpr (Pose) pose_edge<F>();
+          if constexpr (Velocity) velocity_edge<F>();
+          if constexpr (Acceleration) acceleration_edge<F>();
+        }(),
+        ...);
   }
 
   using v3 = detail::v3<scalar>;
