@@ -24,6 +24,8 @@ TEST_CASE("print: frames print by name, vectors and dcms in Kane's notation") {
 
 namespace {
 struct L : kane::parameter<1> {};
+struct P0 : kane::origin<N> {};
+struct P1 : kane::point<P0, 0.5 * kane::e<A, 1>> {};
 struct ramp {
   template <class T>
   T operator()(T x) const {
@@ -44,6 +46,7 @@ TEST_CASE("print: expressions print in Kane's notation") {
   CHECK(kane::to_string(kane::dt<N>(l * e<A, 1>)) == "^N w^A x (L a1)");
   CHECK(kane::to_string(kane::dt(kane::invoke(ramp{}, q<3>))) == "ramp'(q3)*q3'");
   CHECK(kane::to_string(e<E::tree_parent, 3>) == "d''3");
+  CHECK(kane::to_string(kane::position<P0, P1>()) == "0.5 a1");  // a number moved into the type prints as written
   std::ostringstream os;
   os << kane::dt<A>(kane::angular_velocity<N, B>());
   CHECK(os.str() == "^N alpha^B - ^N w^A x ^N w^B");

@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <Eigen/LU>
+
 #include <cmath>
 #include <limits>
 #include <random>
@@ -353,4 +355,33 @@ TEST_CASE("speeds: qdot_speeds read u and u' as q' and q''") {
     CHECK(from_u.status() == kane::solve_status::ok);
     CHECK(kane::is_approx(kane::express<N>(aE, from_u), kane::express<N>(aE, from_q), 1e-14));
   }
+}
+
+TEST_CASE("speeds: the inverse behind the kinematic equations agrees with Eigen's FullPivLU on rank") {
+  using M = Eigen::Matrix<double, 4, 4>;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> d(-1, 1);
+  int singular = 0;
+  for (int k = 0; k < 400; ++k) {
+    M m = M::NullaryExpr([&] { return d(rng); });
+    // every other matrix: the last row a combination of two others, disturbed by 0 .. 1e-12
+    if (k % 2) m.row(3) = 0.3 * m.row(0) - 0.7 * m.row(1) + std::pow(10.0, -12 - k % 7) * (k % 3) * m.row(2);
+    if (k % 50 == 0) m *= 1e-200;  // scale does not decide rank
+    Eigen::FullPivLU<M> lu;
+    lu.setThreshold(std::numeric_limits<double>::epsilon() * 4);
+    lu.compute(m);
+    M inv;
+    const bool ok = kane::detail::invert(m, inv);
+    INFO("k = " << k);
+    CHECK(ok == lu.isInvertible());
+    singular += !ok;
+    if (ok) CHECK((m * inv - M::Identity()).lpNorm<Eigen::Infinity>() < 1e-13 * m.lpNorm<Eigen::Infinity>() * inv.lpNorm<Eigen::Infinity>());
+  }
+  CHECK(singular > 50);  // the disturbed cases below eps * n relative are found singular
+  // A zero diagonal needs pivoting.
+  Eigen::Matrix3d p, inv;
+  p << 0, 2, 0, 0, 0, 3, 4, 0, 0;
+  REQUIRE(kane::detail::invert(p, inv));
+  CHECK((p * inv - Eigen::Matrix3d::Identity()).norm() < 1e-15);
+  CHECK_FALSE(kane::detail::invert(Eigen::Matrix3d::Zero().eval(), inv));
 }

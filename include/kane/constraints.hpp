@@ -15,7 +15,6 @@
 #include <utility>
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 
 #include "kane/derivative.hpp"
 #include "kane/evaluator.hpp"
@@ -132,12 +131,11 @@ auto solve_constraints(const Ev& ev) {
   for (std::size_t k = 0; k < m; ++k) dep.col(k) = coeff.col(NH::dependents[k] - 1);
   for (std::size_t k = 0; k < p; ++k) ind.col(k) = coeff.col(NH::independents[k] - 1);
   constraint_solution<S, m, p> out;
-  const auto lu = detail::full_piv_lu(dep);
+  Eigen::Matrix<S, int(m), int(m)> inv;
   out.status = !(coeff.allFinite() && c0.allFinite()) ? solve_status::not_finite
-               : !lu.isInvertible()                   ? solve_status::singular
+               : !detail::invert(dep, inv)            ? solve_status::singular
                                                       : solve_status::ok;
   if (out.status == solve_status::ok) {
-    const Eigen::Matrix<S, int(m), int(m)> inv = lu.inverse();
     out.A = -inv * ind;
     out.B = -inv * c0;
   } else {

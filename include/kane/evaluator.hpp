@@ -22,10 +22,10 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <Eigen/LU>
 
 #include "kane/angular_velocity.hpp"
 #include "kane/derivative.hpp"
+#include "kane/detail/invert.hpp"
 #include "kane/detail/list.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
@@ -79,16 +79,6 @@ namespace detail {
 template <class Ev, class X>
 typename Ev::scalar eval_scalar(const X& x, const Ev& ev);
 
-// LU with full pivoting; the rank threshold is Eigen's default, eps * size,
-// set explicitly (g++ -O3 otherwise warns that Eigen reads it uninitialised).
-template <class M>
-Eigen::FullPivLU<M> full_piv_lu(const M& m) {
-  Eigen::FullPivLU<M> lu;
-  lu.setThreshold(std::numeric_limits<typename M::Scalar>::epsilon() *
-                  typename M::Scalar(M::RowsAtCompileTime));
-  lu.compute(m);
-  return lu;
-}
 template <class Ev, class V>
 v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev);
 }  // namespace detail
@@ -335,12 +325,10 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
     matrixn y;
     vectorn z;
     fill<false>(y, z, std::make_index_sequence<nq>{});
-    const auto lu = detail::full_piv_lu(y);
     status_ = !(y.allFinite() && z.allFinite()) ? solve_status::not_finite
-              : !lu.isInvertible()              ? solve_status::singular
+              : !detail::invert(y, w_kde_)      ? solve_status::singular
                                                 : solve_status::ok;
     if (status_ == solve_status::ok) {
-      w_kde_ = lu.inverse();
       x_kde_ = -w_kde_ * z;
     } else {
       w_kde_.setConstant(std::numeric_limits<scalar>::quiet_NaN());
