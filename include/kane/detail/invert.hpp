@@ -3,7 +3,6 @@
 // exceeds eps * n times the largest pivot (the first).
 #pragma once
 
-#include <array>
 #include <cmath>
 #include <limits>
 
@@ -11,38 +10,41 @@
 
 namespace kane::detail {
 
-// inv = m^-1 and true, or false if m is singular (m finite).
+// inv = m^-1 and true, or false if m is singular (m finite). Rows of [m | I]
+// are eliminated in place; exact zeros (a block structure of Y) are skipped.
 template <class S, int N>
-bool invert(Eigen::Matrix<S, N, N> a, Eigen::Matrix<S, N, N>& inv) {
+bool invert(const Eigen::Matrix<S, N, N>& m, Eigen::Matrix<S, N, N>& inv) {
   using std::abs;
-  inv.setIdentity();
-  std::array<bool, N> row_used{}, col_used{};
-  std::array<int, N> row_of{};  // row_of[c]: the row whose pivot eliminated column c
+  S g[N][2 * N];
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) g[i][j] = m(i, j), g[i][N + j] = S(i == j);
+  int rows[N], cols[N];  // the rows and columns not pivoted yet: rows[0 .. N-k), cols[0 .. N-k)
+  for (int i = 0; i < N; ++i) rows[i] = cols[i] = i;
+  int row_of[N]{};  // row_of[c]: the row whose pivot eliminated column c
   const S threshold = std::numeric_limits<S>::epsilon() * S(N);
   S first = S(0);
-  for (int k = 0; k < N; ++k) {
-    int r = 0, c = 0;
+  for (int k = 0, left = N; k < N; ++k, --left) {
+    int bi = 0, bj = 0;
     S best = S(-1);
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j < N; ++j)
-        if (!row_used[i] && !col_used[j] && abs(a(i, j)) > best) best = abs(a(i, j)), r = i, c = j;
+    for (int i = 0; i < left; ++i)
+      for (int j = 0; j < left; ++j)
+        if (const S a = abs(g[rows[i]][cols[j]]); a > best) best = a, bi = i, bj = j;
     if (k == 0) first = best;
     if (!(best > threshold * first)) return false;
-    row_used[r] = col_used[c] = true;
+    const int r = rows[bi], c = cols[bj];
+    rows[bi] = rows[left - 1], cols[bj] = cols[left - 1];
     row_of[c] = r;
-    const S p = S(1) / a(r, c);
-    a.row(r) *= p;
-    inv.row(r) *= p;
-    for (int i = 0; i < N; ++i)
-      if (i != r) {
-        const S f = a(i, c);
-        a.row(i) -= f * a.row(r);
-        inv.row(i) -= f * inv.row(r);
-      }
+    const S p = S(1) / g[r][c];
+    for (S& x : g[r]) x *= p;
+    for (int i = 0; i < N; ++i) {
+      const S f = g[i][c];
+      if (i == r || f == S(0)) continue;
+      for (int j = 0; j < 2 * N; ++j) g[i][j] -= f * g[r][j];
+    }
   }
-  // a is now a permutation: a(row_of[c], c) = 1, so x_c = inv.row(row_of[c]).
-  const Eigen::Matrix<S, N, N> b = inv;
-  for (int c = 0; c < N; ++c) inv.row(c) = b.row(row_of[c]);
+  // [m | I] is now [P | m^-1 permuted]: g(row_of[c], c) = 1, so row c of m^-1 is row row_of[c].
+  for (int c = 0; c < N; ++c)
+    for (int j = 0; j < N; ++j) inv(c, j) = g[row_of[c]][N + j];
   return true;
 }
 
