@@ -123,19 +123,21 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   // are NaN.
   KANE_FLATTEN void update(const St& s) {
     st_ = &s;
-    trig_ = detail::make_trig<cached>(s);
+    const auto t = detail::make_trig<cached>(s);  // kept local: the pass reads it from registers
     constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
     if constexpr (!solves) {
-      pass<true, velocity, acceleration>(closure{});  // frame after frame, all levels at once
+      pass<true, velocity, acceleration>(closure{}, t);  // frame after frame, all levels at once
+      trig_ = t;
     } else {  // Y, Z need the axes; Y', Z' the angular velocities
-      pass<true, false, false>(closure{});
+      pass<true, false, false>(closure{}, t);
+      trig_ = t;
       if constexpr (velocity) {
         solve_rates();
-        pass<false, true, false>(closure{});
+        pass<false, true, false>(closure{}, t);
       }
       if constexpr (acceleration) {
         solve_accelerations();
-        pass<false, false, true>(closure{});
+        pass<false, false, true>(closure{}, t);
       }
     }
   }
@@ -225,10 +227,10 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   static constexpr bool is_edge = !std::is_void_v<typename F::tree_parent>;
 
   template <bool Pose, bool Velocity, bool Acceleration, class... F>
-  void pass(detail::list<F...>) {
+  void pass(detail::list<F...>, const detail::trig<scalar, nq>& t) {
     (
-        [this] {
-          if constexpr (Pose) pose_edge<F>();
+        [this, &t] {
+          if constexpr (Pose) pose_edge<F>(t);
           if constexpr (Velocity) velocity_edge<F>();
           if constexpr (Acceleration) acceleration_edge<F>();
         }(),
@@ -255,13 +257,13 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   }
 
   template <class F>
-  void pose_edge() {
+  void pose_edge(const detail::trig<scalar, nq>& t) {
     if constexpr (is_edge<F>) {
       using P = typename F::tree_parent;
       using K = typename F::step::axis;
       constexpr std::size_t q = F::step::coordinate::index;
       constexpr int p = detail::unit_axis<K>::principal;
-      const scalar c = trig_.cos(q), s = trig_.sin(q);
+      const scalar c = t.cos(q), s = t.sin(q);
       scalar* cf = c_[index<F>()].data();
       if constexpr (p >= 0) {
         constexpr int a = (p + 1) % 3, b = (p + 2) % 3;  // e_Fa = c e_Pa + s e_Pb, e_Fb = c e_Pb - s e_Pa
