@@ -47,8 +47,10 @@ constexpr void store3(S* p, const v3<S>& a) {
 
 // Entry points of evaluation inline their whole expression tree: common
 // subexpressions of one call meet in one function body (at -O2 too).
-#if defined(__GNUC__)
+#ifndef KANE_FLATTEN
+#if defined(__GNUC__) && defined(__OPTIMIZE__)
 #define KANE_FLATTEN [[gnu::flatten]]
 #else
 #define KANE_FLATTEN
+#endif
 #endif
