@@ -21,7 +21,6 @@
 #include <utility>
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 
 #include "kane/angular_velocity.hpp"
 #include "kane/derivative.hpp"
@@ -229,7 +228,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   template <bool Pose, bool Velocity, bool Acceleration, class... F>
   void pass(detail::list<F...>, const detail::trig<scalar, nq>& t) {
     (
-        [this, &t] {
+        [&] {
           if constexpr (Pose) pose_edge<F>(t);
           if constexpr (Velocity) velocity_edge<F>();
           if constexpr (Acceleration) acceleration_edge<F>();
