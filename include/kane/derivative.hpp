@@ -146,7 +146,8 @@ constexpr auto edge_axis() {
       return unit<X, p + 1>{};
     else {
       constexpr auto k = unit_axis<K>::value;
-      return literal(k[0]) * unit<X, 1>{} + literal(k[1]) * unit<X, 2>{} + literal(k[2]) * unit<X, 3>{};
+      return fixed<literal(k[0])>{} * unit<X, 1>{} + fixed<literal(k[1])>{} * unit<X, 2>{} +
+             fixed<literal(k[2])>{} * unit<X, 3>{};
     }
   }
 }

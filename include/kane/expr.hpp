@@ -2,9 +2,9 @@
 //
 // Nodes describe, evaluators compute. Storage rule: every node holds its
 // operands by value. Leaves are empty types and the only numbers a node may
-// hold are literals (types, fixed<>, inside template arguments), so a copy costs nothing and an expression kept in an
-// `auto` variable never refers to a temporary. Runtime values live in the
-// state, never in nodes.
+// hold are literals (in template arguments they become types, fixed<>), so a
+// copy costs nothing and an expression kept in an `auto` variable never refers
+// to a temporary. Runtime values live in the state, never in nodes.
 //
 // Type-level zero and one (constant<0>, constant<1>) vanish from sums and
 // products when the expression is built, so derivatives carry no dead terms.
