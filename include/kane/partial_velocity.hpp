@@ -101,9 +101,7 @@ auto numbers(const X& x, const Ev& ev) {
     return Eigen::Matrix<S, 3, 1>(r.x, r.y, r.z);
   }
 }
-}  // namespace detail
 
-namespace detail {
 // x = T u + t in A: the table T = [v_1 ... v_n] (rows 1 for a scalar x, 3 for
 // a vector) and the remainder t, each computed only if asked for. With u = q'
 // the columns are dx/du_r + dx/dq_r'; otherwise T = [dx/dq'] W + [dx/du] and
