@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include <kane/print.hpp>
 #include <kane/kane.hpp>
+#include <kane/print.hpp>
 
 using q1 = kane::coordinate<1>;
 using q2 = kane::coordinate<2>;

@@ -287,7 +287,8 @@ TEST_CASE("kinematics: numbers of point positions live in types, so derived quan
   STATIC_REQUIRE(std::is_empty_v<decltype(End::position)>);
   STATIC_REQUIRE(std::is_empty_v<decltype(kane::velocity<N, End>())>);
   STATIC_REQUIRE(std::is_empty_v<decltype(kane::acceleration<N, End>())>);
-  STATIC_REQUIRE(std::is_empty_v<decltype(kane::partial_velocity<kane::qdot_speeds<6>>(kane::velocity<N, End>(), kane::u<3>))>);
+  STATIC_REQUIRE(std::is_empty_v<decltype(kane::partial_velocity<kane::qdot_speeds<6>>(
+                     kane::velocity<N, End>(), kane::u<3>))>);
   // A literal written at run time stays a literal.
   STATIC_REQUIRE(!std::is_empty_v<decltype(0.05 * e<B6, 1>)>);
   // The frozen number is the written one.

@@ -46,7 +46,8 @@ TEST_CASE("print: expressions print in Kane's notation") {
   CHECK(kane::to_string(kane::dt<N>(l * e<A, 1>)) == "^N w^A x (L a1)");
   CHECK(kane::to_string(kane::dt(kane::invoke(ramp{}, q<3>))) == "ramp'(q3)*q3'");
   CHECK(kane::to_string(e<E::tree_parent, 3>) == "d''3");
-  CHECK(kane::to_string(kane::position<P0, P1>()) == "0.5 a1");  // a number moved into the type prints as written
+  CHECK(kane::to_string(kane::position<P0, P1>()) ==
+        "0.5 a1");  // a number moved into the type prints as written
   std::ostringstream os;
   os << kane::dt<A>(kane::angular_velocity<N, B>());
   CHECK(os.str() == "^N alpha^B - ^N w^A x ^N w^B");

@@ -375,7 +375,9 @@ TEST_CASE("speeds: the inverse behind the kinematic equations agrees with Eigen'
     INFO("k = " << k);
     CHECK(ok == lu.isInvertible());
     singular += !ok;
-    if (ok) CHECK((m * inv - M::Identity()).lpNorm<Eigen::Infinity>() < 1e-13 * m.lpNorm<Eigen::Infinity>() * inv.lpNorm<Eigen::Infinity>());
+    if (ok)
+      CHECK((m * inv - M::Identity()).lpNorm<Eigen::Infinity>() <
+            1e-13 * m.lpNorm<Eigen::Infinity>() * inv.lpNorm<Eigen::Infinity>());
   }
   CHECK(singular > 50);  // the disturbed cases below eps * n relative are found singular
   // A zero diagonal needs pivoting.
@@ -384,4 +386,95 @@ TEST_CASE("speeds: the inverse behind the kinematic equations agrees with Eigen'
   REQUIRE(kane::detail::invert(p, inv));
   CHECK((p * inv - Eigen::Matrix3d::Identity()).norm() < 1e-15);
   CHECK_FALSE(kane::detail::invert(Eigen::Matrix3d::Zero().eval(), inv));
+}
+
+namespace {
+// The structure of Y, read from the types at compile time.
+using kane::detail::entry;
+using disc5_kde = kane::detail::kde_system<disc5_speeds>;
+// u1 = q2', u2 = s2 q1' + q3', u3 = c2 q1', u4 = q4', u5 = q5': n3 . l2 = sin q2 and n3 . l3 = cos q2 by the
+// tree
+static_assert(std::is_same_v<disc5_kde::y_type<1, 0>, kane::unary<kane::sin_fn, kane::coordinate<2>>>);
+static_assert(std::is_same_v<disc5_kde::y_type<2, 0>, kane::unary<kane::cos_fn, kane::coordinate<2>>>);
+static_assert(disc5_kde::m[0] == std::array{entry::zero, entry::one, entry::zero, entry::zero, entry::zero});
+static_assert(disc5_kde::form.count == 5);  // five blocks of one unknown: substitution, no factorization
+// W: q1' = u3 / c2, q2' = u1, q3' = u2 - s2/c2 u3, q4' = u4, q5' = u5; X = 0
+static_assert(std::is_same_v<decltype(kane::detail::weight<disc5_speeds, 2, 1>()), kane::one_t>);
+static_assert(std::is_same_v<decltype(kane::detail::weight<disc5_speeds, 1, 1>()), kane::zero_t>);
+static_assert(std::is_same_v<decltype(kane::detail::weight<disc5_speeds, 1, 3>()), kane::kde_weight<1, 3>>);
+static_assert(std::is_same_v<decltype(kane::detail::offset<disc5_speeds, 1>()), kane::zero_t>);
+// The 3-2-1 body: q1', q2' coupled in one block of two, then q3' from u1 = q3' - s2 q1'.
+using body_kde = kane::detail::kde_system<body_speeds>;
+}  // namespace
+
+TEST_CASE("speeds: block forms found at compile time solve what a full inverse solves") {
+  // The 3-2-1 body: a block of one unknown and a coupled block of two.
+  STATIC_REQUIRE(body_kde::form.count == 2);
+  STATIC_REQUIRE(body_kde::form.start[1] == 2 && body_kde::form.start[2] == 3);  // q1', q2' first, then q3'
+  std::mt19937 rng(61);
+  std::uniform_real_distribution<double> d(-1.4, 1.4);
+  for (int k = 0; k < 200; ++k) {
+    St321 s;
+    for (int i = 0; i < 3; ++i) s.q[i] = d(rng), s.u[i] = d(rng);
+    Ev321 ev;
+    ev.update(s);
+    REQUIRE(ev.status() == kane::solve_status::ok);
+    // W Y = I with Y = du/dq' from the closed form of the 3-2-1 body rates
+    const double s2 = std::sin(s.q[1]), c2 = std::cos(s.q[1]), s3 = std::sin(s.q[2]), c3 = std::cos(s.q[2]);
+    Eigen::Matrix3d y;
+    y << -s2, 0, 1, c2 * s3, c3, 0, c2 * c3, -s3, 0;
+    CHECK((ev.W() * y - Eigen::Matrix3d::Identity()).norm() < 1e-12);
+    CHECK(ev.X().norm() == 0);
+  }
+}
+
+TEST_CASE("speeds: partial velocities and constraints need only the pose level") {
+  using EvPose = kane::evaluator<St5, kane::frames<L>, kane::level::pose, disc5_speeds>;
+  for (const auto& c : sympy_speeds::disc) {
+    St5 s;
+    for (int i = 0; i < 5; ++i) s.q[i] = c.q[i], s.u[i] = c.u[i];
+    s.p = {c.r};
+    EvPose ev;  // L suffices: nothing here needs the spin angle q3
+    ev.update(s);
+    REQUIRE(ev.status() == kane::solve_status::ok);
+    const auto sol = kane::solve_constraints<rolling>(ev);
+    REQUIRE(sol.status == kane::solve_status::ok);
+    CHECK(max_diff(sol.A, c.A) < 1e-13);
+    const auto Vnh = kane::nonholonomic_partial_velocities<N, rolling>(kane::velocity<N, Centre5>(), ev, sol);
+    CHECK(max_diff(Vnh, c.v5_partials) < 1e-13);
+  }
+  // A singular Y at the pose level: W's numbers and the constraints are NaN, with a status.
+  St5 s;
+  s.q = {0.3, std::acos(-1.0) / 2, 0.1, 0, 0};
+  s.p = {0.5};
+  EvPose ev;
+  ev.update(s);
+  CHECK(ev.status() == kane::solve_status::singular);
+  CHECK(std::isnan(ev.W()(0, 2)));
+  CHECK(ev.W()(1, 0) == 1.0);  // q2' = u1 whatever q2 is
+  CHECK(std::isnan(kane::solve_constraints<rolling>(ev).A(0, 2)));
+}
+
+TEST_CASE("speeds: Y with huge or tiny entries: the rank rule is relative, overflow is not finite") {
+  // u_r = k q_r' for a parameter k: W = I / k.
+  struct K : kane::parameter<1> {};
+  constexpr K k;
+  using sp = kane::speeds<k * kane::dt(kane::q<1>), k * kane::dt(kane::q<2>)>;
+  using St = kane::state<double, 2, 2, 1>;
+  kane::evaluator<St, kane::frames<Y>, kane::level::velocity, sp> ev;
+  St s;
+  s.u = {1, 2};
+  for (double scale : {1e-200, 1e-3, 1.0, 1e200}) {
+    s.p = {scale};
+    ev.update(s);
+    CHECK(ev.status() == kane::solve_status::ok);
+    CHECK(ev.coordinate_value<2, 1>() == Approx(2 / scale));
+  }
+  s.p = {1e-310};  // 1/k overflows: W is not finite
+  ev.update(s);
+  CHECK(ev.status() == kane::solve_status::not_finite);
+  CHECK(std::isnan(ev.coordinate_value<1, 1>()));
+  s.p = {0.0};
+  ev.update(s);
+  CHECK(ev.status() == kane::solve_status::singular);
 }

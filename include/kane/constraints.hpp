@@ -17,6 +17,8 @@
 #include <Eigen/Core>
 
 #include "kane/derivative.hpp"
+#include "kane/detail/solve.hpp"
+#include "kane/detail/structure.hpp"
 #include "kane/evaluator.hpp"
 #include "kane/partial_velocity.hpp"
 #include "kane/speeds.hpp"
@@ -107,38 +109,75 @@ struct constraint_solution {
   solve_status status;
 };
 
+namespace detail {
+// The constraints M u + c0 = 0 as a structured solve (detail/solve.hpp) of the
+// dependent block for [A | B] = -M_dep^-1 [M_ind | c0].
+template <class NH>
+struct constraint_system {
+  using Sp = typename NH::speed_set;
+  static constexpr std::size_t n = NH::m, p = NH::p, k = p + 1;
+  template <std::size_t K, std::size_t R>  // the coefficient of u_R in c_K
+  static constexpr auto coefficient() {
+    return partial_velocity<Sp>(std::get<K>(NH::equations), speed<R>{});
+  }
+  template <std::size_t K>
+  static constexpr auto rest() {
+    return velocity_remainder<Sp>(std::get<K>(NH::equations));
+  }
+  template <std::size_t K, std::size_t J>  // column J of [M_ind | c0]
+  static constexpr auto right() {
+    if constexpr (J < p)
+      return coefficient<K, NH::independents[J]>();
+    else
+      return rest<K>();
+  }
+  static constexpr pattern<n, n> m = []<std::size_t... I>(std::index_sequence<I...>) {
+    pattern<n, n> out{};
+    ((out[I / n][I % n] = entry_of<decltype(coefficient<I / n, NH::dependents[I % n]>())>()), ...);
+    return out;
+  }
+  (std::make_index_sequence<n * n>{});
+  static constexpr pattern<n, k> r = []<std::size_t... I>(std::index_sequence<I...>) {
+    pattern<n, k> out{};
+    ((out[I / k][I % k] = entry_of<decltype(right<I / k, I % k>())>()), ...);
+    return out;
+  }
+  (std::make_index_sequence<n * k>{});
+  static constexpr block_form<n> form = blocks_of(m);
+  static constexpr pattern<n, k> x = solution_pattern(m, form, r);
+};
+}  // namespace detail
+
+// u_dep = A u_ind + B at the evaluator's state.
 template <class NH, class Ev>
-auto solve_constraints(const Ev& ev) {
+KANE_FLATTEN auto solve_constraints(const Ev& ev) {
   using S = typename Ev::scalar;
+  using Sys = detail::constraint_system<NH>;
   static_assert(std::is_same_v<typename NH::speed_set, detail::speeds_of<Ev>>,
                 "kane: the constraints and the evaluator use different speed sets");
-  constexpr std::size_t n = NH::n, m = NH::m, p = NH::p;
-  // c = M u + c0 = 0
-  Eigen::Matrix<S, int(m), int(n)> coeff;
-  Eigen::Matrix<S, int(m), 1> c0;
-  [&]<std::size_t... K>(std::index_sequence<K...>) {
-    (
-        [&] {
-          const auto [row, rest] = linear_in_speeds<root_frame>(std::get<K>(NH::equations), ev);
-          coeff.row(K) = row;
-          c0(K) = rest(0);
-        }(),
-        ...);
-  }
-  (std::make_index_sequence<m>{});
-  Eigen::Matrix<S, int(m), int(m)> dep;
-  Eigen::Matrix<S, int(m), int(p)> ind;
-  for (std::size_t k = 0; k < m; ++k) dep.col(k) = coeff.col(NH::dependents[k] - 1);
-  for (std::size_t k = 0; k < p; ++k) ind.col(k) = coeff.col(NH::independents[k] - 1);
+  static_assert(Sys::form.regular,
+                "kane: the constraints do not determine the dependent speeds (their block of coefficients is "
+                "singular at every state); choose dependent speeds that the constraints involve");
+  constexpr std::size_t m = NH::m, p = NH::p;
+  detail::table<S, m, m> dep;
+  detail::table<S, m, p + 1> right, x;
+  detail::static_for<m * m>([&](auto kj) {
+    constexpr std::size_t k = kj / m, j = kj % m;
+    if constexpr (Sys::m[k][j] == detail::entry::other)
+      dep[k][j] = detail::eval_scalar(Sys::template coefficient<k, NH::dependents[j]>(), ev);
+  });
+  detail::static_for<m*(p + 1)>([&](auto kj) {
+    constexpr std::size_t k = kj / (p + 1), j = kj % (p + 1);
+    if constexpr (Sys::r[k][j] == detail::entry::other)
+      right[k][j] = detail::eval_scalar(Sys::template right<k, j>(), ev);
+  });
   constraint_solution<S, m, p> out;
-  Eigen::Matrix<S, int(m), int(m)> inv;
-  out.status = !(coeff.allFinite() && c0.allFinite()) ? solve_status::not_finite
-               : !detail::invert(dep, inv)            ? solve_status::singular
-                                                      : solve_status::ok;
-  if (out.status == solve_status::ok) {
-    out.A = -inv * ind;
-    out.B = -inv * c0;
-  } else {
+  out.status = detail::solve_structured<Sys>(dep, right, x);
+  for (std::size_t k = 0; k < m; ++k) {
+    for (std::size_t j = 0; j < p; ++j) out.A(k, j) = -x[k][j];
+    out.B(k) = -x[k][p];
+  }
+  if (out.status != solve_status::ok) {
     out.A.setConstant(std::numeric_limits<S>::quiet_NaN());
     out.B.setConstant(std::numeric_limits<S>::quiet_NaN());
   }

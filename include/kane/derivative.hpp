@@ -86,7 +86,8 @@ template <std::size_t I, std::size_t D>
 struct speed_info<speed<I, D>> : std::true_type {};
 
 template <class X>
-concept LeafConstant = is_constant<X>::value || std::is_same_v<X, literal> || is_fixed<X>::value || Parameter<X>;
+concept LeafConstant =
+    is_constant<X>::value || std::is_same_v<X, literal> || is_fixed<X>::value || Parameter<X>;
 
 // A frame that the vector V uses (void if none): its root is V's root.
 template <class V>

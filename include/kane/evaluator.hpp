@@ -24,14 +24,15 @@
 
 #include "kane/angular_velocity.hpp"
 #include "kane/derivative.hpp"
-#include "kane/detail/invert.hpp"
 #include "kane/detail/list.hpp"
+#include "kane/detail/solve.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
 #include "kane/detail/v3.hpp"
 #include "kane/expr.hpp"
 #include "kane/speeds.hpp"
 #include "kane/state.hpp"
+#include "kane/status.hpp"
 #include "kane/vec.hpp"
 #include "kane/vector.hpp"
 
@@ -44,11 +45,6 @@ struct frames {};
 enum class level { pose, velocity, acceleration };
 
 namespace detail {
-template <class L>
-struct closure_of;
-template <class... F>
-struct closure_of<frames<F...>> : closure<F...> {};
-
 template <class L>
 struct step_coordinates;
 template <class... F>
@@ -71,9 +67,6 @@ struct step_coordinates<list<F...>> {
 };
 }  // namespace detail
 
-// What update(s) found when it solved the kinematic differential equations.
-enum class solve_status { ok, singular, not_finite };
-
 namespace detail {
 template <class Ev, class X>
 typename Ev::scalar eval_scalar(const X& x, const Ev& ev);
@@ -90,6 +83,12 @@ class evaluator;
 template <State St, Frame... Fs, level Level, class Speeds>
 class evaluator<St, frames<Fs...>, Level, Speeds> {
   static constexpr bool solves = !std::is_void_v<Speeds>;
+  static constexpr bool direct = [] {  // q' = u or q' read from the state
+    if constexpr (solves)
+      return Speeds::identity;
+    else
+      return true;
+  }();
   static constexpr std::size_t nq = St::nq;
 
  public:
@@ -97,7 +96,6 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   using scalar = typename St::scalar;
   using speed_set = Speeds;
   using closure = typename detail::closure<Fs...>::type;
-  static constexpr level computed = Level;
   static constexpr std::size_t size = detail::size<closure>::value;
   using matrix3 = Eigen::Matrix<scalar, 3, 3>;
   using vector3 = Eigen::Matrix<scalar, 3, 1>;
@@ -110,26 +108,30 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
     if constexpr (solves) {
       static_assert(Speeds::n == nq, "kane: a speed set defines as many speeds as the state has coordinates");
       static_assert(St::nu >= nq, "kane: the state holds fewer speeds than the speed set defines");
+      if constexpr (!Speeds::identity)
+        static_assert(system::form.regular,
+                      "kane: these speeds do not determine q' (Y = du/dq' is singular at every state: some "
+                      "q' appears in no speed, or fewer speeds than q' involve them)");
     }
-    w_kde_.setIdentity();
-    x_kde_.setZero();
-    for (auto& c : c_) c = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    init_roots(closure{});  // the pass writes every other frame
   }
 
   // The outward pass at s; s must outlive the evaluations that follow. With a
-  // speed set, q' and q'' are solved from s.u and s.ud first; if Y is singular
-  // or not finite, status() says so, and q', q'' and all computed from them
-  // are NaN.
+  // speed set, W and X at every level, q' and q'' from s.u and s.ud at the
+  // velocity and acceleration levels; if Y is singular or not finite,
+  // status() says so, and W (but for its structural zeros and ones), X, q',
+  // q'' and all computed from them are NaN.
   KANE_FLATTEN void update(const St& s) {
     st_ = &s;
     const auto t = detail::make_trig<cached>(s);  // kept local: the pass reads it from registers
     constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
     if constexpr (!solves) {
       pass<true, velocity, acceleration>(closure{}, t);  // frame after frame, all levels at once
-      trig_ = t;
+      store_trig(t);
     } else {  // Y, Z need the axes; Y', Z' the angular velocities
       pass<true, false, false>(closure{}, t);
-      trig_ = t;
+      store_trig(t);
+      if constexpr (!direct) solve_kinematic_equations();
       if constexpr (velocity) {
         solve_rates();
         pass<false, true, false>(closure{}, t);
@@ -158,11 +160,35 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
       return solves ? qdd_[I - 1] : st_->qdd[I - 1];
   }
   // q' = W u + X (W the identity and X zero without a speed set).
-  const matrixn& W() const { return w_kde_; }
-  const vectorn& X() const { return x_kde_; }
+  matrixn W() const {
+    matrixn w;
+    for (std::size_t i = 0; i < nq; ++i)
+      for (std::size_t j = 0; j < nq; ++j) w(i, j) = weight(i, j);
+    return w;
+  }
+  vectorn X() const {
+    vectorn x;
+    for (std::size_t i = 0; i < nq; ++i) x(i) = offset(i);
+    return x;
+  }
 
-  template <class F>
-  static constexpr bool holds = detail::contains<F, closure>::value;
+  // W_sr and X_s (0-based): numbers where the structure of Y does not fix them.
+  scalar weight(std::size_t s, std::size_t r) const {
+    const auto kind = w_pattern()[s][r];
+    return kind == detail::entry::other ? kde_w_[s][r] : scalar(kind == detail::entry::one);
+  }
+  scalar offset(std::size_t s) const { return offset_pattern()[s] ? kde_x_[s] : scalar(0); }
+  // the stored numbers behind kde_weight<S + 1, R + 1> and kde_offset<S + 1>
+  template <std::size_t S, std::size_t R>
+  scalar stored_weight() const {
+    static_assert(w_pattern()[S][R] == detail::entry::other);
+    return kde_w_[S][R];
+  }
+  template <std::size_t S>
+  scalar stored_offset() const {
+    static_assert(offset_pattern()[S]);
+    return kde_x_[S];
+  }
 
   // Columns e_F1, e_F2, e_F3 in the root's components: (^R P^F)^T.
   template <class F>
@@ -189,7 +215,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   scalar sin_q() const {
     using std::sin;
     if constexpr (is_cached<I>())
-      return trig_.sin(I);
+      return trig_.template sin<I>();
     else
       return sin(st_->q[I - 1]);
   }
@@ -197,18 +223,21 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   scalar cos_q() const {
     using std::cos;
     if constexpr (is_cached<I>())
-      return trig_.cos(I);
+      return trig_.template cos<I>();
     else
       return cos(st_->q[I - 1]);
   }
 
  private:
   static constexpr auto cached = detail::step_coordinates<closure>::value;
+  using trig_type = detail::trig<scalar, cached>;
   template <std::size_t I>
   static constexpr bool is_cached() {
-    for (std::size_t k : cached)
-      if (k == I) return true;
-    return false;
+    return trig_type::template holds<I>();
+  }
+  // element by element: a wide copy of values just written narrowly would stall
+  void store_trig(const trig_type& t) {
+    for (std::size_t k = 0; k < trig_type::size; ++k) trig_.s[k] = t.s[k], trig_.c[k] = t.c[k];
   }
 
   template <class F>
@@ -225,8 +254,18 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   template <class F>
   static constexpr bool is_edge = !std::is_void_v<typename F::tree_parent>;
 
+  template <class... F>
+  void init_roots(detail::list<F...>) {
+    (
+        [&] {
+          if constexpr (!is_edge<F>)
+            c_[index<F>()] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, w_[index<F>()] = {}, a_[index<F>()] = {};
+        }(),
+        ...);
+  }
+
   template <bool Pose, bool Velocity, bool Acceleration, class... F>
-  void pass(detail::list<F...>, const detail::trig<scalar, nq>& t) {
+  void pass(detail::list<F...>, const trig_type& t) {
     (
         [&] {
           if constexpr (Pose) pose_edge<F>(t);
@@ -256,13 +295,13 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   }
 
   template <class F>
-  void pose_edge(const detail::trig<scalar, nq>& t) {
+  void pose_edge(const trig_type& t) {
     if constexpr (is_edge<F>) {
       using P = typename F::tree_parent;
       using K = typename F::step::axis;
       constexpr std::size_t q = F::step::coordinate::index;
       constexpr int p = detail::unit_axis<K>::principal;
-      const scalar c = t.cos(q), s = t.sin(q);
+      const scalar c = t.template cos<q>(), s = t.template sin<q>();
       scalar* cf = c_[index<F>()].data();
       if constexpr (p >= 0) {
         constexpr int a = (p + 1) % 3, b = (p + 2) % 3;  // e_Fa = c e_Pa + s e_Pb, e_Fb = c e_Pb - s e_Pa
@@ -313,29 +352,69 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
   static constexpr auto definition() {
     return std::get<R>(Speeds::definitions);
   }
+  using system = detail::kde_system<std::conditional_t<solves, Speeds, qdot_speeds<1>>>;
+  static constexpr detail::pattern<nq, nq> w_pattern() {
+    if constexpr (direct)
+      return detail::identity_pattern<nq>();
+    else
+      return system::x;
+  }
+  static constexpr std::array<bool, nq> offset_pattern() {
+    if constexpr (direct)
+      return {};
+    else
+      return system::offset;
+  }
 
-  // Y q' + Z = u, so q' = W u + X.
+  // Y q' + Z = u, so q' = W u + X with W = Y^-1 (detail/solve.hpp) and X = -W Z:
+  // W and X depend on q alone. The zeros and ones of W are written once, by the constructor.
+  void solve_kinematic_equations() {
+    detail::table<scalar, nq, nq> y;
+    detail::static_for<nq * nq>([&](auto rc) {
+      constexpr std::size_t r = rc / nq, c = rc % nq;
+      if constexpr (system::m[r][c] == detail::entry::other)
+        y[r][c] = detail::eval_scalar(diff(definition<r>(), coordinate<c + 1, 1>{}), *this);
+    });
+    status_ = detail::solve_structured<system, false>(y, y, kde_w_);
+    std::array<scalar, nq> z;
+    detail::static_for<nq>([&](auto r) {
+      if constexpr (system::z[r] != detail::entry::zero)
+        z[r] = -detail::eval_scalar(detail::at_rest(definition<r>()), *this);
+    });
+    detail::static_for<nq>([&](auto c) {
+      if constexpr (system::offset[c]) kde_x_[c] = apply_row<c, false>(z);
+    });
+    if (status_ != solve_status::ok)
+      detail::static_for<nq>([&](auto c) {
+        if constexpr (system::offset[c]) kde_x_[c] = std::numeric_limits<scalar>::quiet_NaN();
+      });
+  }
   void solve_rates() {
-    if constexpr (Speeds::identity) {  // u = q'
+    if constexpr (direct) {  // u = q'
       for (std::size_t i = 0; i < nq; ++i) qd_[i] = st_->u[i];
     } else {
-      solve_general_rates();
+      qd_ = apply<true>(st_->u);
+      if (status_ != solve_status::ok) qd_.fill(std::numeric_limits<scalar>::quiet_NaN());
     }
   }
-  void solve_general_rates() {
-    matrixn y;
-    vectorn z;
-    fill<false>(y, z, std::make_index_sequence<nq>{});
-    status_ = !(y.allFinite() && z.allFinite()) ? solve_status::not_finite
-              : !detail::invert(y, w_kde_)      ? solve_status::singular
-                                                : solve_status::ok;
-    if (status_ == solve_status::ok) {
-      x_kde_ = -w_kde_ * z;
-    } else {
-      w_kde_.setConstant(std::numeric_limits<scalar>::quiet_NaN());
-      x_kde_.setConstant(std::numeric_limits<scalar>::quiet_NaN());
-    }
-    Eigen::Map<vectorn>(qd_.data()) = w_kde_ * Eigen::Map<const vectorn>(st_->u.data()) + x_kde_;
+  // (W v)_c (+ X_c), skipping the zeros of W and X.
+  template <std::size_t C, bool Offset, class V>
+  scalar apply_row(const V& v) const {
+    scalar sum = scalar(0);
+    if constexpr (Offset && system::offset[C]) sum = kde_x_[C];
+    detail::static_for<nq>([&](auto j) {
+      if constexpr (system::x[C][j] == detail::entry::one)
+        sum += v[j];
+      else if constexpr (system::x[C][j] == detail::entry::other)
+        sum += kde_w_[C][j] * v[j];
+    });
+    return sum;
+  }
+  template <bool Offset, class V>
+  std::array<scalar, nq> apply(const V& v) const {
+    std::array<scalar, nq> out;
+    detail::static_for<nq>([&](auto c) { out[c] = apply_row<c, Offset>(v); });
+    return out;
   }
 
   // u' = Y q'' + Y' q' + Z', so q'' = W (u' - Y' q' - Z').
@@ -343,44 +422,32 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
     if constexpr (Speeds::identity) {
       for (std::size_t i = 0; i < nq; ++i) qdd_[i] = st_->ud[i];
     } else {
-      solve_general_accelerations();
+      std::array<scalar, nq> v;
+      detail::static_for<nq>([&](auto r) {
+        scalar sum = st_->ud[r];
+        if constexpr (!is_zero_v<decltype(dt(detail::at_rest(definition<r>())))>)
+          sum -= detail::eval_scalar(dt(detail::at_rest(definition<r>())), *this);
+        detail::static_for<nq>([&](auto c) {
+          constexpr auto yd = dt(diff(definition<r>(), coordinate<c + 1, 1>{}));
+          if constexpr (!is_zero_v<std::remove_cv_t<decltype(yd)>>)
+            sum -= detail::eval_scalar(yd, *this) * qd_[c];
+        });
+        v[r] = sum;
+      });
+      qdd_ = apply<false>(v);
     }
-  }
-  void solve_general_accelerations() {
-    matrixn yd;
-    vectorn zd;
-    fill<true>(yd, zd, std::make_index_sequence<nq>{});
-    const vectorn qd = Eigen::Map<const vectorn>(qd_.data());
-    Eigen::Map<vectorn>(qdd_.data()) = w_kde_ * (Eigen::Map<const vectorn>(st_->ud.data()) - yd * qd - zd);
-  }
-
-  // Y and Z (or their time derivatives) at this state.
-  template <bool Derivative, std::size_t... R>
-  void fill(matrixn& y, vectorn& z, std::index_sequence<R...>) const {
-    (fill_row<Derivative, R>(y, z, std::make_index_sequence<nq>{}), ...);
-  }
-  template <bool Derivative, std::size_t R, std::size_t... C>
-  void fill_row(matrixn& y, vectorn& z, std::index_sequence<C...>) const {
-    auto value = [this](auto x) {
-      if constexpr (Derivative)
-        return detail::eval_scalar(dt(x), *this);
-      else
-        return detail::eval_scalar(x, *this);
-    };
-    ((y(R, C) = value(diff(definition<R>(), coordinate<C + 1, 1>{}))), ...);
-    z(R) = value(detail::at_rest(definition<R>()));
   }
 
   const St* st_ = nullptr;
   solve_status status_ = solve_status::ok;
   std::array<scalar, nq> qd_{};
   std::array<scalar, nq> qdd_{};
-  matrixn w_kde_;
-  vectorn x_kde_;
-  detail::trig<scalar, nq> trig_{};
+  detail::table<scalar, nq, nq> kde_w_;  // W, row after row
+  std::array<scalar, nq> kde_x_;
+  trig_type trig_;
   std::array<std::array<scalar, 9>, size> c_;  // e_F1, e_F2, e_F3 in R, column after column
-  std::array<std::array<scalar, 3>, size> w_{};
-  std::array<std::array<scalar, 3>, size> a_{};
+  std::array<std::array<scalar, 3>, size> w_;
+  std::array<std::array<scalar, 3>, size> a_;
 };
 
 namespace detail {
@@ -403,6 +470,26 @@ struct is_evaluator : std::false_type {};
 template <class St, class Fr, level L, class Sp>
 struct is_evaluator<evaluator<St, Fr, L, Sp>> : std::true_type {};
 
+// e_Ri of a root frame R: components known at compile time.
+template <class V>
+struct root_unit : std::false_type {};
+template <class F, int I>
+struct root_unit<unit<F, I>> : std::bool_constant<std::is_void_v<typename F::tree_parent>> {};
+template <int I, class S>
+S component(const v3<S>& a) {
+  return I == 1 ? a.x : I == 2 ? a.y : a.z;
+}
+// a x e_Ri
+template <int I, class S>
+v3<S> cross_unit(const v3<S>& a) {
+  if constexpr (I == 1)
+    return {S(0), a.z, -a.y};
+  else if constexpr (I == 2)
+    return {-a.z, S(0), a.x};
+  else
+    return {a.y, -a.x, S(0)};
+}
+
 template <class Ev, class X>
 typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
   using S = typename Ev::scalar;
@@ -417,9 +504,9 @@ typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
   else if constexpr (is_constant<X>::value)
     return S(X::num) / S(X::den);
   else if constexpr (is_v_weight<X>::value)
-    return ev.W()(is_v_weight<X>::s - 1, is_v_weight<X>::r - 1);
+    return ev.template stored_weight<is_v_weight<X>::s - 1, is_v_weight<X>::r - 1>();
   else if constexpr (is_v_offset<X>::value)
-    return ev.X()(is_v_offset<X>::s - 1);
+    return ev.template stored_offset<is_v_offset<X>::s - 1>();
   else if constexpr (std::is_same_v<X, literal>)
     return S(x.value);
   else if constexpr (is_fixed<X>::value)
@@ -460,9 +547,14 @@ typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
     return n < 0 ? S(1) / r : r;
   } else if constexpr (is_v<X, call>)
     return x.f(eval_scalar(x.x, ev));
-  else if constexpr (is_v<X, vdot>)
-    return dot3(eval_vector(x.l, ev), eval_vector(x.r, ev));
-  else
+  else if constexpr (is_v<X, vdot>) {
+    if constexpr (root_unit<decltype(x.r)>::value)  // v . e_Ri: a component
+      return component<decltype(x.r)::index>(eval_vector(x.l, ev));
+    else if constexpr (root_unit<decltype(x.l)>::value)
+      return component<decltype(x.l)::index>(eval_vector(x.r, ev));
+    else
+      return dot3(eval_vector(x.l, ev), eval_vector(x.r, ev));
+  } else
     static_assert(!sizeof(X), "kane: evaluation of an unknown scalar node");
 }
 
@@ -487,9 +579,14 @@ v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev) {
     return eval_vector(v.l, ev) - eval_vector(v.r, ev);
   else if constexpr (is_v<V, vneg>)
     return -eval_vector(v.v, ev);
-  else if constexpr (is_v<V, vcross>)
-    return cross3(eval_vector(v.l, ev), eval_vector(v.r, ev));
-  else if constexpr (is_v<V, omega>)
+  else if constexpr (is_v<V, vcross>) {
+    if constexpr (root_unit<decltype(v.r)>::value)
+      return cross_unit<decltype(v.r)::index>(eval_vector(v.l, ev));
+    else if constexpr (root_unit<decltype(v.l)>::value)
+      return -cross_unit<decltype(v.l)::index>(eval_vector(v.r, ev));
+    else
+      return cross3(eval_vector(v.l, ev), eval_vector(v.r, ev));
+  } else if constexpr (is_v<V, omega>)
     return load3(ev.template omega<typename V::frame>().data());
   else if constexpr (is_v<V, alpha>)
     return load3(ev.template alpha<typename V::frame>().data());

@@ -60,7 +60,7 @@ struct simple {
   // ^P P^C
   template <class S, class Trig>
   static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
-    return detail::elementary<S, K>(t.cos(Q::index), t.sin(Q::index));
+    return detail::elementary<S, K>(t.template cos<Q::index>(), t.template sin<Q::index>());
   }
 };
 

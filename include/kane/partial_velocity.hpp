@@ -26,23 +26,6 @@ namespace kane {
 
 namespace detail {
 
-template <class Sp, std::size_t S, std::size_t R>
-constexpr auto weight() {
-  if constexpr (!Sp::identity)
-    return kde_weight<S, R>{};
-  else if constexpr (S == R)
-    return one_t{};
-  else
-    return zero_t{};
-}
-template <class Sp, std::size_t S>
-constexpr auto offset() {
-  if constexpr (Sp::identity)
-    return zero_t{};
-  else
-    return kde_offset<S>{};
-}
-
 // dx/dLeaf for a scalar or a vector (a derivative by q', u or t is the same in every frame).
 template <class Leaf, class X>
 constexpr auto d(X x) {
@@ -58,7 +41,10 @@ constexpr auto partial_u(X x, std::index_sequence<S...>) {
 }
 template <class Sp, class X, std::size_t... S>
 constexpr auto remainder_u(X x, std::index_sequence<S...>) {
-  return (at_rest(x) + ... + (d<coordinate<S + 1, 1>>(x) * offset<Sp, S + 1>()));
+  if constexpr (Sp::identity)
+    return at_rest(x);
+  else
+    return (at_rest(x) + ... + (d<coordinate<S + 1, 1>>(x) * offset<Sp, S + 1>()));
 }
 
 template <class T>
@@ -103,27 +89,21 @@ auto numbers(const X& x, const Ev& ev) {
 }
 
 // x = T u + t in A: the table T = [v_1 ... v_n] (rows 1 for a scalar x, 3 for
-// a vector) and the remainder t, each computed only if asked for. With u = q'
-// the columns are dx/du_r + dx/dq_r'; otherwise T = [dx/dq'] W + [dx/du] and
-// t = x_0 + [dx/dq'] X.
+// a vector) and the remainder t, each computed only if asked for. Column r is
+// the expression dx/du_r + sum_s dx/dq_s' W_sr, t is x_0 + sum_s dx/dq_s' X_s,
+// with the zeros and ones of W and X known at compile time (speeds.hpp).
 template <class A, bool Table, bool Rest, class X, class Ev>
 KANE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
   using Sp = speeds_of<Ev>;
   constexpr int rows = ScalarExpr<X> ? 1 : 3;
-  Eigen::Matrix<typename Ev::scalar, rows, int(Sp::n)> t, qd;
+  Eigen::Matrix<typename Ev::scalar, rows, int(Sp::n)> t;
   Eigen::Matrix<typename Ev::scalar, rows, 1> rest;
   [&]<std::size_t... R>(std::index_sequence<R...>) {
-    if constexpr (Rest) rest = numbers<A>(at_rest(x), ev);
-    if constexpr (Sp::identity) {
-      if constexpr (Table) ((t.col(R) = numbers<A>(d<speed<R + 1>>(x) + d<coordinate<R + 1, 1>>(x), ev)), ...);
-    } else {
-      ((qd.col(R) = numbers<A>(d<coordinate<R + 1, 1>>(x), ev)), ...);
-      if constexpr (Table) {
-        ((t.col(R) = numbers<A>(d<speed<R + 1>>(x), ev)), ...);
-        t += qd * ev.W();
-      }
-      if constexpr (Rest) rest += qd * ev.X();
-    }
+    if constexpr (Table && Sp::identity)
+      ((t.col(R) = numbers<A>(d<speed<R + 1>>(x) + d<coordinate<R + 1, 1>>(x), ev)), ...);
+    else if constexpr (Table)
+      ((t.col(R) = numbers<A>(partial_u<Sp, R + 1>(x, std::make_index_sequence<Sp::n>{}), ev)), ...);
+    if constexpr (Rest) rest = numbers<A>(remainder_u<Sp>(x, std::make_index_sequence<Sp::n>{}), ev);
   }
   (std::make_index_sequence<Sp::n>{});
   if constexpr (Table && Rest)

@@ -15,6 +15,7 @@
 
 #include "kane/angular_velocity.hpp"
 #include "kane/derivative.hpp"
+#include "kane/detail/structure.hpp"
 #include "kane/expr.hpp"
 #include "kane/vector.hpp"
 
@@ -126,6 +127,58 @@ constexpr auto at_rest(X x) {
     static_assert(!sizeof(X), "kane: an angular acceleration is not linear in the speeds");
   else
     return at_rest(x.v);  // a kinematic quantity: its expression
+}
+
+// The kinematic differential equations of a speed set as a structured solve
+// (detail/solve.hpp): Y = du/dq' (n x n), W = Y^-1 with its pattern x, and
+// the patterns of Z = u at q' = 0 and of X = -W Z.
+template <class Sp>
+struct kde_system {
+  static constexpr std::size_t n = Sp::n, k = n;
+  template <std::size_t R, std::size_t C>
+  using y_type = decltype(diff(std::get<R>(Sp::definitions), coordinate<C + 1, 1>{}));
+  template <std::size_t R>
+  using z_type = decltype(at_rest(std::get<R>(Sp::definitions)));
+  static constexpr pattern<n, n> m = []<std::size_t... I>(std::index_sequence<I...>) {
+    pattern<n, n> p{};
+    ((p[I / n][I % n] = entry_of<y_type<I / n, I % n>>()), ...);
+    return p;
+  }
+  (std::make_index_sequence<n * n>{});
+  static constexpr pattern<n, n> r = identity_pattern<n>();
+  static constexpr block_form<n> form = blocks_of(m);
+  static constexpr pattern<n, n> x = solution_pattern(m, form, r);
+  static constexpr std::array<entry, n> z = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::array<entry, n>{entry_of<z_type<I>>()...};
+  }
+  (std::make_index_sequence<n>{});
+  static constexpr std::array<bool, n> offset = [] {
+    std::array<bool, n> o{};
+    for (std::size_t c = 0; c < n; ++c)
+      for (std::size_t j = 0; j < n; ++j) o[c] = o[c] || (x[c][j] != entry::zero && z[j] != entry::zero);
+    return o;
+  }();
+};
+
+// dq_S'/du_R and q_S' at u = 0 as nodes: type-level zero and one where the
+// structure of Y decides them, numbers of the evaluator otherwise.
+template <class Sp, std::size_t S, std::size_t R>
+constexpr auto weight() {
+  if constexpr (Sp::identity)
+    return std::conditional_t<S == R, one_t, zero_t>{};
+  else if constexpr (kde_system<Sp>::x[S - 1][R - 1] == entry::zero)
+    return zero_t{};
+  else if constexpr (kde_system<Sp>::x[S - 1][R - 1] == entry::one)
+    return one_t{};
+  else
+    return kde_weight<S, R>{};
+}
+template <class Sp, std::size_t S>
+constexpr auto offset() {
+  if constexpr (Sp::identity || !kde_system<Sp>::offset[S - 1])
+    return zero_t{};
+  else
+    return kde_offset<S>{};
 }
 
 }  // namespace detail

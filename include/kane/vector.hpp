@@ -8,6 +8,7 @@
 #include <concepts>
 #include <type_traits>
 
+#include "kane/detail/cosines.hpp"
 #include "kane/expr.hpp"
 #include "kane/frame.hpp"
 
@@ -107,6 +108,21 @@ template <class L, class R>
 struct same_frame_units : std::false_type {};
 template <class F, int I, int J>
 struct same_frame_units<unit<F, I>, unit<F, J>> : std::true_type {};
+// Two unit vectors of one frame once lifted (detail/cosines.hpp).
+template <class L, class R>
+struct same_lifted_units : std::false_type {};
+template <class A, int I, class B, int J>
+struct same_lifted_units<unit<A, I>, unit<B, J>>
+    : std::bool_constant<std::is_same_v<lifted_t<A, I>, lifted_t<B, J>>> {};
+// e_Ai x (s e_Bj) or (s e_Ai) x e_Bj with the units of one lifted frame.
+template <class L, class R>
+struct reducible_scaled_cross : std::false_type {};
+template <class A, int I, class S, class B, int J>
+struct reducible_scaled_cross<unit<A, I>, scaled<S, unit<B, J>>> : same_lifted_units<unit<A, I>, unit<B, J>> {
+};
+template <class S, class A, int I, class B, int J>
+struct reducible_scaled_cross<scaled<S, unit<A, I>>, unit<B, J>> : same_lifted_units<unit<A, I>, unit<B, J>> {
+};
 }  // namespace detail
 
 template <VectorExpr V>
@@ -171,8 +187,9 @@ template <VectorExpr L, VectorExpr R>
 constexpr auto cross(L l, R r) {
   if constexpr (is_zero_vector_v<L> || is_zero_vector_v<R>)
     return zero_vector{};
-  else if constexpr (detail::same_frame_units<L, R>::value) {
-    using F = typename L::frame;
+  else if constexpr (detail::same_frame_units<L, R>::value || detail::same_lifted_units<L, R>::value) {
+    using F = std::conditional_t<detail::same_frame_units<L, R>::value, typename L::frame,
+                                 detail::lifted_t<typename L::frame, L::index>>;
     constexpr int i = L::index, j = R::index;
     if constexpr (i == j)
       return zero_vector{};
@@ -180,21 +197,33 @@ constexpr auto cross(L l, R r) {
       return unit<F, j % 3 + 1>{};
     else
       return -unit<F, i % 3 + 1>{};
+  } else if constexpr (detail::reducible_scaled_cross<L, R>::value) {
+    if constexpr (detail::is_unit<L>::value)
+      return r.s * cross(l, r.v);  // a x (s b) = s (a x b) when a x b reduces
+    else
+      return l.s * cross(l.v, r);
   } else
     return vcross<L, R>(l, r);
 }
 
-// p . r; e_Fi . e_Fj reduces at compile time.
+namespace detail {
+template <class L, class R>
+constexpr auto unit_dot() {
+  if constexpr (is_unit<L>::value && is_unit<R>::value)
+    return tree_dot<typename L::frame, L::index, typename R::frame, R::index>();
+  else
+    return undecided{};
+}
+}  // namespace detail
+
+// p . r; e_Ai . e_Bj reduces at compile time when the tree decides it (detail/cosines.hpp).
 template <VectorExpr L, VectorExpr R>
 constexpr auto dot(L l, R r) {
   if constexpr (is_zero_vector_v<L> || is_zero_vector_v<R>)
     return zero_t{};
-  else if constexpr (detail::same_frame_units<L, R>::value) {
-    if constexpr (L::index == R::index)
-      return one_t{};
-    else
-      return zero_t{};
-  } else
+  else if constexpr (!std::is_same_v<decltype(detail::unit_dot<L, R>()), detail::undecided>)
+    return detail::unit_dot<L, R>();
+  else
     return vdot<L, R>(l, r);
 }
 

@@ -1,6 +1,6 @@
 // The inverse of a small fixed-size matrix by Gauss-Jordan elimination with
 // full pivoting. Rank as Eigen's FullPivLU decides it: a pivot counts if it
-// exceeds eps * n times the largest pivot (the first).
+// exceeds eps * n times the largest pivot (the first), or a given threshold.
 #pragma once
 
 #include <cmath>
@@ -10,10 +10,11 @@
 
 namespace kane::detail {
 
-// inv = m^-1 and true, or false if m is singular (m finite). Rows of [m | I]
-// are eliminated in place; exact zeros (a block structure of Y) are skipped.
+// inv = m^-1 and true, or false if a pivot is not above tol (m finite). Rows
+// of [m | I] are eliminated in place; exact zeros are skipped. tol < 0: the
+// relative rule above.
 template <class S, int N>
-bool invert(const Eigen::Matrix<S, N, N>& m, Eigen::Matrix<S, N, N>& inv) {
+bool invert(const Eigen::Matrix<S, N, N>& m, Eigen::Matrix<S, N, N>& inv, S tol = S(-1)) {
   using std::abs;
   S g[N][2 * N];
   for (int i = 0; i < N; ++i)
@@ -21,16 +22,14 @@ bool invert(const Eigen::Matrix<S, N, N>& m, Eigen::Matrix<S, N, N>& inv) {
   int rows[N], cols[N];  // the rows and columns not pivoted yet: rows[0 .. N-k), cols[0 .. N-k)
   for (int i = 0; i < N; ++i) rows[i] = cols[i] = i;
   int row_of[N]{};  // row_of[c]: the row whose pivot eliminated column c
-  const S threshold = std::numeric_limits<S>::epsilon() * S(N);
-  S first = S(0);
   for (int k = 0, left = N; k < N; ++k, --left) {
     int bi = 0, bj = 0;
     S best = S(-1);
     for (int i = 0; i < left; ++i)
       for (int j = 0; j < left; ++j)
         if (const S a = abs(g[rows[i]][cols[j]]); a > best) best = a, bi = i, bj = j;
-    if (k == 0) first = best;
-    if (!(best > threshold * first)) return false;
+    if (k == 0 && tol < S(0)) tol = std::numeric_limits<S>::epsilon() * S(N) * best;
+    if (!(best > tol)) return false;
     const int r = rows[bi], c = cols[bj];
     rows[bi] = rows[left - 1], cols[bj] = cols[left - 1];
     row_of[c] = r;

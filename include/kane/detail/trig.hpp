@@ -1,4 +1,5 @@
-// sin and cos of the coordinates a computation needs, each computed once.
+// sin and cos of the coordinates a computation needs, each computed once and
+// stored only for those (Needed: ascending 1-based indices, known at compile time).
 #pragma once
 
 #include <array>
@@ -7,12 +8,31 @@
 
 namespace kane::detail {
 
-template <class S, std::size_t NQ>
+template <class S, auto Needed>
 struct trig {
-  std::array<S, NQ> s{};
-  std::array<S, NQ> c{};
-  S sin(std::size_t i) const { return s[i - 1]; }  // sin q_i
-  S cos(std::size_t i) const { return c[i - 1]; }  // cos q_i
+  static constexpr std::size_t size = Needed.size();
+  std::array<S, size> s, c;  // written by make_trig
+  template <std::size_t I>
+  static constexpr std::size_t slot() {
+    static_assert(holds<I>(), "kane: sin and cos of this coordinate were not computed");
+    std::size_t k = 0;
+    while (Needed[k] != I) ++k;
+    return k;
+  }
+  template <std::size_t I>
+  static constexpr bool holds() {
+    for (std::size_t k : Needed)
+      if (k == I) return true;
+    return false;
+  }
+  template <std::size_t I>
+  S sin() const {
+    return s[slot<I>()];
+  }
+  template <std::size_t I>
+  S cos() const {
+    return c[slot<I>()];
+  }
 };
 
 template <std::size_t N>
@@ -41,19 +61,18 @@ constexpr auto unique_indices() {
   return out;
 }
 
-// sin/cos of q_k for k in Needed (a std::array of 1-based indices).
+// sin/cos of q_k for k in Needed.
 template <auto Needed, class State>
-auto make_trig(const State& st) {
-  using S = typename State::scalar;
+trig<typename State::scalar, Needed> make_trig(const State& st) {
   static_assert(Needed.empty() || Needed.back() <= State::nq,
                 "kane: the frames involved use a generalized coordinate beyond the state's size; "
                 "declare the state with at least that many coordinates");
-  trig<S, State::nq> t;
-  for (std::size_t k : Needed) {
+  trig<typename State::scalar, Needed> t;
+  for (std::size_t k = 0; k < Needed.size(); ++k) {
     using std::cos;
     using std::sin;
-    t.s[k - 1] = sin(st.q[k - 1]);
-    t.c[k - 1] = cos(st.q[k - 1]);
+    t.s[k] = sin(st.q[Needed[k] - 1]);
+    t.c[k] = cos(st.q[Needed[k] - 1]);
   }
   return t;
 }

@@ -1,0 +1,139 @@
+// X = M^-1 R for a small M whose zero pattern and block form are known at
+// compile time (structure.hpp): substitution block after block, a division
+// for a block of one unknown (none for an exact one), a Gauss-Jordan inverse
+// only for a coupled block. Zeros and ones of M, R and X are never touched.
+//
+// Rank rule: a pivot counts if |pivot| > eps * n * max |M_ij|, so scaling M
+// does not change the status. NaN or inf in M, or in what is produced, gives
+// not_finite; X is then NaN, as it is for a singular M.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <utility>
+
+#include <Eigen/Core>
+
+#include "kane/detail/invert.hpp"
+#include "kane/detail/structure.hpp"
+#include "kane/status.hpp"
+
+namespace kane::detail {
+
+template <std::size_t I>
+using index_c = std::integral_constant<std::size_t, I>;
+
+// f(index_c<0>{}), ..., f(index_c<N - 1>{})
+template <std::size_t N, class F>
+constexpr void static_for(F&& f) {
+  [&]<std::size_t... I>(std::index_sequence<I...>) { (f(index_c<I>{}), ...); }
+  (std::make_index_sequence<N>{});
+}
+
+template <class S, std::size_t R, std::size_t C>
+using table = std::array<std::array<S, C>, R>;
+
+// Sys: static constexpr n, k, m (pattern n x n), r (n x k), form (blocks_of(m)), x (solution_pattern).
+// The zeros and ones of X are written unless the caller keeps them (WriteConstants false).
+template <class Sys, bool WriteConstants = true, class S>
+solve_status solve_structured(const table<S, Sys::n, Sys::n>& m, const table<S, Sys::n, Sys::k>& r,
+                              table<S, Sys::n, Sys::k>& x) {
+  static_assert(Sys::form.regular);
+  using std::abs;
+  constexpr std::size_t n = Sys::n, k = Sys::k;
+  constexpr auto& P = Sys::m;
+  constexpr auto& F = Sys::form;
+  constexpr auto& X = Sys::x;
+  auto value = [&](auto i, auto j) -> S {  // M_ij
+    if constexpr (P[i][j] == entry::one)
+      return S(1);
+    else
+      return m[i][j];
+  };
+  auto rhs = [&](auto i, auto j) -> S {
+    if constexpr (Sys::r[i][j] == entry::zero)
+      return S(0);
+    else if constexpr (Sys::r[i][j] == entry::one)
+      return S(1);
+    else
+      return r[i][j];
+  };
+  static_for<n * k>([&](auto cj) {
+    constexpr std::size_t c = cj / k, j = cj % k;
+    if constexpr (WriteConstants && X[c][j] != entry::other) x[c][j] = S(X[c][j] == entry::one);
+  });
+  S scale = S(0);
+  static_for<n * n>([&](auto ij) {
+    constexpr std::size_t i = ij / n, j = ij % n;
+    if constexpr (P[i][j] != entry::zero) {
+      const S a = abs(value(index_c<i>{}, index_c<j>{}));
+      scale = a > scale ? a : scale;
+    }
+  });
+  solve_status status = scale <= std::numeric_limits<S>::max() ? solve_status::ok : solve_status::not_finite;
+  const S tol = std::numeric_limits<S>::epsilon() * S(n) * scale;
+  auto fail = [&](S pivot) {
+    if (status == solve_status::ok)
+      status = pivot == pivot ? solve_status::singular : solve_status::not_finite;
+  };
+  static_for<F.count>([&](auto b) {
+    constexpr std::size_t first = F.start[b], size = F.start[b + 1] - first;
+    // t_j = R_{row c, j} - sum over unknowns d of earlier blocks of M_{row c, d} x_dj
+    auto reduced = [&](auto c, auto j) {
+      constexpr std::size_t row = F.row[c];
+      S t = rhs(index_c<row>{}, j);
+      static_for<n>([&](auto d) {
+        if constexpr (F.block[d] != b && P[row][d] != entry::zero && X[d][j] != entry::zero)
+          t -= value(index_c<row>{}, d) * x[d][j];
+      });
+      return t;
+    };
+    if constexpr (size == 1) {
+      constexpr std::size_t c = F.order[first], row = F.row[c];
+      S inverse = S(1);
+      if constexpr (P[row][c] == entry::other) {
+        const S pivot = m[row][c];
+        if (!(abs(pivot) > tol)) fail(pivot);
+        inverse = S(1) / pivot;
+      }
+      static_for<k>([&](auto j) {
+        if constexpr (X[c][j] == entry::other) {
+          const S t = reduced(index_c<c>{}, j);
+          x[c][j] = P[row][c] == entry::one ? t : t * inverse;
+        }
+      });
+    } else {
+      Eigen::Matrix<S, int(size), int(size)> block, inverse;
+      static_for<size * size>([&](auto ab) {
+        constexpr std::size_t a = ab / size, e = ab % size;
+        block(a, e) = value(index_c<F.row[F.order[first + a]]>{}, index_c<F.order[first + e]>{});
+      });
+      if (!invert(block, inverse, tol)) fail(block.sum());
+      static_for<k>([&](auto j) {
+        if constexpr (X[F.order[first]][j] != entry::zero) {
+          Eigen::Matrix<S, int(size), 1> t;
+          static_for<size>([&](auto a) { t(Eigen::Index(a)) = reduced(index_c<F.order[first + a]>{}, j); });
+          const Eigen::Matrix<S, int(size), 1> y = inverse * t;
+          static_for<size>([&](auto a) { x[F.order[first + a]][j] = y(Eigen::Index(a)); });
+        }
+      });
+    }
+  });
+  S probe = S(0);  // x - x is 0 for a finite x, NaN otherwise
+  static_for<n * k>([&](auto cj) {
+    constexpr std::size_t c = cj / k, j = cj % k;
+    if constexpr (X[c][j] == entry::other) probe += x[c][j] - x[c][j];
+  });
+  if (status == solve_status::ok && !(probe == S(0))) status = solve_status::not_finite;
+  if (status != solve_status::ok)
+    static_for<n * k>([&](auto cj) {
+      constexpr std::size_t c = cj / k, j = cj % k;
+      if constexpr (X[c][j] == entry::other) x[c][j] = std::numeric_limits<S>::quiet_NaN();
+    });
+  return status;
+}
+
+}  // namespace kane::detail
