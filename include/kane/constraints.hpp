@@ -184,14 +184,38 @@ KANE_FLATTEN auto solve_constraints(const Ev& ev) {
   return out;
 }
 
+namespace detail {
+// col += a v in F; a v_r that is +-e_Fi adds to one component.
+template <class F, class V, class Col, class S, class Ev>
+void add_scaled(Col& col, const V& v, S a, const Ev& ev) {
+  if constexpr (is_zero_v<V> || is_zero_vector_v<V>)
+    return;
+  else if constexpr (is_unit<V>::value && std::is_same_v<typename V::frame, F>)
+    col(V::index - 1) += a;
+  else if constexpr (is_vneg<V>::value && is_unit<decltype(v.v)>::value &&
+                     std::is_same_v<typename decltype(v.v)::frame, F>)
+    col(decltype(v.v)::index - 1) -= a;
+  else
+    col += numbers<F>(v, ev) * a;
+}
+}  // namespace detail
+
 // [v~_1 ... v~_p] in F: v~_s = v_s + sum_r v_r A_rs over the independent s.
 template <Frame F, class NH, class X, class Ev, class Sol>
-auto nonholonomic_partial_velocities(const X& x, const Ev& ev, const Sol& sol) {
-  const auto all = partial_velocities<F>(x, ev);
+KANE_FLATTEN auto nonholonomic_partial_velocities(const X& x, const Ev& ev, const Sol& sol) {
   using S = typename Ev::scalar;
-  Eigen::Matrix<S, decltype(all)::RowsAtCompileTime, int(NH::p)> out;
-  for (std::size_t k = 0; k < NH::p; ++k) out.col(k) = all.col(NH::independents[k] - 1);
-  for (std::size_t r = 0; r < NH::m; ++r) out += all.col(NH::dependents[r] - 1) * sol.A.row(r);
+  using Sp = typename NH::speed_set;
+  static_assert(std::is_same_v<Sp, detail::speeds_of<Ev>>,
+                "kane: the constraints and the evaluator use different speed sets");
+  Eigen::Matrix<S, ScalarExpr<X> ? 1 : 3, int(NH::p)> out;
+  detail::static_for<NH::p>([&](auto k) {
+    auto col = detail::numbers<F>(detail::column<Sp, NH::independents[k]>(x), ev);
+    detail::static_for<NH::m>([&](auto r) {
+      detail::add_scaled<F>(col, detail::column<Sp, NH::dependents[r]>(x),
+                            sol.A(Eigen::Index(r), Eigen::Index(k)), ev);
+    });
+    out.col(k) = col;
+  });
   return out;
 }
 

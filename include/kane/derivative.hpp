@@ -23,13 +23,6 @@ namespace kane {
 
 namespace detail {
 
-template <class X, template <class...> class T>
-struct is_inst : std::false_type {};
-template <template <class...> class T, class... A>
-struct is_inst<T<A...>, T> : std::true_type {};
-template <class X, template <class...> class T>
-inline constexpr bool is_v = is_inst<X, T>::value;
-
 template <class X>
 struct power_info : std::false_type {};
 template <class X, int N>
@@ -193,7 +186,7 @@ constexpr auto ddt(X x) {
     return outer_derivative(x) * ddt(x.x);
   else if constexpr (is_v<X, vdot>) {
     using R = root_frame_of_t<vsum<decltype(x.l), decltype(x.r)>>;
-    return dot(ddt_in<R>(x.l), x.r) + dot(x.l, ddt_in<R>(x.r));
+    return derived_dot(ddt_in<R>(x.l), x.r) + derived_dot(x.l, ddt_in<R>(x.r));
   } else
     static_assert(!sizeof(X), "kane: dt of an unknown scalar node");
 }
@@ -220,7 +213,7 @@ constexpr auto partial(X x) {
     return outer_derivative(x) * partial<Leaf>(x.x);
   else if constexpr (is_v<X, vdot>) {
     using R = root_frame_of_t<vsum<decltype(x.l), decltype(x.r)>>;
-    return dot(partial_in<R, Leaf>(x.l), x.r) + dot(x.l, partial_in<R, Leaf>(x.r));
+    return derived_dot(partial_in<R, Leaf>(x.l), x.r) + derived_dot(x.l, partial_in<R, Leaf>(x.r));
   } else
     static_assert(!sizeof(X), "kane: diff of an unknown scalar node");
 }
@@ -246,7 +239,7 @@ constexpr auto ddt_in(V v) {
   if constexpr (is_zero_vector_v<V>)
     return v;
   else if constexpr (is_unit<V>::value)
-    return cross(angular_velocity<A, typename V::frame>(), v);
+    return derived_cross(angular_velocity<A, typename V::frame>(), v);
   else if constexpr (is_v<V, scaled>)
     return ddt(v.s) * v.v + v.s * ddt_in<A>(v.v);
   else if constexpr (is_v<V, vsum>)
@@ -256,13 +249,13 @@ constexpr auto ddt_in(V v) {
   else if constexpr (is_v<V, vneg>)
     return -ddt_in<A>(v.v);
   else if constexpr (is_v<V, vcross>)
-    return cross(ddt_in<A>(v.l), v.r) + cross(v.l, ddt_in<A>(v.r));
+    return derived_cross(ddt_in<A>(v.l), v.r) + derived_cross(v.l, ddt_in<A>(v.r));
   else if constexpr (is_v<V, omega>) {
     // ^A d(^R w^F)/dt = ^R alpha^F - ^R w^A x ^R w^F
     static_assert(std::is_same_v<root_of<A>, root_of<typename V::frame>>,
                   "kane: no path of the frame tree joins these two frames (their roots differ); "
                   "relate them through a common root frame");
-    return alpha<typename V::frame>{} - cross(omega_of<A>(), v);
+    return alpha<typename V::frame>{} - derived_cross(omega_of<A>(), v);
   } else if constexpr (is_v<V, angular_velocity_of> || is_v<V, angular_acceleration_of>)
     return ddt_in<A>(expand(v));
   else if constexpr (is_v<V, alpha>)
@@ -285,7 +278,7 @@ constexpr auto partial_in(V v) {
       static_assert(p::joined,
                     "kane: no path of the frame tree joins these two frames (their roots differ); "
                     "relate them through a common root frame");
-      return cross(partial_omega<Leaf::index>(typename p::up{}, typename p::down{}), v);
+      return derived_cross(partial_omega<Leaf::index>(typename p::up{}, typename p::down{}), v);
     } else
       return zero_vector{};
   } else if constexpr (is_v<V, scaled>)
@@ -297,7 +290,7 @@ constexpr auto partial_in(V v) {
   else if constexpr (is_v<V, vneg>)
     return -partial_in<A, Leaf>(v.v);
   else if constexpr (is_v<V, vcross>)
-    return cross(partial_in<A, Leaf>(v.l), v.r) + cross(v.l, partial_in<A, Leaf>(v.r));
+    return derived_cross(partial_in<A, Leaf>(v.l), v.r) + derived_cross(v.l, partial_in<A, Leaf>(v.r));
   else if constexpr (is_v<V, omega> && coordinate_info<Leaf>::value && Leaf::order == 1) {
     // d(^R w^F)/dq_s': the axes of the edges from the root to F turned by q_s
     using p = path<root_of<typename V::frame>, typename V::frame>;

@@ -453,19 +453,6 @@ class evaluator<St, frames<Fs...>, Level, Speeds> {
 namespace detail {
 
 template <class X>
-struct is_v_weight : std::false_type {};
-template <std::size_t S, std::size_t R>
-struct is_v_weight<kde_weight<S, R>> : std::true_type {
-  static constexpr std::size_t s = S, r = R;
-};
-template <class X>
-struct is_v_offset : std::false_type {};
-template <std::size_t S>
-struct is_v_offset<kde_offset<S>> : std::true_type {
-  static constexpr std::size_t s = S;
-};
-
-template <class X>
 struct is_evaluator : std::false_type {};
 template <class St, class Fr, level L, class Sp>
 struct is_evaluator<evaluator<St, Fr, L, Sp>> : std::true_type {};
@@ -503,11 +490,12 @@ typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
     return ev.state().t;
   else if constexpr (is_constant<X>::value)
     return S(X::num) / S(X::den);
-  else if constexpr (is_v_weight<X>::value)
-    return ev.template stored_weight<is_v_weight<X>::s - 1, is_v_weight<X>::r - 1>();
-  else if constexpr (is_v_offset<X>::value)
-    return ev.template stored_offset<is_v_offset<X>::s - 1>();
-  else if constexpr (std::is_same_v<X, literal>)
+  else if constexpr (kde_info<X>::value) {
+    if constexpr (requires { X::column; })
+      return ev.template stored_weight<X::row - 1, X::column - 1>();
+    else
+      return ev.template stored_offset<X::row - 1>();
+  } else if constexpr (std::is_same_v<X, literal>)
     return S(x.value);
   else if constexpr (is_fixed<X>::value)
     return S(X::value);

@@ -112,6 +112,14 @@ struct call : detail::scalar_tag {
 
 namespace detail {
 
+// X is an instance of the node template T
+template <class X, template <class...> class T>
+struct is_inst : std::false_type {};
+template <template <class...> class T, class... A>
+struct is_inst<T<A...>, T> : std::true_type {};
+template <class X, template <class...> class T>
+inline constexpr bool is_v = is_inst<X, T>::value;
+
 template <class T>
 struct is_fixed : std::false_type {};
 template <literal V>
@@ -130,6 +138,14 @@ constexpr auto make_constant() {
   constexpr std::intmax_t g = std::gcd(N, D) * (D < 0 ? -1 : 1);
   return constant<N / g, D / g>{};
 }
+
+// x and -x (x empty: equal types are equal expressions)
+template <class A, class B>
+struct cancels : std::false_type {};
+template <class A>
+struct cancels<A, neg<A>> : std::is_empty<A> {};
+template <class A>
+struct cancels<neg<A>, A> : std::is_empty<A> {};
 
 template <class X>
 constexpr auto as_expr(X x) {
@@ -171,6 +187,8 @@ requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator+(L l_, R r_) {
     return l;
   else if constexpr (detail::is_constant<A>::value && detail::is_constant<B>::value)
     return detail::make_constant<A::num * B::den + B::num * A::den, A::den * B::den>();
+  else if constexpr (detail::cancels<A, B>::value)
+    return zero_t{};  // x + (-x)
   else
     return add<A, B>(l, r);
 }
@@ -187,6 +205,8 @@ requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator-(L l_, R r_) {
     return -r;
   else if constexpr (detail::is_constant<A>::value && detail::is_constant<B>::value)
     return detail::make_constant<A::num * B::den - B::num * A::den, A::den * B::den>();
+  else if constexpr (std::is_same_v<A, B> && std::is_empty_v<A>)
+    return zero_t{};  // x - x
   else
     return sub<A, B>(l, r);
 }

@@ -47,6 +47,15 @@ constexpr auto remainder_u(X x, std::index_sequence<S...>) {
     return (at_rest(x) + ... + (d<coordinate<S + 1, 1>>(x) * offset<Sp, S + 1>()));
 }
 
+// v_R as an expression: dx/du_R + dx/dq_R' with u = q', else partial_u.
+template <class Sp, std::size_t R, class X>
+constexpr auto column(X x) {
+  if constexpr (Sp::identity)
+    return d<speed<R>>(x) + d<coordinate<R, 1>>(x);
+  else
+    return partial_u<Sp, R>(x, std::make_index_sequence<Sp::n>{});
+}
+
 template <class T>
 struct is_speed_tag : std::false_type {};
 template <std::size_t I>
@@ -99,10 +108,7 @@ KANE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
   Eigen::Matrix<typename Ev::scalar, rows, int(Sp::n)> t;
   Eigen::Matrix<typename Ev::scalar, rows, 1> rest;
   [&]<std::size_t... R>(std::index_sequence<R...>) {
-    if constexpr (Table && Sp::identity)
-      ((t.col(R) = numbers<A>(d<speed<R + 1>>(x) + d<coordinate<R + 1, 1>>(x), ev)), ...);
-    else if constexpr (Table)
-      ((t.col(R) = numbers<A>(partial_u<Sp, R + 1>(x, std::make_index_sequence<Sp::n>{}), ev)), ...);
+    if constexpr (Table) ((t.col(R) = numbers<A>(column<Sp, R + 1>(x), ev)), ...);
     if constexpr (Rest) rest = numbers<A>(remainder_u<Sp>(x, std::make_index_sequence<Sp::n>{}), ev);
   }
   (std::make_index_sequence<Sp::n>{});

@@ -120,7 +120,12 @@ void print_expr(std::ostream& os, const X& x) {
     if constexpr (X::den != 1) os << '/' << X::den;
   } else if constexpr (std::is_same_v<X, literal> || is_fixed<X>::value)
     os << x.value;
-  else if constexpr (is_v<X, add> || is_v<X, vsum>) {
+  else if constexpr (kde_info<X>::value) {  // W_SR = dq_S'/du_R, X_S: numbers of the evaluator
+    if constexpr (requires { X::column; })
+      os << 'W' << X::row << '_' << X::column;
+    else
+      os << 'X' << X::row;
+  } else if constexpr (is_v<X, add> || is_v<X, vsum>) {
     print_operand(os, x.l, 0);
     os << " + ";
     print_operand(os, x.r, 1);

@@ -53,9 +53,13 @@ using angular_velocity_speeds =
 
 // W_SR = dq_S'/du_R and X_S = q_S' at u = 0: numbers the evaluator solves for.
 template <std::size_t S, std::size_t R>
-struct kde_weight : detail::scalar_tag {};
+struct kde_weight : detail::scalar_tag {
+  static constexpr std::size_t row = S, column = R;
+};
 template <std::size_t S>
-struct kde_offset : detail::scalar_tag {};
+struct kde_offset : detail::scalar_tag {
+  static constexpr std::size_t row = S;
+};
 
 namespace detail {
 template <class X>
@@ -116,9 +120,9 @@ constexpr auto at_rest(X x) {
   else if constexpr (is_v<X, scaled>)
     return at_rest(x.s) * at_rest(x.v);
   else if constexpr (is_v<X, vcross>)
-    return cross(at_rest(x.l), at_rest(x.r));
+    return derived_cross(at_rest(x.l), at_rest(x.r));
   else if constexpr (is_v<X, vdot>)
-    return dot(at_rest(x.l), at_rest(x.r));
+    return derived_dot(at_rest(x.l), at_rest(x.r));
   else if constexpr (is_unit<X>::value || is_zero_vector_v<X>)
     return x;
   else if constexpr (is_v<X, omega> || is_v<X, angular_velocity_of>)

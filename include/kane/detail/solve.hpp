@@ -44,11 +44,8 @@ solve_status solve_structured(const table<S, Sys::n, Sys::n>& m, const table<S, 
   static_assert(Sys::form.regular);
   using std::abs;
   constexpr std::size_t n = Sys::n, k = Sys::k;
-  constexpr auto& P = Sys::m;
-  constexpr auto& F = Sys::form;
-  constexpr auto& X = Sys::x;
   auto value = [&](auto i, auto j) -> S {  // M_ij
-    if constexpr (P[i][j] == entry::one)
+    if constexpr (Sys::m[i][j] == entry::one)
       return S(1);
     else
       return m[i][j];
@@ -63,12 +60,12 @@ solve_status solve_structured(const table<S, Sys::n, Sys::n>& m, const table<S, 
   };
   static_for<n * k>([&](auto cj) {
     constexpr std::size_t c = cj / k, j = cj % k;
-    if constexpr (WriteConstants && X[c][j] != entry::other) x[c][j] = S(X[c][j] == entry::one);
+    if constexpr (WriteConstants && Sys::x[c][j] != entry::other) x[c][j] = S(Sys::x[c][j] == entry::one);
   });
   S scale = S(0);
   static_for<n * n>([&](auto ij) {
     constexpr std::size_t i = ij / n, j = ij % n;
-    if constexpr (P[i][j] != entry::zero) {
+    if constexpr (Sys::m[i][j] != entry::zero) {
       const S a = abs(value(index_c<i>{}, index_c<j>{}));
       scale = a > scale ? a : scale;
     }
@@ -79,59 +76,61 @@ solve_status solve_structured(const table<S, Sys::n, Sys::n>& m, const table<S, 
     if (status == solve_status::ok)
       status = pivot == pivot ? solve_status::singular : solve_status::not_finite;
   };
-  static_for<F.count>([&](auto b) {
-    constexpr std::size_t first = F.start[b], size = F.start[b + 1] - first;
+  static_for<Sys::form.count>([&](auto b) {
+    constexpr std::size_t first = Sys::form.start[b], size = Sys::form.start[b + 1] - first;
     // t_j = R_{row c, j} - sum over unknowns d of earlier blocks of M_{row c, d} x_dj
     auto reduced = [&](auto c, auto j) {
-      constexpr std::size_t row = F.row[c];
+      constexpr std::size_t row = Sys::form.row[c];
       S t = rhs(index_c<row>{}, j);
       static_for<n>([&](auto d) {
-        if constexpr (F.block[d] != b && P[row][d] != entry::zero && X[d][j] != entry::zero)
+        if constexpr (Sys::form.block[d] != b && Sys::m[row][d] != entry::zero && Sys::x[d][j] != entry::zero)
           t -= value(index_c<row>{}, d) * x[d][j];
       });
       return t;
     };
     if constexpr (size == 1) {
-      constexpr std::size_t c = F.order[first], row = F.row[c];
+      constexpr std::size_t c = Sys::form.order[first], row = Sys::form.row[c];
       S inverse = S(1);
-      if constexpr (P[row][c] == entry::other) {
+      if constexpr (Sys::m[row][c] == entry::other) {
         const S pivot = m[row][c];
         if (!(abs(pivot) > tol)) fail(pivot);
         inverse = S(1) / pivot;
       }
       static_for<k>([&](auto j) {
-        if constexpr (X[c][j] == entry::other) {
+        if constexpr (Sys::x[c][j] == entry::other) {
           const S t = reduced(index_c<c>{}, j);
-          x[c][j] = P[row][c] == entry::one ? t : t * inverse;
+          x[c][j] = Sys::m[row][c] == entry::one ? t : t * inverse;
         }
       });
     } else {
       Eigen::Matrix<S, int(size), int(size)> block, inverse;
       static_for<size * size>([&](auto ab) {
         constexpr std::size_t a = ab / size, e = ab % size;
-        block(a, e) = value(index_c<F.row[F.order[first + a]]>{}, index_c<F.order[first + e]>{});
+        block(a, e) = value(index_c<Sys::form.row[Sys::form.order[first + a]]>{},
+                            index_c<Sys::form.order[first + e]>{});
       });
       if (!invert(block, inverse, tol)) fail(block.sum());
       static_for<k>([&](auto j) {
-        if constexpr (X[F.order[first]][j] != entry::zero) {
+        if constexpr (Sys::x[Sys::form.order[first]][j] != entry::zero) {
           Eigen::Matrix<S, int(size), 1> t;
-          static_for<size>([&](auto a) { t(Eigen::Index(a)) = reduced(index_c<F.order[first + a]>{}, j); });
+          static_for<size>(
+              [&](auto a) { t(Eigen::Index(a)) = reduced(index_c<Sys::form.order[first + a]>{}, j); });
           const Eigen::Matrix<S, int(size), 1> y = inverse * t;
-          static_for<size>([&](auto a) { x[F.order[first + a]][j] = y(Eigen::Index(a)); });
+          static_for<size>([&](auto a) { x[Sys::form.order[first + a]][j] = y(Eigen::Index(a)); });
         }
       });
     }
   });
-  S probe = S(0);  // x - x is 0 for a finite x, NaN otherwise
+  bool finite = true;  // x - x is 0 for a finite x, NaN otherwise
   static_for<n * k>([&](auto cj) {
     constexpr std::size_t c = cj / k, j = cj % k;
-    if constexpr (X[c][j] == entry::other) probe += x[c][j] - x[c][j];
+    if constexpr (Sys::x[c][j] == entry::other) finite = finite & (x[c][j] - x[c][j] == S(0));
   });
-  if (status == solve_status::ok && !(probe == S(0))) status = solve_status::not_finite;
+  if (status == solve_status::ok && !finite) status = solve_status::not_finite;
   if (status != solve_status::ok)
     static_for<n * k>([&](auto cj) {
       constexpr std::size_t c = cj / k, j = cj % k;
-      if constexpr (X[c][j] == entry::other) x[c][j] = std::numeric_limits<S>::quiet_NaN();
+      if constexpr (Sys::x[c][j] == entry::other) x[c][j] = std::numeric_limits<S>::quiet_NaN();
     });
   return status;
 }
