@@ -1,23 +1,11 @@
-// kane: kinematics of Kane's method with reference frames as types.
+// kane: Kane's method with reference frames as types. The chapters, each
+// including only the ones above it:
 #pragma once
 
-#include "kane/angular_velocity.hpp"
-#include "kane/axis.hpp"
-#include "kane/constraints.hpp"
-#include "kane/coordinate.hpp"
-#include "kane/dcm.hpp"
-#include "kane/derivative.hpp"
-#include "kane/evaluator.hpp"
-#include "kane/expr.hpp"
-#include "kane/express.hpp"
-#include "kane/frame.hpp"
-#include "kane/orientation.hpp"
-#include "kane/partial_velocity.hpp"
-#include "kane/point.hpp"
-#include "kane/scalar.hpp"
-#include "kane/speeds.hpp"
-#include "kane/state.hpp"
-#include "kane/vec.hpp"
-#include "kane/vector.hpp"
+#include "kane/evaluation.hpp"   // the evaluator and the numbers of all of the above
+#include "kane/expressions.hpp"  // scalar and vector expressions
+#include "kane/frames.hpp"       // frames, coordinates, components, direction cosines
+#include "kane/kinematics.hpp"   // derivatives, angular velocities, points
+#include "kane/speeds.hpp"       // generalized speeds, partial velocities, constraints
 
 // Printing: #include <kane/print.hpp> (kept out of the core).

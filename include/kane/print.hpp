@@ -13,12 +13,12 @@
 #include <string>
 #include <string_view>
 
-#include "kane/dcm.hpp"
-#include "kane/derivative.hpp"
-#include "kane/evaluator.hpp"
-#include "kane/point.hpp"
-#include "kane/vec.hpp"
-#include "kane/vector.hpp"
+#include "kane/evaluation.hpp"
+#include "kane/expressions/vector.hpp"
+#include "kane/frames/dcm.hpp"
+#include "kane/frames/vec.hpp"
+#include "kane/kinematics/derivative.hpp"
+#include "kane/kinematics/point.hpp"
 
 namespace kane {
 

@@ -9,16 +9,9 @@
 #include <cstddef>
 #include <type_traits>
 
-#include "kane/expr.hpp"
-
 namespace kane::detail {
 
 enum class entry : unsigned char { zero, one, other };
-
-template <class X>
-constexpr entry entry_of() {
-  return is_zero_v<X> ? entry::zero : is_one_v<X> ? entry::one : entry::other;
-}
 
 template <std::size_t R, std::size_t C>
 using pattern = std::array<std::array<entry, C>, R>;

@@ -9,9 +9,9 @@
 #include <type_traits>
 #include <utility>
 
-#include "kane/detail/cosines.hpp"
-#include "kane/expr.hpp"
-#include "kane/frame.hpp"
+#include "kane/expressions/direction_cosines.hpp"
+#include "kane/expressions/expr.hpp"
+#include "kane/frames/frame.hpp"
 
 namespace kane {
 
@@ -222,7 +222,7 @@ constexpr auto across_edge_cross() {
          across_edge<C, 2, J>() * same_frame_cross<P, I, 2>() +
          across_edge<C, 3, J>() * same_frame_cross<P, I, 3>();
 }
-// e_Ai x e_Bj when the tree decides it (detail/cosines.hpp), undecided otherwise.
+// e_Ai x e_Bj when the tree decides it (expressions/direction_cosines.hpp), undecided otherwise.
 template <class L, class R>
 constexpr auto unit_cross() {
   using A = typename L::frame;
@@ -341,7 +341,7 @@ template <class L, class R>
 constexpr auto spread_dot(L l, R r);
 
 // p . r in what kane derives: e_Ai . e_Bj reduces when the tree decides it
-// (detail/cosines.hpp), and a dot with a unit vector spreads over sums and
+// (expressions/direction_cosines.hpp), and a dot with a unit vector spreads over sums and
 // scalings when that leaves no dot product to compute.
 template <VectorExpr L, VectorExpr R>
 constexpr auto derived_dot(L l, R r) {

@@ -15,8 +15,8 @@
 #include <numeric>
 #include <type_traits>
 
-#include "kane/coordinate.hpp"
 #include "kane/detail/dual.hpp"
+#include "kane/frames/coordinate.hpp"
 
 namespace kane {
 

@@ -6,8 +6,8 @@
 
 #include <type_traits>
 
-#include "kane/axis.hpp"
-#include "kane/expr.hpp"
+#include "kane/expressions/expr.hpp"
+#include "kane/frames/axis.hpp"
 
 namespace kane::detail {
 

@@ -11,9 +11,9 @@
 
 #include <Eigen/Core>
 
-#include "kane/axis.hpp"
-#include "kane/coordinate.hpp"
 #include "kane/detail/list.hpp"
+#include "kane/frames/axis.hpp"
+#include "kane/frames/coordinate.hpp"
 
 namespace kane {
 

@@ -4,12 +4,12 @@
 
 #include <Eigen/Core>
 
-#include "kane/dcm.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
-#include "kane/frame.hpp"
-#include "kane/state.hpp"
-#include "kane/vec.hpp"
+#include "kane/frames/dcm.hpp"
+#include "kane/frames/frame.hpp"
+#include "kane/frames/state.hpp"
+#include "kane/frames/vec.hpp"
 
 namespace kane {
 

@@ -8,9 +8,9 @@
 #include <Eigen/Geometry>
 
 #include "kane/detail/frame_check.hpp"
-#include "kane/frame.hpp"
+#include "kane/frames/frame.hpp"
+#include "kane/frames/scalar.hpp"
 #include "kane/fwd.hpp"
-#include "kane/scalar.hpp"
 
 namespace kane {
 

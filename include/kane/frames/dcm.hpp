@@ -12,8 +12,8 @@
 #include <Eigen/LU>
 
 #include "kane/detail/frame_check.hpp"
-#include "kane/frame.hpp"
-#include "kane/vec.hpp"
+#include "kane/frames/frame.hpp"
+#include "kane/frames/vec.hpp"
 
 namespace kane {
 

@@ -12,7 +12,7 @@
 
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/tree.hpp"
-#include "kane/vector.hpp"
+#include "kane/expressions/vector.hpp"
 
 namespace kane {
 

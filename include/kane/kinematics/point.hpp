@@ -12,11 +12,11 @@
 
 #include <type_traits>
 
-#include "kane/angular_velocity.hpp"
-#include "kane/derivative.hpp"
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/list.hpp"
-#include "kane/vector.hpp"
+#include "kane/expressions/vector.hpp"
+#include "kane/kinematics/angular_velocity.hpp"
+#include "kane/kinematics/derivative.hpp"
 
 namespace kane {
 

@@ -13,11 +13,11 @@
 #include <cstddef>
 #include <type_traits>
 
-#include "kane/angular_velocity.hpp"
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/tree.hpp"
-#include "kane/expr.hpp"
-#include "kane/vector.hpp"
+#include "kane/expressions/expr.hpp"
+#include "kane/expressions/vector.hpp"
+#include "kane/kinematics/angular_velocity.hpp"
 
 namespace kane {
 

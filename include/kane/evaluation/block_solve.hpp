@@ -19,7 +19,7 @@
 
 #include "kane/detail/invert.hpp"
 #include "kane/detail/structure.hpp"
-#include "kane/status.hpp"
+#include "kane/evaluation/status.hpp"
 
 namespace kane::detail {
 

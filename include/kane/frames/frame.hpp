@@ -13,8 +13,8 @@
 #include <concepts>
 #include <type_traits>
 
+#include "kane/frames/orientation.hpp"
 #include "kane/fwd.hpp"
-#include "kane/orientation.hpp"
 
 namespace kane {
 

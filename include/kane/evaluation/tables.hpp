@@ -1,46 +1,92 @@
-// Holonomic constraints (seed eq. 16) and nonholonomic constraints (eq. 20-22).
-//
-//   kane::configuration<Particles, RigidBodies, f1, ..., fM>
-//       f_k(q, t) = 0; n = 3 Particles + 6 RigidBodies - M at compile time.
-//   kane::nonholonomic<Speeds, kane::dependent<4, 5>, c1, c2>
-//       c_k linear in the speeds, c_k = 0 (m of them for m dependent speeds);
-//       at a state: u_dep = A u_ind + B, and the nonholonomic partial
-//       velocities v~_s = v_s + sum_r v_r A_rs with remainder v~_t = v_t + sum_r v_r B_r.
+// Numbers of Kane's tables at an evaluator's state (seed eq. 16-22):
+// partial velocities and remainders (v = sum_r v_r u_r + v_t), residuals of
+// holonomic constraints, u_dep = A u_ind + B of nonholonomic constraints and
+// the nonholonomic partial velocities. Each column is one expression whose
+// zeros are known at compile time (speeds/).
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <limits>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 #include <Eigen/Core>
 
-#include "kane/derivative.hpp"
-#include "kane/detail/solve.hpp"
-#include "kane/detail/structure.hpp"
-#include "kane/evaluator.hpp"
-#include "kane/partial_velocity.hpp"
-#include "kane/speeds.hpp"
+#include "kane/evaluation/block_solve.hpp"
+#include "kane/evaluation/evaluate.hpp"
+#include "kane/evaluation/evaluator.hpp"
+#include "kane/evaluation/status.hpp"
+#include "kane/speeds/constraints.hpp"
+#include "kane/speeds/partial_velocity.hpp"
 
 namespace kane {
 
-template <std::size_t Particles, std::size_t RigidBodies, auto... F>
-struct configuration {
-  static_assert((ScalarExpr<decltype(F)> && ...),
-                "kane: configuration constraints are scalar expressions f(q, t)");
-  static constexpr std::size_t constraints = sizeof...(F);
-  static_assert(3 * Particles + 6 * RigidBodies >= constraints,
-                "kane: more holonomic constraints than coordinates (3 per particle, 6 per rigid body)");
-  // Generalized coordinates needed: n = 3v - M with 6 per rigid body (eq. 16).
-  static constexpr std::size_t n = 3 * Particles + 6 * RigidBodies - constraints;
-  static constexpr std::tuple<decltype(F)...> equations{F...};
-  // d f_k / dt = 0: the velocity constraint of f_k.
-  template <std::size_t K>
-  static constexpr auto velocity_constraint() {
-    return dt(std::get<K>(equations));
+namespace detail {
+template <class Ev>
+using speeds_of = std::conditional_t<std::is_void_v<typename Ev::speed_set>, qdot_speeds<Ev::state_type::nq>,
+                                     typename Ev::speed_set>;
+
+}  // namespace detail
+
+namespace detail {
+// x as numbers: a scalar, or a vector in A.
+template <class A, class X, class Ev>
+auto numbers(const X& x, const Ev& ev) {
+  using S = typename Ev::scalar;
+  if constexpr (ScalarExpr<X>) {
+    return Eigen::Matrix<S, 1, 1>(eval_scalar(x, ev));
+  } else {
+    const auto r = in_frame<A>(eval_vector(x, ev), ev);
+    return Eigen::Matrix<S, 3, 1>(r.x, r.y, r.z);
   }
-};
+}
+
+// x = T u + t in A: the table T = [v_1 ... v_n] (rows 1 for a scalar x, 3 for
+// a vector) and the remainder t, each computed only if asked for. Column r is
+// the expression dx/du_r + sum_s dx/dq_s' W_sr, t is x_0 + sum_s dx/dq_s' X_s,
+// with the zeros and ones of W and X known at compile time (speeds.hpp).
+template <class A, bool Table, bool Rest, class X, class Ev>
+KANE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
+  using Sp = speeds_of<Ev>;
+  constexpr int rows = ScalarExpr<X> ? 1 : 3;
+  Eigen::Matrix<typename Ev::scalar, rows, int(Sp::n)> t;
+  Eigen::Matrix<typename Ev::scalar, rows, 1> rest;
+  [&]<std::size_t... R>(std::index_sequence<R...>) {
+    if constexpr (Table) ((t.col(R) = numbers<A>(column<Sp, R + 1>(x), ev)), ...);
+    if constexpr (Rest) rest = numbers<A>(remainder_u<Sp>(x, std::make_index_sequence<Sp::n>{}), ev);
+  }
+  (std::make_index_sequence<Sp::n>{});
+  if constexpr (Table && Rest)
+    return std::pair{t, rest};
+  else if constexpr (Table)
+    return t;
+  else
+    return rest;
+}
+}  // namespace detail
+
+// The pair (T, t) of x = T u + t in A.
+template <Frame A, class X, class Ev>
+requires(detail::is_evaluator<Ev>::value &&
+         (ScalarExpr<X> || VectorExpr<X>)) auto linear_in_speeds(const X& x, const Ev& ev) {
+  return detail::linear_parts<A, true, true>(x, ev);
+}
+
+// The table [v_1 ... v_n] in A.
+template <Frame A, class X, class Ev>
+requires(detail::is_evaluator<Ev>::value &&
+         (ScalarExpr<X> || VectorExpr<X>)) auto partial_velocities(const X& x, const Ev& ev) {
+  return detail::linear_parts<A, true, false>(x, ev);
+}
+
+// v_t in A.
+template <Frame A, class X, class Ev>
+requires(detail::is_evaluator<Ev>::value && (ScalarExpr<X> || VectorExpr<X>)) auto remainder(const X& x,
+                                                                                             const Ev& ev) {
+  return detail::linear_parts<A, false, true>(x, ev);
+}
 
 // f_k at the evaluator's state, and their time derivatives.
 template <class Config, class Ev>
@@ -60,46 +106,6 @@ auto velocity_residuals(const Ev& ev) {
   (std::make_index_sequence<Config::constraints>{});
 }
 
-template <std::size_t... R>
-struct dependent {};
-
-template <SpeedSet Sp, class Dependent, auto... C>
-struct nonholonomic;
-
-template <SpeedSet Sp, std::size_t... D, auto... C>
-struct nonholonomic<Sp, dependent<D...>, C...> {
-  using speed_set = Sp;
-  static constexpr std::size_t n = Sp::n;
-  static constexpr std::size_t m = sizeof...(D);
-  static_assert(sizeof...(C) == m,
-                "kane: m dependent speeds need m constraint equations; the counts in "
-                "nonholonomic<Speeds, dependent<...>, c...> differ");
-  static_assert(((D >= 1 && D <= n) && ...),
-                "kane: the dependent speeds must be speeds of the system (u_1 .. u_n)");
-  static_assert(m < n, "kane: at least one speed must stay independent");
-  static constexpr std::size_t p = n - m;  // degrees of freedom
-  static constexpr std::array<std::size_t, m> dependents{D...};
-  static constexpr std::array<std::size_t, p> independents = [] {
-    std::array<std::size_t, p> r{};
-    std::size_t k = 0;
-    for (std::size_t i = 1; i <= n; ++i) {
-      bool dep = false;
-      for (std::size_t j : dependents) dep = dep || j == i;
-      if (!dep && k < p) r[k++] = i;
-    }
-    return r;
-  }();
-  static_assert(
-      [] {
-        for (std::size_t i = 0; i < m; ++i)
-          for (std::size_t j = 0; j < i; ++j)
-            if (dependents[i] == dependents[j]) return false;
-        return true;
-      }(),
-      "kane: a dependent speed is named twice");
-  static constexpr std::tuple<decltype(C)...> equations{C...};
-};
-
 // u_dep = A u_ind + B at a state; status says whether the dependent block was
 // solvable (A and B are NaN when it is singular or not finite).
 template <class S, std::size_t M, std::size_t P>
@@ -108,45 +114,6 @@ struct constraint_solution {
   Eigen::Matrix<S, int(M), 1> B;
   solve_status status;
 };
-
-namespace detail {
-// The constraints M u + c0 = 0 as a structured solve (detail/solve.hpp) of the
-// dependent block for [A | B] = -M_dep^-1 [M_ind | c0].
-template <class NH>
-struct constraint_system {
-  using Sp = typename NH::speed_set;
-  static constexpr std::size_t n = NH::m, p = NH::p, k = p + 1;
-  template <std::size_t K, std::size_t R>  // the coefficient of u_R in c_K
-  static constexpr auto coefficient() {
-    return partial_velocity<Sp>(std::get<K>(NH::equations), speed<R>{});
-  }
-  template <std::size_t K>
-  static constexpr auto rest() {
-    return velocity_remainder<Sp>(std::get<K>(NH::equations));
-  }
-  template <std::size_t K, std::size_t J>  // column J of [M_ind | c0]
-  static constexpr auto right() {
-    if constexpr (J < p)
-      return coefficient<K, NH::independents[J]>();
-    else
-      return rest<K>();
-  }
-  static constexpr pattern<n, n> m = []<std::size_t... I>(std::index_sequence<I...>) {
-    pattern<n, n> out{};
-    ((out[I / n][I % n] = entry_of<decltype(coefficient<I / n, NH::dependents[I % n]>())>()), ...);
-    return out;
-  }
-  (std::make_index_sequence<n * n>{});
-  static constexpr pattern<n, k> r = []<std::size_t... I>(std::index_sequence<I...>) {
-    pattern<n, k> out{};
-    ((out[I / k][I % k] = entry_of<decltype(right<I / k, I % k>())>()), ...);
-    return out;
-  }
-  (std::make_index_sequence<n * k>{});
-  static constexpr block_form<n> form = blocks_of(m);
-  static constexpr pattern<n, k> x = solution_pattern(m, form, r);
-};
-}  // namespace detail
 
 // u_dep = A u_ind + B at the evaluator's state.
 template <class NH, class Ev>

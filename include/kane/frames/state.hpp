@@ -4,9 +4,9 @@
 #include <array>
 #include <cstddef>
 
-#include "kane/coordinate.hpp"
+#include "kane/frames/coordinate.hpp"
+#include "kane/frames/scalar.hpp"
 #include "kane/fwd.hpp"
-#include "kane/scalar.hpp"
 
 namespace kane {
 

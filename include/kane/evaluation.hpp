@@ -1,0 +1,10 @@
+// Evaluation: the evaluator (outward pass over the frame tree, kinematic
+// differential equations), node evaluation and the numeric tables of Kane's method.
+#pragma once
+
+#include "kane/evaluation/evaluate.hpp"
+#include "kane/evaluation/evaluator.hpp"
+#include "kane/evaluation/kinematic_equations.hpp"
+#include "kane/evaluation/outward_pass.hpp"
+#include "kane/evaluation/status.hpp"
+#include "kane/evaluation/tables.hpp"

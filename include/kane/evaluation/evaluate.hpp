@@ -1,0 +1,190 @@
+// Evaluation of expression nodes from an evaluator's cache (evaluator.hpp):
+// eval_scalar and eval_vector say once how each node kind becomes numbers;
+// evaluate(x, ev) and express<A>(v, ev) are the entry points.
+//
+// Vectors are computed in the root's components (detail/v3.hpp); a dot or
+// cross with a unit vector of the root picks or permutes components.
+#pragma once
+
+#include <cmath>
+#include <type_traits>
+
+#include "kane/detail/tree.hpp"
+#include "kane/detail/v3.hpp"
+#include "kane/expressions/expr.hpp"
+#include "kane/expressions/vector.hpp"
+#include "kane/frames/vec.hpp"
+#include "kane/kinematics/derivative.hpp"
+#include "kane/speeds/generalized_speeds.hpp"
+
+namespace kane {
+
+namespace detail {
+
+// Specialised by evaluator.hpp.
+template <class X>
+struct is_evaluator : std::false_type {};
+
+template <class Ev, class V>
+v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev);
+
+// e_Ri of a root frame R: components known at compile time.
+template <class V>
+struct root_unit : std::false_type {};
+template <class F, int I>
+struct root_unit<unit<F, I>> : std::bool_constant<std::is_void_v<typename F::tree_parent>> {};
+template <int I, class S>
+S component(const v3<S>& a) {
+  return I == 1 ? a.x : I == 2 ? a.y : a.z;
+}
+// a x e_Ri
+template <int I, class S>
+v3<S> cross_unit(const v3<S>& a) {
+  if constexpr (I == 1)
+    return {S(0), a.z, -a.y};
+  else if constexpr (I == 2)
+    return {-a.z, S(0), a.x};
+  else
+    return {a.y, -a.x, S(0)};
+}
+
+template <class Ev, class X>
+typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
+  using S = typename Ev::scalar;
+  if constexpr (coordinate_info<X>::value)
+    return ev.template coordinate_value<X::index, X::order>();
+  else if constexpr (speed_info<X>::value)
+    return ev.state()[x];
+  else if constexpr (Parameter<X>)
+    return ev.state()[parameter<X::index>{}];
+  else if constexpr (std::is_same_v<X, time_variable>)
+    return ev.state().t;
+  else if constexpr (is_constant<X>::value)
+    return S(X::num) / S(X::den);
+  else if constexpr (kde_info<X>::value) {
+    if constexpr (requires { X::column; })
+      return ev.template stored_weight<X::row - 1, X::column - 1>();
+    else
+      return ev.template stored_offset<X::row - 1>();
+  } else if constexpr (std::is_same_v<X, literal>)
+    return S(x.value);
+  else if constexpr (is_fixed<X>::value)
+    return S(X::value);
+  else if constexpr (is_v<X, add>)
+    return eval_scalar(x.l, ev) + eval_scalar(x.r, ev);
+  else if constexpr (is_v<X, sub>)
+    return eval_scalar(x.l, ev) - eval_scalar(x.r, ev);
+  else if constexpr (is_v<X, mul>)
+    return eval_scalar(x.l, ev) * eval_scalar(x.r, ev);
+  else if constexpr (is_v<X, quot>)
+    return eval_scalar(x.l, ev) / eval_scalar(x.r, ev);
+  else if constexpr (is_v<X, neg>)
+    return -eval_scalar(x.x, ev);
+  else if constexpr (is_v<X, unary>) {
+    using Fn = typename unary_info<X>::fn;
+    using Arg = decltype(x.x);
+    if constexpr (!std::is_same_v<Fn, sqrt_fn> && Coordinate<Arg>) {
+      if constexpr (std::is_same_v<Fn, sin_fn>)
+        return ev.template sin_q<Arg::index>();
+      else
+        return ev.template cos_q<Arg::index>();
+    } else {
+      using std::cos, std::sin, std::sqrt;
+      const S a = eval_scalar(x.x, ev);
+      if constexpr (std::is_same_v<Fn, sin_fn>)
+        return sin(a);
+      else if constexpr (std::is_same_v<Fn, cos_fn>)
+        return cos(a);
+      else
+        return sqrt(a);
+    }
+  } else if constexpr (power_info<X>::value) {
+    const S a = eval_scalar(x.x, ev);
+    constexpr int n = power_info<X>::n;
+    S r = a;
+    for (int k = 1; k < (n < 0 ? -n : n); ++k) r *= a;
+    return n < 0 ? S(1) / r : r;
+  } else if constexpr (is_v<X, call>)
+    return x.f(eval_scalar(x.x, ev));
+  else if constexpr (is_v<X, vdot>) {
+    if constexpr (root_unit<decltype(x.r)>::value)  // v . e_Ri: a component
+      return component<decltype(x.r)::index>(eval_vector(x.l, ev));
+    else if constexpr (root_unit<decltype(x.l)>::value)
+      return component<decltype(x.l)::index>(eval_vector(x.r, ev));
+    else
+      return dot3(eval_vector(x.l, ev), eval_vector(x.r, ev));
+  } else
+    static_assert(!sizeof(X), "kane: evaluation of an unknown scalar node");
+}
+
+// Components in the root frame.
+template <class Ev, class V>
+v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev) {
+  using S = typename Ev::scalar;
+  if constexpr (is_zero_vector_v<V>)
+    return {S(0), S(0), S(0)};
+  else if constexpr (is_unit<V>::value) {
+    using F = typename V::frame;
+    if constexpr (std::is_void_v<typename F::tree_parent>)
+      return {S(V::index == 1), S(V::index == 2), S(V::index == 3)};
+    else
+      return load3(ev.template axes<F>().data() + 3 * (V::index - 1));
+  } else if constexpr (is_v<V, scaled>) {
+    const S s = eval_scalar(v.s, ev);
+    return s * eval_vector(v.v, ev);
+  } else if constexpr (is_v<V, vsum>)
+    return eval_vector(v.l, ev) + eval_vector(v.r, ev);
+  else if constexpr (is_v<V, vdiff>)
+    return eval_vector(v.l, ev) - eval_vector(v.r, ev);
+  else if constexpr (is_v<V, vneg>)
+    return -eval_vector(v.v, ev);
+  else if constexpr (is_v<V, vcross>) {
+    if constexpr (root_unit<decltype(v.r)>::value)
+      return cross_unit<decltype(v.r)::index>(eval_vector(v.l, ev));
+    else if constexpr (root_unit<decltype(v.l)>::value)
+      return -cross_unit<decltype(v.l)::index>(eval_vector(v.r, ev));
+    else
+      return cross3(eval_vector(v.l, ev), eval_vector(v.r, ev));
+  } else if constexpr (is_v<V, omega>)
+    return load3(ev.template omega<typename V::frame>().data());
+  else if constexpr (is_v<V, alpha>)
+    return load3(ev.template alpha<typename V::frame>().data());
+  else if constexpr (is_v<V, angular_velocity_of> || is_v<V, angular_acceleration_of>)
+    return eval_vector(expand(v), ev);
+  else
+    return eval_vector(v.v, ev);  // a kinematic quantity: its expression
+}
+
+// ^A components of the root components r.
+template <class A, class Ev>
+v3<typename Ev::scalar> in_frame(const v3<typename Ev::scalar>& r, const Ev& ev) {
+  if constexpr (std::is_same_v<A, root_of<A>>)
+    return r;
+  else {
+    const auto* c = ev.template axes<A>().data();
+    return {dot3(load3(c), r), dot3(load3(c + 3), r), dot3(load3(c + 6), r)};
+  }
+}
+
+}  // namespace detail
+
+// The value of a scalar expression.
+template <ScalarExpr X, class Ev>
+requires detail::is_evaluator<Ev>::value KANE_FLATTEN typename Ev::scalar evaluate(const X& x, const Ev& ev) {
+  return detail::eval_scalar(x, ev);
+}
+
+// ^A v: the components of the vector expression v in A.
+template <Frame A, VectorExpr V, class Ev>
+requires detail::is_evaluator<Ev>::value KANE_FLATTEN vec<A, typename Ev::scalar> express(const V& v,
+                                                                                          const Ev& ev) {
+  using R = detail::root_of<A>;
+  using VR = detail::root_frame_of_t<V>;
+  static_assert(std::is_same_v<VR, root_frame> || std::is_same_v<VR, R>,
+                "kane: no path of the frame tree joins the vector's frames and the frame of expression; "
+                "express it in a frame of its own tree");
+  const auto r = detail::in_frame<A>(detail::eval_vector(v, ev), ev);
+  return vec<A, typename Ev::scalar>(r.x, r.y, r.z);
+}
+
+}  // namespace kane

@@ -1,0 +1,118 @@
+// The evaluator: one outward pass over the frame tree per state, the
+// kinematic differential equations solved at it, then any number of
+// expressions evaluated from its cache (evaluate.hpp).
+//
+//   kane::evaluator<State, kane::frames<C, E>> ev;  // C, E and their ancestors
+//   ev.update(s);                                    // sin/cos once, then per frame
+//   kane::vec<N> v = kane::express<N>(expr, ev);     // ^N components of expr
+//
+// With a speed set, q' and q'' are solved from u and u' (kinematic_equations.hpp).
+// update(s) keeps a pointer to s: s must outlive the evaluations that follow.
+// Evaluating allocates nothing and calls no sin or cos of a frame coordinate.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <type_traits>
+
+#include "kane/detail/tree.hpp"
+#include "kane/detail/trig.hpp"
+#include "kane/detail/v3.hpp"
+#include "kane/evaluation/evaluate.hpp"
+#include "kane/evaluation/kinematic_equations.hpp"
+#include "kane/evaluation/outward_pass.hpp"
+#include "kane/evaluation/status.hpp"
+#include "kane/frames/state.hpp"
+
+namespace kane {
+
+template <State St, class Frames, level Level = level::acceleration, class Speeds = void>
+class evaluator;
+
+template <State St, Frame... Fs, level Level, class Speeds>
+class evaluator<St, frames<Fs...>, Level, Speeds>
+    : public detail::outward_pass<typename St::scalar, typename detail::closure<Fs...>::type, Level>,
+      public detail::kinematic_equations<St, Speeds> {
+  using pass_type = detail::outward_pass<typename St::scalar, typename detail::closure<Fs...>::type, Level>;
+  using equations = detail::kinematic_equations<St, Speeds>;
+  using equations::direct;
+  using equations::solves;
+  using typename pass_type::trig_type;
+
+ public:
+  using state_type = St;
+  using scalar = typename St::scalar;
+  using speed_set = Speeds;
+  using typename pass_type::closure;
+
+  // The outward pass at s; s must outlive the evaluations that follow. With a
+  // speed set, W and X at every level, q' and q'' from s.u and s.ud at the
+  // velocity and acceleration levels; if Y is singular or not finite,
+  // status() says so, and W (but for its structural zeros and ones), X, q',
+  // q'' and all computed from them are NaN.
+  KANE_FLATTEN void update(const St& s) {
+    st_ = &s;
+    const auto t = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
+    constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
+    if constexpr (!solves) {
+      this->template pass<true, velocity, acceleration>(t, *this);  // frame after frame, all levels at once
+      this->store_trig(t);
+    } else {  // Y, Z need the axes; Y', Z' the angular velocities
+      this->template pass<true, false, false>(t, *this);
+      this->store_trig(t);
+      if constexpr (!direct) this->solve_kinematic_equations(*this);
+      if constexpr (velocity) {
+        this->solve_rates(s);
+        this->template pass<false, true, false>(t, *this);
+      }
+      if constexpr (acceleration) {
+        this->solve_accelerations(*this, s);
+        this->template pass<false, false, true>(t, *this);
+      }
+    }
+  }
+
+  const St& state() const { return *st_; }
+
+  // q_I, q_I', q_I'': from the state, or solved from the speeds.
+  template <std::size_t I, std::size_t D>
+  scalar coordinate_value() const {
+    static_assert(I >= 1 && I <= St::nq,
+                  "kane: this coordinate is beyond the state; declare the state with NQ >= I");
+    static_assert(D <= 2, "kane: a state holds q, q' and q'' only");
+    if constexpr (D == 0)
+      return st_->q[I - 1];
+    else if constexpr (solves)
+      return this->template rate<I, D>();
+    else
+      return D == 1 ? st_->qd[I - 1] : st_->qdd[I - 1];
+  }
+
+  // sin q_I and cos q_I: from the cache when a frame turns by q_I.
+  template <std::size_t I>
+  scalar sin_q() const {
+    using std::sin;
+    if constexpr (trig_type::template holds<I>())
+      return this->cached_trig().template sin<I>();
+    else
+      return sin(st_->q[I - 1]);
+  }
+  template <std::size_t I>
+  scalar cos_q() const {
+    using std::cos;
+    if constexpr (trig_type::template holds<I>())
+      return this->cached_trig().template cos<I>();
+    else
+      return cos(st_->q[I - 1]);
+  }
+
+ private:
+  const St* st_ = nullptr;
+};
+
+namespace detail {
+template <class St, class Fr, level L, class Sp>
+struct is_evaluator<evaluator<St, Fr, L, Sp>> : std::true_type {};
+}  // namespace detail
+
+}  // namespace kane

@@ -1,0 +1,191 @@
+// The kinematic differential equations (seed eq. 17) at a state: with
+// u = Y q' + Z, q' = W u + X with W = Y^-1 and X = -W Z (both depend on q
+// alone), and q'' = W (u' - Y' q' - Z'). Y's zero pattern is known at compile
+// time (speeds/generalized_speeds.hpp): W is found block by block
+// (evaluation/block_solve.hpp) and only its numbers are stored.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+
+#include <Eigen/Core>
+
+#include "kane/detail/structure.hpp"
+#include "kane/evaluation/block_solve.hpp"
+#include "kane/evaluation/evaluate.hpp"
+#include "kane/evaluation/status.hpp"
+#include "kane/frames/state.hpp"
+#include "kane/speeds/generalized_speeds.hpp"
+
+namespace kane::detail {
+
+// Speeds: void to read q' and q'' from the state; a speed set to solve them from u and u'.
+template <class St, class Speeds>
+class kinematic_equations {
+ protected:
+  static constexpr bool solves = !std::is_void_v<Speeds>;
+  static constexpr bool direct = [] {  // q' = u or q' read from the state
+    if constexpr (solves)
+      return Speeds::identity;
+    else
+      return true;
+  }();
+  static constexpr std::size_t nq = St::nq;
+
+ public:
+  using scalar = typename St::scalar;
+  using matrixn = Eigen::Matrix<scalar, int(nq), int(nq)>;
+  using vectorn = Eigen::Matrix<scalar, int(nq), 1>;
+
+  solve_status status() const { return status_; }
+  // q' = W u + X (W the identity and X zero without a speed set).
+  matrixn W() const {
+    matrixn w;
+    for (std::size_t i = 0; i < nq; ++i)
+      for (std::size_t j = 0; j < nq; ++j) w(i, j) = weight(i, j);
+    return w;
+  }
+  vectorn X() const {
+    vectorn x;
+    for (std::size_t i = 0; i < nq; ++i) x(i) = offset(i);
+    return x;
+  }
+
+  // W_sr and X_s (0-based): numbers where the structure of Y does not fix them.
+  scalar weight(std::size_t s, std::size_t r) const {
+    const auto kind = w_pattern()[s][r];
+    return kind == entry::other ? kde_w_[s][r] : scalar(kind == entry::one);
+  }
+  scalar offset(std::size_t s) const { return offset_pattern()[s] ? kde_x_[s] : scalar(0); }
+  // the stored numbers behind kde_weight<S + 1, R + 1> and kde_offset<S + 1>
+  template <std::size_t S, std::size_t R>
+  scalar stored_weight() const {
+    static_assert(w_pattern()[S][R] == entry::other);
+    return kde_w_[S][R];
+  }
+  template <std::size_t S>
+  scalar stored_offset() const {
+    static_assert(offset_pattern()[S]);
+    return kde_x_[S];
+  }
+
+ protected:
+  kinematic_equations() {
+    static_assert(!solves || SpeedSet<Speeds>,
+                  "kane: the fourth argument of evaluator is a speed set (speeds/generalized_speeds.hpp)");
+    if constexpr (solves) {
+      static_assert(Speeds::n == nq, "kane: a speed set defines as many speeds as the state has coordinates");
+      static_assert(St::nu >= nq, "kane: the state holds fewer speeds than the speed set defines");
+      if constexpr (!Speeds::identity)
+        static_assert(system::form.regular,
+                      "kane: these speeds do not determine q' (Y = du/dq' is singular at every state: some "
+                      "q' appears in no speed, or fewer speeds than q' involve them)");
+    }
+  }
+
+  // q_I' (D = 1) or q_I'' (D = 2) as solved.
+  template <std::size_t I, std::size_t D>
+  scalar rate() const {
+    return D == 1 ? qd_[I - 1] : qdd_[I - 1];
+  }
+
+  template <std::size_t R>
+  static constexpr auto definition() {
+    return std::get<R>(Speeds::definitions);
+  }
+  using system = kde_system<std::conditional_t<solves, Speeds, qdot_speeds<1>>>;
+  static constexpr pattern<nq, nq> w_pattern() {
+    if constexpr (direct)
+      return identity_pattern<nq>();
+    else
+      return system::x;
+  }
+  static constexpr std::array<bool, nq> offset_pattern() {
+    if constexpr (direct)
+      return {};
+    else
+      return system::offset;
+  }
+
+  // Y q' + Z = u, so q' = W u + X with W = Y^-1 (evaluation/block_solve.hpp) and X = -W Z:
+  // W and X depend on q alone. The zeros and ones of W are written once, by the constructor.
+  template <class Ev>
+  void solve_kinematic_equations(const Ev& ev) {
+    table<scalar, nq, nq> y;
+    static_for<nq * nq>([&](auto rc) {
+      constexpr std::size_t r = rc / nq, c = rc % nq;
+      if constexpr (system::m[r][c] == entry::other)
+        y[r][c] = eval_scalar(diff(definition<r>(), coordinate<c + 1, 1>{}), ev);
+    });
+    status_ = solve_structured<system, false>(y, y, kde_w_);
+    std::array<scalar, nq> z;
+    static_for<nq>([&](auto r) {
+      if constexpr (system::z[r] != entry::zero) z[r] = -eval_scalar(at_rest(definition<r>()), ev);
+    });
+    static_for<nq>([&](auto c) {
+      if constexpr (system::offset[c]) kde_x_[c] = apply_row<c, false>(z);
+    });
+    if (status_ != solve_status::ok)
+      static_for<nq>([&](auto c) {
+        if constexpr (system::offset[c]) kde_x_[c] = std::numeric_limits<scalar>::quiet_NaN();
+      });
+  }
+  void solve_rates(const St& s) {
+    if constexpr (direct) {  // u = q'
+      for (std::size_t i = 0; i < nq; ++i) qd_[i] = s.u[i];
+    } else {
+      qd_ = apply<true>(s.u);
+      if (status_ != solve_status::ok) qd_.fill(std::numeric_limits<scalar>::quiet_NaN());
+    }
+  }
+  // (W v)_c (+ X_c), skipping the zeros of W and X.
+  template <std::size_t C, bool Offset, class V>
+  scalar apply_row(const V& v) const {
+    scalar sum = scalar(0);
+    if constexpr (Offset && system::offset[C]) sum = kde_x_[C];
+    static_for<nq>([&](auto j) {
+      if constexpr (system::x[C][j] == entry::one)
+        sum += v[j];
+      else if constexpr (system::x[C][j] == entry::other)
+        sum += kde_w_[C][j] * v[j];
+    });
+    return sum;
+  }
+  template <bool Offset, class V>
+  std::array<scalar, nq> apply(const V& v) const {
+    std::array<scalar, nq> out;
+    static_for<nq>([&](auto c) { out[c] = apply_row<c, Offset>(v); });
+    return out;
+  }
+
+  // u' = Y q'' + Y' q' + Z', so q'' = W (u' - Y' q' - Z').
+  template <class Ev>
+  void solve_accelerations(const Ev& ev, const St& s) {
+    if constexpr (Speeds::identity) {
+      for (std::size_t i = 0; i < nq; ++i) qdd_[i] = s.ud[i];
+    } else {
+      std::array<scalar, nq> v;
+      static_for<nq>([&](auto r) {
+        scalar sum = s.ud[r];
+        if constexpr (!is_zero_v<decltype(dt(at_rest(definition<r>())))>)
+          sum -= eval_scalar(dt(at_rest(definition<r>())), ev);
+        static_for<nq>([&](auto c) {
+          constexpr auto yd = dt(diff(definition<r>(), coordinate<c + 1, 1>{}));
+          if constexpr (!is_zero_v<std::remove_cv_t<decltype(yd)>>) sum -= eval_scalar(yd, ev) * qd_[c];
+        });
+        v[r] = sum;
+      });
+      qdd_ = apply<false>(v);
+    }
+  }
+
+  solve_status status_ = solve_status::ok;
+  std::array<scalar, nq> qd_{};
+  std::array<scalar, nq> qdd_{};
+  table<scalar, nq, nq> kde_w_;  // W where its structure does not fix it, row after row
+  std::array<scalar, nq> kde_x_;
+};
+
+}  // namespace kane::detail

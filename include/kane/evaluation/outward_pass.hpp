@@ -1,0 +1,214 @@
+// The outward pass over a frame tree (seed eq. 5, 8-10, 13): for each frame F
+// of the closure (ancestors first) and its root R, the columns e_F1, e_F2,
+// e_F3, ^R w^F and ^R alpha^F in R's components. For an edge P -> F that
+// turns about k by q: e_Fi = R(k, q) e_Pi, ^R w^F = ^R w^P + q' k,
+// ^R alpha^F = ^R alpha^P + q'' k + q' ^R w^P x k. sin and cos of each
+// coordinate once per state; q' and q'' come from the caller (Rates).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+
+#include <Eigen/Core>
+
+#include "kane/detail/list.hpp"
+#include "kane/detail/tree.hpp"
+#include "kane/detail/trig.hpp"
+#include "kane/detail/v3.hpp"
+#include "kane/frames/frame.hpp"
+#include "kane/frames/orientation.hpp"
+
+namespace kane {
+
+template <class... F>
+struct frames {};
+
+// What the outward pass computes: orientations, + angular velocities, + angular accelerations.
+enum class level { pose, velocity, acceleration };
+
+namespace detail {
+
+template <class L>
+struct step_coordinates;
+template <class... F>
+struct step_coordinates<list<F...>> {
+  template <class X>
+  static constexpr std::size_t index() {
+    if constexpr (std::is_void_v<typename X::tree_parent>)
+      return 0;
+    else
+      return X::step::coordinate::index;
+  }
+  static constexpr auto value = [] {
+    constexpr auto all = unique_indices<index<F>()...>();
+    // drop the 0 that stands for roots
+    constexpr std::size_t n = all.size() > 0 && all[0] == 0 ? all.size() - 1 : all.size();
+    std::array<std::size_t, n> out{};
+    for (std::size_t i = 0; i < n; ++i) out[i] = all[all.size() - n + i];
+    return out;
+  }();
+};
+template <class S, class Closure, level Level>
+class outward_pass {
+ public:
+  using scalar = S;
+  using closure = Closure;
+  static constexpr std::size_t size = detail::size<closure>::value;
+  using matrix3 = Eigen::Matrix<scalar, 3, 3>;
+  using vector3 = Eigen::Matrix<scalar, 3, 1>;
+
+  // Columns e_F1, e_F2, e_F3 in the root's components: (^R P^F)^T.
+  template <class F>
+  Eigen::Map<const matrix3> axes() const {
+    return Eigen::Map<const matrix3>(c_[index<F>()].data());
+  }
+  template <class F>
+  Eigen::Map<const vector3> omega() const {
+    static_assert(
+        Level >= level::velocity,
+        "kane: this evaluator computes no angular velocities; declare it with level::velocity or higher");
+    return Eigen::Map<const vector3>(w_[index<F>()].data());
+  }
+  template <class F>
+  Eigen::Map<const vector3> alpha() const {
+    static_assert(
+        Level >= level::acceleration,
+        "kane: this evaluator computes no angular accelerations; declare it with level::acceleration");
+    return Eigen::Map<const vector3>(a_[index<F>()].data());
+  }
+
+ protected:
+  static constexpr auto cached = step_coordinates<closure>::value;
+  using trig_type = trig<scalar, cached>;
+
+  outward_pass() { init_roots(closure{}); }  // the pass writes every other frame
+
+  // One pass at the levels asked for, frame after frame.
+  template <bool Pose, bool Velocity, bool Acceleration, class Rates>
+  void pass(const trig_type& t, const Rates& rates) {
+    pass_over<Pose, Velocity, Acceleration>(closure{}, t, rates);
+  }
+  // element by element: a wide copy of values just written narrowly would stall
+  void store_trig(const trig_type& t) {
+    for (std::size_t k = 0; k < trig_type::size; ++k) trig_.s[k] = t.s[k], trig_.c[k] = t.c[k];
+  }
+  const trig_type& cached_trig() const { return trig_; }
+
+  template <class F>
+  static constexpr std::size_t index() {
+    static_assert(contains<F, closure>::value,
+                  "kane: this evaluator does not hold the frame; list it (or a frame below it) in "
+                  "evaluator<State, frames<...>>");
+    if constexpr (contains<F, closure>::value)
+      return index_of<F, closure>::value;
+    else
+      return 0;
+  }
+
+  template <class F>
+  static constexpr bool is_edge = !std::is_void_v<typename F::tree_parent>;
+
+  template <class... F>
+  void init_roots(list<F...>) {
+    (
+        [&] {
+          if constexpr (!is_edge<F>)
+            c_[index<F>()] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, w_[index<F>()] = {}, a_[index<F>()] = {};
+        }(),
+        ...);
+  }
+
+  template <bool Pose, bool Velocity, bool Acceleration, class Rates, class... F>
+  void pass_over(list<F...>, const trig_type& t, const Rates& rates) {
+    (
+        [&] {
+          if constexpr (Pose) pose_edge<F>(t);
+          if constexpr (Velocity) velocity_edge<F>(rates);
+          if constexpr (Acceleration) acceleration_edge<F>(rates);
+        }(),
+        ...);
+  }
+
+  using vec3 = v3<scalar>;
+  template <class F>
+  vec3 column(int j) const {
+    return load3(c_[index<F>()].data() + 3 * j);
+  }
+
+  // The axis k of the edge above F, in the root's components (fixed in both frames).
+  template <class F>
+  vec3 edge_axis() const {
+    using K = typename F::step::axis;
+    constexpr int p = unit_axis<K>::principal;
+    if constexpr (p >= 0) {
+      return column<F>(p);
+    } else {
+      constexpr auto k = unit_axis<K>::value;
+      return scalar(k[0]) * column<F>(0) + scalar(k[1]) * column<F>(1) + scalar(k[2]) * column<F>(2);
+    }
+  }
+
+  template <class F>
+  void pose_edge(const trig_type& t) {
+    if constexpr (is_edge<F>) {
+      using P = typename F::tree_parent;
+      using K = typename F::step::axis;
+      constexpr std::size_t q = F::step::coordinate::index;
+      constexpr int p = unit_axis<K>::principal;
+      const scalar c = t.template cos<q>(), s = t.template sin<q>();
+      scalar* cf = c_[index<F>()].data();
+      if constexpr (p >= 0) {
+        constexpr int a = (p + 1) % 3, b = (p + 2) % 3;  // e_Fa = c e_Pa + s e_Pb, e_Fb = c e_Pb - s e_Pa
+        if constexpr (!is_edge<P>) {                     // the parent's axes are the identity
+          c_[index<F>()] = {};
+          cf[3 * p + p] = scalar(1);
+          cf[3 * a + a] = c, cf[3 * a + b] = s;
+          cf[3 * b + a] = -s, cf[3 * b + b] = c;
+        } else {
+          const vec3 ea = column<P>(a), eb = column<P>(b);
+          store3(cf + 3 * p, column<P>(p));
+          store3(cf + 3 * a, c * ea + s * eb);
+          store3(cf + 3 * b, c * eb - s * ea);
+        }
+      } else {  // e_Fj = sum_k (^P P^F)_jk e_Pk
+        const matrix3 e = elementary<scalar, K>(c, s);
+        Eigen::Map<matrix3> m(cf);
+        if constexpr (!is_edge<P>)
+          m = e.transpose();
+        else
+          m.noalias() = axes<P>() * e.transpose();
+      }
+    }
+  }
+
+  template <class F, class Rates>
+  void velocity_edge(const Rates& rates) {
+    if constexpr (is_edge<F>) {
+      constexpr std::size_t q = F::step::coordinate::index;
+      const vec3 wp = load3(w_[index<typename F::tree_parent>()].data());
+      store3(w_[index<F>()].data(), wp + rates.template coordinate_value<q, 1>() * edge_axis<F>());
+    }
+  }
+
+  template <class F, class Rates>
+  void acceleration_edge(const Rates& rates) {
+    if constexpr (is_edge<F>) {
+      constexpr std::size_t q = F::step::coordinate::index;
+      constexpr std::size_t ip = index<typename F::tree_parent>();
+      const vec3 k = edge_axis<F>();
+      const vec3 wp = load3(w_[ip].data()), ap = load3(a_[ip].data());
+      store3(a_[index<F>()].data(), ap + rates.template coordinate_value<q, 2>() * k +
+                                        rates.template coordinate_value<q, 1>() * cross3(wp, k));
+    }
+  }
+
+  trig_type trig_;
+  std::array<std::array<scalar, 9>, size> c_;  // e_F1, e_F2, e_F3 in R, column after column
+  std::array<std::array<scalar, 3>, size> w_;
+  std::array<std::array<scalar, 3>, size> a_;
+};
+
+}  // namespace detail
+
+}  // namespace kane

@@ -1,0 +1,6 @@
+// Expressions: scalars in q, q', u, t and parameters; vectors as sums of
+// scalars times unit vectors of frames, with cross and dot products (seed eq. 2).
+#pragma once
+
+#include "kane/expressions/expr.hpp"
+#include "kane/expressions/vector.hpp"

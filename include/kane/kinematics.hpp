@@ -1,0 +1,7 @@
+// Kinematics (seed eq. 6-15): derivatives in a frame, angular velocities and
+// accelerations with the addition theorem, points, velocities and accelerations.
+#pragma once
+
+#include "kane/kinematics/angular_velocity.hpp"
+#include "kane/kinematics/derivative.hpp"
+#include "kane/kinematics/point.hpp"

@@ -1,0 +1,120 @@
+// Holonomic constraints (seed eq. 16) and nonholonomic constraints (eq. 20-22).
+//
+//   kane::configuration<Particles, RigidBodies, f1, ..., fM>
+//       f_k(q, t) = 0; n = 3 Particles + 6 RigidBodies - M at compile time.
+//   kane::nonholonomic<Speeds, kane::dependent<4, 5>, c1, c2>
+//       c_k linear in the speeds, c_k = 0 (m of them for m dependent speeds);
+//       at a state (evaluation/tables.hpp): u_dep = A u_ind + B, and the
+//       nonholonomic partial velocities v~_s = v_s + sum_r v_r A_rs with
+//       remainder v~_t = v_t + sum_r v_r B_r.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <tuple>
+#include <utility>
+
+#include "kane/detail/structure.hpp"
+#include "kane/kinematics/derivative.hpp"
+#include "kane/speeds/generalized_speeds.hpp"
+#include "kane/speeds/partial_velocity.hpp"
+
+namespace kane {
+
+template <std::size_t Particles, std::size_t RigidBodies, auto... F>
+struct configuration {
+  static_assert((ScalarExpr<decltype(F)> && ...),
+                "kane: configuration constraints are scalar expressions f(q, t)");
+  static constexpr std::size_t constraints = sizeof...(F);
+  static_assert(3 * Particles + 6 * RigidBodies >= constraints,
+                "kane: more holonomic constraints than coordinates (3 per particle, 6 per rigid body)");
+  // Generalized coordinates needed: n = 3v - M with 6 per rigid body (eq. 16).
+  static constexpr std::size_t n = 3 * Particles + 6 * RigidBodies - constraints;
+  static constexpr std::tuple<decltype(F)...> equations{F...};
+  // d f_k / dt = 0: the velocity constraint of f_k.
+  template <std::size_t K>
+  static constexpr auto velocity_constraint() {
+    return dt(std::get<K>(equations));
+  }
+};
+
+template <std::size_t... R>
+struct dependent {};
+
+template <SpeedSet Sp, class Dependent, auto... C>
+struct nonholonomic;
+
+template <SpeedSet Sp, std::size_t... D, auto... C>
+struct nonholonomic<Sp, dependent<D...>, C...> {
+  using speed_set = Sp;
+  static constexpr std::size_t n = Sp::n;
+  static constexpr std::size_t m = sizeof...(D);
+  static_assert(sizeof...(C) == m,
+                "kane: m dependent speeds need m constraint equations; the counts in "
+                "nonholonomic<Speeds, dependent<...>, c...> differ");
+  static_assert(((D >= 1 && D <= n) && ...),
+                "kane: the dependent speeds must be speeds of the system (u_1 .. u_n)");
+  static_assert(m < n, "kane: at least one speed must stay independent");
+  static constexpr std::size_t p = n - m;  // degrees of freedom
+  static constexpr std::array<std::size_t, m> dependents{D...};
+  static constexpr std::array<std::size_t, p> independents = [] {
+    std::array<std::size_t, p> r{};
+    std::size_t k = 0;
+    for (std::size_t i = 1; i <= n; ++i) {
+      bool dep = false;
+      for (std::size_t j : dependents) dep = dep || j == i;
+      if (!dep && k < p) r[k++] = i;
+    }
+    return r;
+  }();
+  static_assert(
+      [] {
+        for (std::size_t i = 0; i < m; ++i)
+          for (std::size_t j = 0; j < i; ++j)
+            if (dependents[i] == dependents[j]) return false;
+        return true;
+      }(),
+      "kane: a dependent speed is named twice");
+  static constexpr std::tuple<decltype(C)...> equations{C...};
+};
+
+namespace detail {
+// The constraints M u + c0 = 0 as a structured solve (evaluation/block_solve.hpp) of the
+// dependent block for [A | B] = -M_dep^-1 [M_ind | c0].
+template <class NH>
+struct constraint_system {
+  using Sp = typename NH::speed_set;
+  static constexpr std::size_t n = NH::m, p = NH::p, k = p + 1;
+  template <std::size_t K, std::size_t R>  // the coefficient of u_R in c_K
+  static constexpr auto coefficient() {
+    return partial_velocity<Sp>(std::get<K>(NH::equations), speed<R>{});
+  }
+  template <std::size_t K>
+  static constexpr auto rest() {
+    return velocity_remainder<Sp>(std::get<K>(NH::equations));
+  }
+  template <std::size_t K, std::size_t J>  // column J of [M_ind | c0]
+  static constexpr auto right() {
+    if constexpr (J < p)
+      return coefficient<K, NH::independents[J]>();
+    else
+      return rest<K>();
+  }
+  static constexpr pattern<n, n> m = []<std::size_t... I>(std::index_sequence<I...>) {
+    pattern<n, n> out{};
+    ((out[I / n][I % n] = entry_of<decltype(coefficient<I / n, NH::dependents[I % n]>())>()), ...);
+    return out;
+  }
+  (std::make_index_sequence<n * n>{});
+  static constexpr pattern<n, k> r = []<std::size_t... I>(std::index_sequence<I...>) {
+    pattern<n, k> out{};
+    ((out[I / k][I % k] = entry_of<decltype(right<I / k, I % k>())>()), ...);
+    return out;
+  }
+  (std::make_index_sequence<n * k>{});
+  static constexpr block_form<n> form = blocks_of(m);
+  static constexpr pattern<n, k> x = solution_pattern(m, form, r);
+};
+}  // namespace detail
+
+}  // namespace kane

@@ -1,0 +1,196 @@
+// Generalized speeds u_r = sum_s Y_rs(q, t) q_s' + Z_r(q, t) (seed eq. 17).
+//
+//   kane::qdot_speeds<6>                       u_r = q_r'
+//   kane::speeds<dot(w, e<L, 1>), ...>         any n expressions linear in q'
+//   kane::angular_velocity_speeds<N, R, L>     u_i = ^N w^R . l_i
+//
+// Y_rs = du_r/dq_s' and Z_r = u_r at q' = 0 are built at compile time. The
+// evaluator solves the kinematic differential equations at each state:
+// q' = W u + X with W = Y^-1, X = -Y^-1 Z, and q'' = W (u' - Y' q' - Z').
+#pragma once
+
+#include <cstddef>
+#include <tuple>
+#include <utility>
+
+#include "kane/detail/structure.hpp"
+#include "kane/expressions/expr.hpp"
+#include "kane/expressions/vector.hpp"
+#include "kane/kinematics/angular_velocity.hpp"
+#include "kane/kinematics/derivative.hpp"
+
+namespace kane {
+
+namespace detail {
+struct speed_set_tag {};
+}  // namespace detail
+
+template <class T>
+concept SpeedSet = std::derived_from<T, detail::speed_set_tag>;
+
+// u_r = q_r', r = 1..N.
+template <std::size_t N>
+struct qdot_speeds : detail::speed_set_tag {
+  static constexpr std::size_t n = N;
+  static constexpr bool identity = true;
+};
+
+// u_r = U_r, r = 1..n: expressions in q, q' and t, linear in q'.
+template <auto... U>
+struct speeds : detail::speed_set_tag {
+  static_assert((ScalarExpr<decltype(U)> && ...), "kane: speeds<u1, ..., un> takes scalar expressions");
+  static constexpr std::size_t n = sizeof...(U);
+  static constexpr bool identity = false;
+  static constexpr std::tuple<decltype(U)...> definitions{U...};
+};
+
+// u_1..u_3 = ^A w^B . f_1..3 (the components of ^A w^B in F), then Extra...
+// (for instance kane::dt(kane::q<4>)).
+template <class A, class B, class F, auto... Extra>
+using angular_velocity_speeds =
+    speeds<dot(angular_velocity<A, B>(), e<F, 1>), dot(angular_velocity<A, B>(), e<F, 2>),
+           dot(angular_velocity<A, B>(), e<F, 3>), Extra...>;
+
+// W_SR = dq_S'/du_R and X_S = q_S' at u = 0: numbers the evaluator solves for.
+template <std::size_t S, std::size_t R>
+struct kde_weight : detail::scalar_tag {
+  static constexpr std::size_t row = S, column = R;
+};
+template <std::size_t S>
+struct kde_offset : detail::scalar_tag {
+  static constexpr std::size_t row = S;
+};
+
+namespace detail {
+template <class X>
+struct kde_info : std::false_type {};
+template <std::size_t S, std::size_t R>
+struct kde_info<kde_weight<S, R>> : std::true_type {};
+template <std::size_t S>
+struct kde_info<kde_offset<S>> : std::true_type {};
+
+template <class X>
+struct unary_info;
+template <class Fn, class A>
+struct unary_info<unary<Fn, A>> {
+  using fn = Fn;
+};
+template <class Fn, class A>
+constexpr auto make_unary(A a) {
+  if constexpr (std::is_same_v<Fn, sin_fn>)
+    return sin(a);
+  else if constexpr (std::is_same_v<Fn, cos_fn>)
+    return cos(a);
+  else
+    return sqrt(a);
+}
+
+// Replace q', q'', u, u' by zero (the part of an expression linear in them
+// drops out): x at rest.
+template <class X>
+constexpr auto at_rest(X x) {
+  if constexpr (coordinate_info<X>::value) {
+    if constexpr (X::order == 0)
+      return x;
+    else
+      return zero_t{};
+  } else if constexpr (speed_info<X>::value)
+    return zero_t{};
+  else if constexpr (ScalarExpr<X> &&
+                     (LeafConstant<X> || std::is_same_v<X, time_variable> || kde_info<X>::value))
+    return x;
+  else if constexpr (is_v<X, add> || is_v<X, vsum>)
+    return at_rest(x.l) + at_rest(x.r);
+  else if constexpr (is_v<X, sub> || is_v<X, vdiff>)
+    return at_rest(x.l) - at_rest(x.r);
+  else if constexpr (is_v<X, mul>)
+    return at_rest(x.l) * at_rest(x.r);
+  else if constexpr (is_v<X, quot>)
+    return at_rest(x.l) / at_rest(x.r);
+  else if constexpr (is_v<X, neg>)
+    return -at_rest(x.x);
+  else if constexpr (is_v<X, vneg>)
+    return -at_rest(x.v);
+  else if constexpr (is_v<X, unary>)
+    return make_unary<typename unary_info<X>::fn>(at_rest(x.x));
+  else if constexpr (power_info<X>::value)
+    return pow<power_info<X>::n>(at_rest(x.x));
+  else if constexpr (is_v<X, call>)
+    return invoke(x.f, at_rest(x.x));
+  else if constexpr (is_v<X, scaled>)
+    return at_rest(x.s) * at_rest(x.v);
+  else if constexpr (is_v<X, vcross>)
+    return derived_cross(at_rest(x.l), at_rest(x.r));
+  else if constexpr (is_v<X, vdot>)
+    return derived_dot(at_rest(x.l), at_rest(x.r));
+  else if constexpr (is_unit<X>::value || is_zero_vector_v<X>)
+    return x;
+  else if constexpr (is_v<X, omega> || is_v<X, angular_velocity_of>)
+    return zero_vector{};  // linear in q' with no explicit time
+  else if constexpr (is_v<X, alpha> || is_v<X, angular_acceleration_of>)
+    static_assert(!sizeof(X), "kane: an angular acceleration is not linear in the speeds");
+  else
+    return at_rest(x.v);  // a kinematic quantity: its expression
+}
+
+// The kind of an entry of a matrix whose entries are expressions.
+template <class X>
+constexpr entry entry_of() {
+  return is_zero_v<X> ? entry::zero : is_one_v<X> ? entry::one : entry::other;
+}
+
+// The kinematic differential equations of a speed set as a structured solve
+// (evaluation/block_solve.hpp): Y = du/dq' (n x n), W = Y^-1 with its pattern x, and
+// the patterns of Z = u at q' = 0 and of X = -W Z.
+template <class Sp>
+struct kde_system {
+  static constexpr std::size_t n = Sp::n, k = n;
+  template <std::size_t R, std::size_t C>
+  using y_type = decltype(diff(std::get<R>(Sp::definitions), coordinate<C + 1, 1>{}));
+  template <std::size_t R>
+  using z_type = decltype(at_rest(std::get<R>(Sp::definitions)));
+  static constexpr pattern<n, n> m = []<std::size_t... I>(std::index_sequence<I...>) {
+    pattern<n, n> p{};
+    ((p[I / n][I % n] = entry_of<y_type<I / n, I % n>>()), ...);
+    return p;
+  }
+  (std::make_index_sequence<n * n>{});
+  static constexpr pattern<n, n> r = identity_pattern<n>();
+  static constexpr block_form<n> form = blocks_of(m);
+  static constexpr pattern<n, n> x = solution_pattern(m, form, r);
+  static constexpr std::array<entry, n> z = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::array<entry, n>{entry_of<z_type<I>>()...};
+  }
+  (std::make_index_sequence<n>{});
+  static constexpr std::array<bool, n> offset = [] {
+    std::array<bool, n> o{};
+    for (std::size_t c = 0; c < n; ++c)
+      for (std::size_t j = 0; j < n; ++j) o[c] = o[c] || (x[c][j] != entry::zero && z[j] != entry::zero);
+    return o;
+  }();
+};
+
+// dq_S'/du_R and q_S' at u = 0 as nodes: type-level zero and one where the
+// structure of Y decides them, numbers of the evaluator otherwise.
+template <class Sp, std::size_t S, std::size_t R>
+constexpr auto weight() {
+  if constexpr (Sp::identity)
+    return std::conditional_t<S == R, one_t, zero_t>{};
+  else if constexpr (kde_system<Sp>::x[S - 1][R - 1] == entry::zero)
+    return zero_t{};
+  else if constexpr (kde_system<Sp>::x[S - 1][R - 1] == entry::one)
+    return one_t{};
+  else
+    return kde_weight<S, R>{};
+}
+template <class Sp, std::size_t S>
+constexpr auto offset() {
+  if constexpr (Sp::identity || !kde_system<Sp>::offset[S - 1])
+    return zero_t{};
+  else
+    return kde_offset<S>{};
+}
+
+}  // namespace detail
+
+}  // namespace kane

@@ -1,0 +1,79 @@
+// Partial velocities and partial angular velocities (seed eq. 18-19).
+//
+// A velocity v (or angular velocity w) is linear in the speeds:
+//   v = sum_r v_r u_r + v_t,   v_r = dv/du_r.
+// Symbolic: partial_velocity<Speeds>(v, u<r>) is the type-level d/du_r, built
+// from dv/dq_s' and dq_s'/du_r = W_sr (type-level 0 or 1 for qdot_speeds, a
+// number of the evaluator otherwise); velocity_remainder<Speeds>(v) is v_t.
+// Their numbers at a state: evaluation/tables.hpp.
+#pragma once
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+#include "kane/detail/frame_check.hpp"
+#include "kane/expressions/expr.hpp"
+#include "kane/expressions/vector.hpp"
+#include "kane/kinematics/derivative.hpp"
+#include "kane/speeds/generalized_speeds.hpp"
+
+namespace kane {
+
+namespace detail {
+
+// dx/dLeaf for a scalar or a vector (a derivative by q', u or t is the same in every frame).
+template <class Leaf, class X>
+constexpr auto d(X x) {
+  if constexpr (ScalarExpr<X>)
+    return partial<Leaf>(x);
+  else
+    return partial_in<root_frame_of_t<X>, Leaf>(x);
+}
+
+template <class Sp, std::size_t R, class X, std::size_t... S>
+constexpr auto partial_u(X x, std::index_sequence<S...>) {
+  return (d<speed<R>>(x) + ... + (d<coordinate<S + 1, 1>>(x) * weight<Sp, S + 1, R>()));
+}
+template <class Sp, class X, std::size_t... S>
+constexpr auto remainder_u(X x, std::index_sequence<S...>) {
+  if constexpr (Sp::identity)
+    return at_rest(x);
+  else
+    return (at_rest(x) + ... + (d<coordinate<S + 1, 1>>(x) * offset<Sp, S + 1>()));
+}
+
+// v_R as an expression: dx/du_R + dx/dq_R' with u = q', else partial_u.
+template <class Sp, std::size_t R, class X>
+constexpr auto column(X x) {
+  if constexpr (Sp::identity)
+    return d<speed<R>>(x) + d<coordinate<R, 1>>(x);
+  else
+    return partial_u<Sp, R>(x, std::make_index_sequence<Sp::n>{});
+}
+
+template <class T>
+struct is_speed_tag : std::false_type {};
+template <std::size_t I>
+struct is_speed_tag<speed<I, 0>> : std::true_type {};
+
+}  // namespace detail
+
+// v_R = dv/du_R (eq. 18-19), for v a velocity, angular velocity or constraint.
+template <SpeedSet Sp, class X, std::size_t R>
+requires(ScalarExpr<X> || VectorExpr<X>) constexpr auto partial_velocity(X x, speed<R, 0>) {
+  static_assert(R >= 1 && R <= Sp::n, "kane: u_R is not a generalized speed of this system (u_1 .. u_n)");
+  return detail::partial_u<Sp, R>(x, std::make_index_sequence<Sp::n>{});
+}
+// clang-format off
+template <SpeedSet Sp, class X, class Leaf> requires(!detail::is_speed_tag<Leaf>::value)
+error::partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r<Leaf> partial_velocity(X x, Leaf) = delete;
+// clang-format on
+
+// v_t = v - sum_r v_r u_r.
+template <SpeedSet Sp, class X>
+requires(ScalarExpr<X> || VectorExpr<X>) constexpr auto velocity_remainder(X x) {
+  return detail::remainder_u<Sp>(x, std::make_index_sequence<Sp::n>{});
+}
+
+}  // namespace kane
