@@ -177,8 +177,10 @@ void print_expr(std::ostream& os, const X& x) {
   } else if constexpr (is_v<X, angular_velocity_of> || is_v<X, angular_acceleration_of>) {
     os << '^' << frame_name<typename X::observer>() << (is_v<X, angular_velocity_of> ? " w^" : " alpha^")
        << frame_name<typename X::body>();
-  } else
-    print_expr(os, x.v);  // a kinematic quantity: its expression
+  } else if constexpr (Quantity<X>)
+    print_expr(os, x.v);
+  else
+    static_assert(!sizeof(X), "kane: printing of an unknown node");
 }
 
 template <class F>

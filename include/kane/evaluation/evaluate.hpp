@@ -151,8 +151,10 @@ v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev) {
     return load3(ev.template alpha<typename V::frame>().data());
   else if constexpr (is_v<V, angular_velocity_of> || is_v<V, angular_acceleration_of>)
     return eval_vector(expand(v), ev);
+  else if constexpr (Quantity<V>)
+    return eval_vector(v.v, ev);
   else
-    return eval_vector(v.v, ev);  // a kinematic quantity: its expression
+    static_assert(!sizeof(V), "kane: evaluation of an unknown vector node");
 }
 
 // ^A components of the root components r.

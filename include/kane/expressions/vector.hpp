@@ -22,6 +22,14 @@ struct vector_tag {};
 template <class T>
 concept VectorExpr = std::derived_from<T, detail::vector_tag>;
 
+namespace detail {
+struct quantity_tag : vector_tag {};
+}  // namespace detail
+
+// A named kinematic quantity (^A v^P, ^A a^P): a node that stands for its expression, member v.
+template <class T>
+concept Quantity = std::derived_from<T, detail::quantity_tag>;
+
 // e_Fi, i = 1, 2, 3.
 template <class F, int I>
 struct unit : detail::vector_tag {

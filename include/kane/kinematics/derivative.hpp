@@ -262,8 +262,10 @@ constexpr auto ddt_in(V v) {
     static_assert(
         !sizeof(V),
         "kane: the time derivative of an angular acceleration (a third derivative) is not available");
+  else if constexpr (Quantity<V>)
+    return ddt_in<A>(v.v);
   else
-    return ddt_in<A>(v.v);  // a kinematic quantity: its expression
+    static_assert(!sizeof(V), "kane: dt of an unknown vector node");
 }
 
 // ^A d v/d x for a leaf x (eq. 6 for x = q_i).
@@ -308,8 +310,10 @@ constexpr auto partial_in(V v) {
     static_assert(!sizeof(V),
                   "kane: partial derivatives apply to vectors of unit vectors and scalars (positions); "
                   "an angular velocity or acceleration node has none here");
+  else if constexpr (Quantity<V>)
+    return partial_in<A, Leaf>(v.v);
   else
-    return partial_in<A, Leaf>(v.v);  // a kinematic quantity: its expression
+    static_assert(!sizeof(V), "kane: diff of an unknown vector node");
 }
 
 }  // namespace detail

@@ -46,13 +46,13 @@ struct point : detail::point_tag {
 
 // ^A v^P and ^A a^P: a vector expression that remembers its frame and point.
 template <class A, class P, class V>
-struct velocity_of : detail::vector_tag {
+struct velocity_of : detail::quantity_tag {
   using observer = A;
   [[no_unique_address]] V v;
   constexpr explicit velocity_of(V x) : v(x) {}
 };
 template <class A, class P, class V>
-struct acceleration_of : detail::vector_tag {
+struct acceleration_of : detail::quantity_tag {
   using observer = A;
   [[no_unique_address]] V v;
   constexpr explicit acceleration_of(V x) : v(x) {}

@@ -129,8 +129,10 @@ constexpr auto at_rest(X x) {
     return zero_vector{};  // linear in q' with no explicit time
   else if constexpr (is_v<X, alpha> || is_v<X, angular_acceleration_of>)
     static_assert(!sizeof(X), "kane: an angular acceleration is not linear in the speeds");
+  else if constexpr (Quantity<X>)
+    return at_rest(x.v);
   else
-    return at_rest(x.v);  // a kinematic quantity: its expression
+    static_assert(!sizeof(X), "kane: at_rest of an unknown node");
 }
 
 // The kind of an entry of a matrix whose entries are expressions.

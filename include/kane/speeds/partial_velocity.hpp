@@ -52,11 +52,6 @@ constexpr auto column(X x) {
     return partial_u<Sp, R>(x, std::make_index_sequence<Sp::n>{});
 }
 
-template <class T>
-struct is_speed_tag : std::false_type {};
-template <std::size_t I>
-struct is_speed_tag<speed<I, 0>> : std::true_type {};
-
 }  // namespace detail
 
 // v_R = dv/du_R (eq. 18-19), for v a velocity, angular velocity or constraint.
@@ -66,7 +61,7 @@ requires(ScalarExpr<X> || VectorExpr<X>) constexpr auto partial_velocity(X x, sp
   return detail::partial_u<Sp, R>(x, std::make_index_sequence<Sp::n>{});
 }
 // clang-format off
-template <SpeedSet Sp, class X, class Leaf> requires(!detail::is_speed_tag<Leaf>::value)
+template <SpeedSet Sp, class X, class Leaf> requires(!Speed<Leaf>)
 error::partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r<Leaf> partial_velocity(X x, Leaf) = delete;
 // clang-format on
 
