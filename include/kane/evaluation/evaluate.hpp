@@ -28,11 +28,11 @@ struct is_evaluator : std::false_type {};
 template <class Ev, class V>
 v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev);
 
-// e_Ri of a root frame R: components known at compile time.
+// e_Ri of a root frame R (or a unit vector equal to one): components known at compile time.
 template <class V>
 struct root_unit : std::false_type {};
 template <class F, int I>
-struct root_unit<unit<F, I>> : std::bool_constant<std::is_void_v<typename F::tree_parent>> {};
+struct root_unit<unit<F, I>> : std::bool_constant<std::is_void_v<typename lifted_t<F, I>::tree_parent>> {};
 template <int I, class S>
 S component(const v3<S>& a) {
   return I == 1 ? a.x : I == 2 ? a.y : a.z;
@@ -124,7 +124,7 @@ v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev) {
   if constexpr (is_zero_vector_v<V>)
     return {S(0), S(0), S(0)};
   else if constexpr (is_unit<V>::value) {
-    using F = typename V::frame;
+    using F = lifted_t<typename V::frame, V::index>;  // the highest frame it is a unit vector of
     if constexpr (std::is_void_v<typename F::tree_parent>)
       return {S(V::index == 1), S(V::index == 2), S(V::index == 3)};
     else
