@@ -7,6 +7,8 @@
 // case speed_count: kane: a speed set defines as many speeds as the state has coordinates
 // case too_many_holonomic: kane: more holonomic constraints than coordinates
 // case constraints_other_speeds: kane: the constraints and the evaluator use different speed sets
+// case speeds_miss_a_rate: kane: these speeds do not determine q'
+// case dependent_not_in_constraints: kane: the constraints do not determine the dependent speeds
 #include <kane/kane.hpp>
 
 using q1 = kane::coordinate<1>;
@@ -56,5 +58,22 @@ double use() {
   using nh2 = kane::nonholonomic<kane::qdot_speeds<2>, kane::dependent<2>, c1>;
   x += kane::solve_constraints<nh2>(ev).A(0, 0);
 #endif
+  // q1' in both speeds and q2' in none: Y is singular at every state; the fix is a speed with q2'
+#ifdef KANE_CASE_speeds_miss_a_rate
+  using bad = kane::speeds<kane::dt(kane::q<1>), 2.0 * kane::dt(kane::q<1>)>;
+#else
+  using bad = kane::speeds<kane::dt(kane::q<1>), kane::dt(kane::q<2>)>;
+#endif
+  kane::evaluator<St, kane::frames<B>, kane::level::velocity, bad> evb;
+  evb.update(s);
+  // c1 = ^N w^B . n3 = q1' does not involve u2, so u2 cannot be its dependent speed; u1 can
+#ifdef KANE_CASE_dependent_not_in_constraints
+  using nh3 = kane::nonholonomic<kane::qdot_speeds<2>, kane::dependent<2>, c1>;
+#else
+  using nh3 = kane::nonholonomic<kane::qdot_speeds<2>, kane::dependent<1>, c1>;
+#endif
+  kane::evaluator<St, kane::frames<B>, kane::level::velocity, kane::qdot_speeds<2>> evq;
+  evq.update(s);
+  x += kane::solve_constraints<nh3>(evq).A(0, 0) + evb.coordinate_value<1, 1>();
   return x;
 }
