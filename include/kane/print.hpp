@@ -144,9 +144,7 @@ void print_expr(std::ostream& os, const X& x) {
     os << '-';
     print_operand(os, x.v, 2);
   } else if constexpr (is_v<X, unary>) {
-    os << (std::is_same_v<X, unary<sin_fn, decltype(x.x)>>   ? "sin("
-           : std::is_same_v<X, unary<cos_fn, decltype(x.x)>> ? "cos("
-                                                             : "sqrt(");
+    os << unary_info<X>::fn::name << '(';
     print_expr(os, x.x);
     os << ')';
   } else if constexpr (power_info<X>::value) {

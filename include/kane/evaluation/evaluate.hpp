@@ -88,16 +88,8 @@ typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
         return ev.template sin_q<Arg::index>();
       else
         return ev.template cos_q<Arg::index>();
-    } else {
-      using std::cos, std::sin, std::sqrt;
-      const S a = eval_scalar(x.x, ev);
-      if constexpr (std::is_same_v<Fn, sin_fn>)
-        return sin(a);
-      else if constexpr (std::is_same_v<Fn, cos_fn>)
-        return cos(a);
-      else
-        return sqrt(a);
-    }
+    } else
+      return Fn::apply(eval_scalar(x.x, ev));
   } else if constexpr (power_info<X>::value) {
     const S a = eval_scalar(x.x, ev);
     constexpr int n = power_info<X>::n;

@@ -10,6 +10,7 @@
 // products when the expression is built, so derivatives carry no dead terms.
 #pragma once
 
+#include <cmath>
 #include <concepts>
 #include <cstdint>
 #include <numeric>
@@ -78,15 +79,62 @@ struct neg : detail::scalar_tag {
   constexpr explicit neg(X a) : x(a) {}
 };
 
-// Elementary functions: sin, cos, sqrt as tags of one node.
-struct sin_fn {};
-struct cos_fn {};
-struct sqrt_fn {};
+// Elementary functions: sin, cos, sqrt as tags of one node. Each tag says how
+// it prints, applies (to numbers or, by ADL, to expressions) and differentiates.
+template <ScalarExpr X>
+constexpr auto sin(X x);
+template <ScalarExpr X>
+constexpr auto cos(X x);
+template <ScalarExpr X>
+constexpr auto sqrt(X x);
+struct sin_fn {
+  static constexpr const char* name = "sin";
+  template <class T>
+  static constexpr auto apply(T x) {
+    using std::sin;
+    return sin(x);
+  }
+  template <class X>
+  static constexpr auto derivative(X x) {
+    return cos(x);
+  }
+};
+struct cos_fn {
+  static constexpr const char* name = "cos";
+  template <class T>
+  static constexpr auto apply(T x) {
+    using std::cos;
+    return cos(x);
+  }
+  template <class X>
+  static constexpr auto derivative(X x) {
+    return -sin(x);
+  }
+};
+struct sqrt_fn {
+  static constexpr const char* name = "sqrt";
+  template <class T>
+  static constexpr auto apply(T x) {
+    using std::sqrt;
+    return sqrt(x);
+  }
+  template <class X>
+  static constexpr auto derivative(X x);  // 1 / (2 sqrt(x)), below
+};
 template <class Fn, class X>
 struct unary : detail::scalar_tag {
   [[no_unique_address]] X x;
   constexpr explicit unary(X a) : x(a) {}
 };
+namespace detail {
+template <class X>
+struct unary_info;
+template <class Fn, class A>
+struct unary_info<unary<Fn, A>> {
+  using fn = Fn;
+};
+}  // namespace detail
+
 // x^N for an integer N.
 template <class X, int N>
 struct power : detail::scalar_tag {
@@ -267,6 +315,10 @@ constexpr auto cos(X x) {
 template <ScalarExpr X>
 constexpr auto sqrt(X x) {
   return unary<sqrt_fn, X>(x);
+}
+template <class X>
+constexpr auto sqrt_fn::derivative(X x) {
+  return constant<1, 2>{} / sqrt(x);
 }
 
 // x^N; x^0 = 1, x^1 = x.

@@ -221,12 +221,8 @@ constexpr auto partial(X x) {
 // f'(x) of an elementary or opaque function node f(x).
 template <class X>
 constexpr auto outer_derivative(X x) {
-  if constexpr (std::is_same_v<X, unary<sin_fn, decltype(x.x)>>)
-    return cos(x.x);
-  else if constexpr (std::is_same_v<X, unary<cos_fn, decltype(x.x)>>)
-    return -sin(x.x);
-  else if constexpr (std::is_same_v<X, unary<sqrt_fn, decltype(x.x)>>)
-    return constant<1, 2>{} / x;
+  if constexpr (is_v<X, unary>)
+    return unary_info<X>::fn::derivative(x.x);
   else if constexpr (power_info<X>::value)
     return constant<power_info<X>::n>{} * pow<power_info<X>::n - 1>(x.x);
   else

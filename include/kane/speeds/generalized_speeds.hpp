@@ -69,22 +69,6 @@ struct kde_info<kde_weight<S, R>> : std::true_type {};
 template <std::size_t S>
 struct kde_info<kde_offset<S>> : std::true_type {};
 
-template <class X>
-struct unary_info;
-template <class Fn, class A>
-struct unary_info<unary<Fn, A>> {
-  using fn = Fn;
-};
-template <class Fn, class A>
-constexpr auto make_unary(A a) {
-  if constexpr (std::is_same_v<Fn, sin_fn>)
-    return sin(a);
-  else if constexpr (std::is_same_v<Fn, cos_fn>)
-    return cos(a);
-  else
-    return sqrt(a);
-}
-
 // Replace q', q'', u, u' by zero (the part of an expression linear in them
 // drops out): x at rest.
 template <class X>
@@ -112,7 +96,7 @@ constexpr auto at_rest(X x) {
   else if constexpr (is_v<X, vneg>)
     return -at_rest(x.v);
   else if constexpr (is_v<X, unary>)
-    return make_unary<typename unary_info<X>::fn>(at_rest(x.x));
+    return unary_info<X>::fn::apply(at_rest(x.x));
   else if constexpr (power_info<X>::value)
     return pow<power_info<X>::n>(at_rest(x.x));
   else if constexpr (is_v<X, call>)
