@@ -94,7 +94,7 @@ double use() {
   x += kane::express<N>(kane::angular_acceleration<N, B>(), ev_velocity)[0];
 #endif
 #ifdef KANE_CASE_frame_not_held
-  x += kane::express<N>(kane::e<C, 1>, ev)[0];
+  x += kane::express<N>(kane::e<C, 2>, ev)[0];  // e_C1 = e_B1 would be read from B
 #endif
 #ifdef KANE_CASE_third_derivative_in_state
   x += s[kane::dt(kane::dt(kane::dt(kane::q<1>)))];

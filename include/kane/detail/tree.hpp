@@ -45,4 +45,15 @@ struct closure {
       typename unique<typename concat<typename reverse<typename ancestors<F>::type>::type...>::type>::type;
 };
 
+// The path from A to B, required to exist: the one check that two frames share a tree.
+template <class A, class B>
+struct joined_frames : path<A, B> {
+  static_assert(path<A, B>::joined,
+                "kane: no path of the frame tree joins these two frames (their roots differ); "
+                "relate them through a common root frame");
+};
+// The same check where a path is walked for direction cosines (frames/express.hpp).
+template <class A, class B>
+struct joined_path : joined_frames<A, B> {};
+
 }  // namespace kane::detail

@@ -15,13 +15,6 @@ namespace kane {
 
 namespace detail {
 
-template <class A, class B>
-struct joined_path : path<A, B> {
-  static_assert(path<A, B>::joined,
-                "kane: no path of the frame tree joins these two frames (their roots differ); "
-                "relate them through a common root frame");
-};
-
 // The coordinates of the edges on a path, each once.
 template <class Up, class Down>
 struct path_coordinates;

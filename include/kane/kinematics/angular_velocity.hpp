@@ -28,13 +28,6 @@ struct angular_acceleration_of : detail::vector_tag {
 };
 
 namespace detail {
-template <class A, class B>
-struct joined_frames {
-  static_assert(path<A, B>::joined,
-                "kane: no path of the frame tree joins these two frames (their roots differ); "
-                "relate them through a common root frame");
-  static constexpr bool value = path<A, B>::joined;
-};
 template <class F>
 inline constexpr bool is_root_v = std::is_void_v<typename F::tree_parent>;
 
@@ -67,7 +60,7 @@ constexpr auto expand(angular_acceleration_of<A, B>) {
 // ^A w^B; the zero vector for A = B.
 template <Frame A, Frame B>
 constexpr auto angular_velocity() {
-  static_assert(detail::joined_frames<A, B>::value);
+  static_assert(detail::joined_frames<A, B>::joined);
   if constexpr (std::is_same_v<A, B>)
     return zero_vector{};
   else
@@ -76,7 +69,7 @@ constexpr auto angular_velocity() {
 // ^A alpha^B; the zero vector for A = B.
 template <Frame A, Frame B>
 constexpr auto angular_acceleration() {
-  static_assert(detail::joined_frames<A, B>::value);
+  static_assert(detail::joined_frames<A, B>::joined);
   if constexpr (std::is_same_v<A, B>)
     return zero_vector{};
   else

@@ -248,9 +248,7 @@ constexpr auto ddt_in(V v) {
     return derived_cross(ddt_in<A>(v.l), v.r) + derived_cross(v.l, ddt_in<A>(v.r));
   else if constexpr (is_v<V, omega>) {
     // ^A d(^R w^F)/dt = ^R alpha^F - ^R w^A x ^R w^F
-    static_assert(std::is_same_v<root_of<A>, root_of<typename V::frame>>,
-                  "kane: no path of the frame tree joins these two frames (their roots differ); "
-                  "relate them through a common root frame");
+    static_assert(joined_frames<A, typename V::frame>::joined);
     return alpha<typename V::frame>{} - derived_cross(omega_of<A>(), v);
   } else if constexpr (is_v<V, angular_velocity_of> || is_v<V, angular_acceleration_of>)
     return ddt_in<A>(expand(v));
@@ -272,10 +270,7 @@ constexpr auto partial_in(V v) {
   else if constexpr (is_unit<V>::value) {
     if constexpr (coordinate_info<Leaf>::value && Leaf::order == 0) {
       using F = typename V::frame;
-      using p = path<A, F>;
-      static_assert(p::joined,
-                    "kane: no path of the frame tree joins these two frames (their roots differ); "
-                    "relate them through a common root frame");
+      using p = joined_frames<A, F>;
       return derived_cross(partial_omega<Leaf::index>(typename p::up{}, typename p::down{}), v);
     } else
       return zero_vector{};
