@@ -2,5 +2,7 @@
 // scalars times unit vectors of frames, with cross and dot products (seed eq. 2).
 #pragma once
 
+#include "kane/expressions/derived_products.hpp"
+#include "kane/expressions/direction_cosines.hpp"
 #include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"

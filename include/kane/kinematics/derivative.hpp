@@ -15,6 +15,7 @@
 
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/tree.hpp"
+#include "kane/expressions/derived_products.hpp"
 #include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/angular_velocity.hpp"

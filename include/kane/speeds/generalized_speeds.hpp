@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "kane/detail/structure.hpp"
+#include "kane/expressions/derived_products.hpp"
 #include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/angular_velocity.hpp"
