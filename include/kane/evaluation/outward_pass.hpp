@@ -140,9 +140,12 @@ class outward_pass {
   template <class F>
   vec3 edge_axis() const {
     using K = typename F::step::axis;
+    using P = typename F::tree_parent;
     constexpr int p = unit_axis<K>::principal;
-    if constexpr (p >= 0) {
-      return column<F>(p);
+    if constexpr (p >= 0 && !is_edge<P>) {  // a root's axis: constant
+      return {scalar(p == 0), scalar(p == 1), scalar(p == 2)};
+    } else if constexpr (p >= 0) {
+      return column<P>(p);  // the parent's: known before F's own axes
     } else {
       constexpr auto k = unit_axis<K>::value;
       return scalar(k[0]) * column<F>(0) + scalar(k[1]) * column<F>(1) + scalar(k[2]) * column<F>(2);
