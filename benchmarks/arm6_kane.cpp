@@ -1,31 +1,10 @@
 // kane's implementation of the 6-revolute chain (arm6.hpp). The evaluators
 // live as long as the program, as a controller's would.
-#include <kane/kane.hpp>
-
+#include "../examples/models/arm6.hpp"
 #include "arm6.hpp"
 
 namespace {
-template <std::size_t I>
-using q = kane::coordinate<I>;
-using kane::axis::x;
-using kane::axis::y;
-using kane::axis::z;
-
-struct N : kane::root_frame {};
-struct B1 : kane::frame<N, kane::simple<z, q<1>>> {};
-struct B2 : kane::frame<B1, kane::simple<y, q<2>>> {};
-struct B3 : kane::frame<B2, kane::simple<y, q<3>>> {};
-struct B4 : kane::frame<B3, kane::simple<x, q<4>>> {};
-struct B5 : kane::frame<B4, kane::simple<y, q<5>>> {};
-struct B6 : kane::frame<B5, kane::simple<x, q<6>>> {};
-
-struct O : kane::origin<N> {};
-struct J2 : kane::point<O, 0.3 * kane::e<B1, 1>> {};
-struct J3 : kane::point<J2, 0.25 * kane::e<B2, 1>> {};
-struct J4 : kane::point<J3, 0.2 * kane::e<B3, 1>> {};
-struct J5 : kane::point<J4, 0.15 * kane::e<B4, 1>> {};
-struct J6 : kane::point<J5, 0.1 * kane::e<B5, 1>> {};
-struct End : kane::point<J6, 0.05 * kane::e<B6, 1>> {};
+using namespace models::arm6;
 
 using state = kane::state<double, 6>;
 template <kane::level Level>
