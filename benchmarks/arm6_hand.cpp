@@ -1,114 +1,102 @@
-// A hand-written Eigen outward pass for the 6-revolute chain (arm6.hpp):
-// sin/cos once per joint, each rotation applied to two columns only,
-// everything accumulated in one loop; one function per quantity.
-#include <cmath>
-#include <utility>
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>
-
+// The hand-written outward pass for the 6-revolute chain (arm6.hpp), as tight as we can write
+// it: plain doubles (hand.hpp), sin and cos once per joint and all before the arithmetic, joint 1
+// in closed form, every other rotation on two columns, no Eigen. Joint 6 turns about b6 x, along
+// which the end point lies: only the pose needs q6, and the last Jacobian column's v is 0.
 #include "arm6.hpp"
+#include "hand.hpp"
 
 namespace {
+using namespace hand;
 constexpr int axis[6] = {2, 1, 1, 0, 1, 0};
-using V3 = Eigen::Vector3d;
-using M3 = Eigen::Matrix3d;
+struct model {
+  static constexpr int axis(int i) { return ::axis[i]; }
+  static constexpr double length(int i) { return arm6::L[i]; }
+};
 
-// R_child = R_parent Rot(axis k, q): e_a' = c e_a + s e_b, e_b' = c e_b - s e_a.
-template <int k>
-inline void turn(M3& R, double q) {
-  const double c = std::cos(q), s = std::sin(q);
-  constexpr int a = (k + 1) % 3, b = (k + 2) % 3;
-  const V3 ea = R.col(a), eb = R.col(b);
-  R.col(a) = c * ea + s * eb;
-  R.col(b) = c * eb - s * ea;
-}
-// Body(i) for i = 0..5, unrolled so that every axis index is a constant.
+// The outward pass through joints 1 .. 5, then joint 6's axis and link, which need no q6
+// (b6 x = b5 x): body(I, k_I, r_I) for I = 0 .. 5 with r_I = L_I b_I x, joint 1 in closed form.
 template <class Body>
-inline void joints(Body body) {
-  [&]<int... I>(std::integer_sequence<int, I...>) { (body(std::integral_constant<int, I>{}), ...); }
-  (std::make_integer_sequence<int, 6>{});
+inline void without_q6(const arm6::input& in, Body body) {
+  using arm6::L;
+  const trig<5> t(in.q);
+  axes R = about_z(t.c[0], t.s[0]);
+  body(std::integral_constant<int, 0>{}, v3{0, 0, 1}, v3{L[0] * t.c[0], L[0] * t.s[0], 0});
+  joints<1, 5>([&](auto I) {
+    const v3 k = R.e[axis[I]];
+    turn<axis[I]>(R, t.c[I], t.s[I]);
+    body(I, k, L[I] * R.e[0]);
+  });
+  body(std::integral_constant<int, 5>{}, R.e[0], L[5] * R.e[0]);
 }
-void store(const V3& v, double* out) { Eigen::Map<V3>{out} = v; }
 }  // namespace
 
 namespace arm6 {
+// Q1: R turned joint by joint (joint 1 in closed form, then two columns per joint), p summed
+// from each body's first axis; sin and cos of all six joints.
 void hand_q1(const input& in, output& out) {
-  M3 R = M3::Identity();
-  V3 p = V3::Zero();
-  joints([&](auto I) {
-    turn<axis[I]>(R, in.q[I]);
-    p += L[I] * R.col(0);
+  const trig<6> t(in.q);
+  axes R = about_z(t.c[0], t.s[0]);
+  v3 p = {L[0] * t.c[0], L[0] * t.s[0], 0};
+  joints<1, 6>([&](auto I) {
+    turn<axis[I]>(R, t.c[I], t.s[I]);
+    p += L[I] * R.e[0];
   });
-  Eigen::Map<M3>(out.R) = R;
+  for (int j = 0; j < 3; ++j) store(R.e[j], out.R + 3 * j);
   store(p, out.p);
 }
 
+// Q2: w += q'_i k_i and v += w x r_i joint by joint, joint 1 in closed form; no q6.
 void hand_q2(const input& in, output& out) {
-  M3 R = M3::Identity();
-  V3 w = V3::Zero(), v = V3::Zero();
-  joints([&](auto I) {
-    w += in.qd[I] * R.col(axis[I]);
-    turn<axis[I]>(R, in.q[I]);
-    v += w.cross(L[I] * R.col(0));
+  v3 w, v;
+  without_q6(in, [&](auto I, const v3& k, const v3& r) {
+    if constexpr (I == 0) {
+      w = {0, 0, in.qd[0]};
+      v = {-in.qd[0] * r.y, in.qd[0] * r.x, 0};
+    } else {
+      w += in.qd[I] * k;
+      v += cross(w, r);
+    }
   });
   store(w, out.w);
   store(v, out.v);
 }
 
+// Q3: the axes k_i and links r_i of the pass, then k_i x (r_i + ... + r_6) summed backwards;
+// no q6, and the last column's v is 0 (k_6 is along r_6).
 void hand_q3(const input& in, output& out) {
-  M3 R = M3::Identity();
-  V3 p = V3::Zero();
-  Eigen::Matrix<double, 6, 6> J;  // in locals: stores through out could alias in
-  joints([&](auto I) {
-    J.col(I).template head<3>() = R.col(axis[I]);
-    J.col(I).template tail<3>() = -p;  // becomes k_i x (p_end - p_i) below
-    turn<axis[I]>(R, in.q[I]);
-    p += L[I] * R.col(0);
-  });
-  for (int i = 0; i < 6; ++i) J.col(i).tail<3>() = J.col(i).head<3>().cross(p + J.col(i).tail<3>());
-  Eigen::Map<Eigen::Matrix<double, 6, 6>>{out.J} = J;
+  v3 k[6], r[6];
+  without_q6(in, [&](auto I, const v3& kI, const v3& rI) { k[I] = kI, r[I] = rI; });
+  v3 d = r[5];
+  store(k[5], out.J + 30);
+  store({0, 0, 0}, out.J + 33);
+  for (int i = 4; i >= 0; --i) {
+    d += r[i];
+    store(k[i], out.J + 6 * i);
+    store(cross(k[i], d), out.J + 6 * i + 3);
+  }
 }
 
+// Q4: alpha += q''_i k_i + q'_i w x k_i, w += q'_i k_i, a += alpha x r_i + w x (w x r_i), joint 1
+// in closed form; no q6.
 void hand_q4(const input& in, output& out) {
-  M3 R = M3::Identity();
-  V3 w = V3::Zero(), al = V3::Zero(), a = V3::Zero();
-  joints([&](auto I) {
-    const V3 k = R.col(axis[I]);
-    al += in.qdd[I] * k + in.qd[I] * w.cross(k);
-    w += in.qd[I] * k;
-    turn<axis[I]>(R, in.q[I]);
-    const V3 r = L[I] * R.col(0);
-    a += al.cross(r) + w.cross(w.cross(r));
+  v3 w, al, a;
+  without_q6(in, [&](auto I, const v3& k, const v3& r) {
+    const double qd = in.qd[I], qdd = in.qdd[I];
+    if constexpr (I == 0) {
+      w = {0, 0, qd};
+      al = {0, 0, qdd};
+      a = {-qdd * r.y - qd * qd * r.x, qdd * r.x - qd * qd * r.y, 0};
+    } else {
+      al += qdd * k + qd * cross(w, k);
+      w += qd * k;
+      a += cross(al, r) + cross(w, cross(w, r));
+    }
   });
   store(al, out.alpha);
   store(a, out.a);
 }
 
-void hand_all(const input& in, output& out) {
-  M3 R = M3::Identity();
-  V3 p = V3::Zero(), w = V3::Zero(), v = V3::Zero(), al = V3::Zero(), a = V3::Zero();
-  Eigen::Matrix<double, 6, 6> J;
-  joints([&](auto I) {
-    const V3 k = R.col(axis[I]);
-    J.col(I).template head<3>() = k;
-    J.col(I).template tail<3>() = -p;
-    al += in.qdd[I] * k + in.qd[I] * w.cross(k);
-    w += in.qd[I] * k;
-    turn<axis[I]>(R, in.q[I]);
-    const V3 r = L[I] * R.col(0);
-    p += r;
-    const V3 wr = w.cross(r);
-    v += wr;
-    a += al.cross(r) + w.cross(wr);
-  });
-  for (int i = 0; i < 6; ++i) J.col(i).tail<3>() = J.col(i).head<3>().cross(p + J.col(i).tail<3>());
-  Eigen::Map<Eigen::Matrix<double, 6, 6>>{out.J} = J;
-  Eigen::Map<M3>(out.R) = R;
-  store(p, out.p);
-  store(w, out.w);
-  store(v, out.v);
-  store(al, out.alpha);
-  store(a, out.a);
-}
+// ALL: one outward pass for every quantity (hand.hpp's outward_pass: R, p, w, v, alpha, a and the
+// Jacobian share the rotations, the k_i, the r_i and w x r_i), joint 1 in closed form.
+void hand_all(const input& in, output& out) { outward_pass<6, model>(in.q, in.qd, in.qdd, out); }
 }  // namespace arm6

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Compile time and peak memory of kane's chain translation units beside one
-# that only includes Eigen, at -O2 and at -O0 -g; compared with the committed
+# Compile time and peak memory of kane's translation units (the 6- and 20-joint
+# chains, the rolling disc, the 6-revolute arm) beside one that only includes
+# Eigen, at -O2 and at -O0 -g; compared with the committed
 # baseline (benchmarks/compile_baseline.txt). Exit 1 if a time or memory
 # exceeds its baseline by more than 30%. Usage: benchmarks/compile_cost.sh [--update]
 set -euo pipefail
@@ -23,6 +24,8 @@ for opt in "-O2" "-O0 -g"; do
   measure eigen_only "$opt" "$here/eigen_only.cpp"
   measure chain6 "$opt" "$here/chain_kane.cpp" -DKANE_CHAIN_ONLY=6
   measure chain20 "$opt" "$here/chain_kane.cpp" -DKANE_CHAIN_ONLY=20
+  measure disc "$opt" "$here/disc_kane.cpp"
+  measure arm6 "$opt" "$here/arm6_kane.cpp"
 done
 
 printf '%-11s %-7s %9s %9s %12s %12s\n' unit flags seconds MB over_eigen baseline_s

@@ -1,4 +1,4 @@
-// kane beside the hand-written rolling disc.
+// kane beside the hand-written and the SymPy-generated rolling disc.
 #include <random>
 #include <vector>
 
@@ -20,15 +20,20 @@ const std::vector<disc::input> states = inputs();
 
 void agree() {
   for (const auto& in : states) {
-    disc::output k{}, h{};
+    disc::output k{}, h{}, s{};
     disc::kane_partials(in, k);
     disc::hand_partials(in, h);
-    bench::require_agreement(std::fmax(bench::max_diff(k.A, h.A, 6), bench::max_diff(k.V, h.V, 9)));
+    disc::sympy_partials(in, s);
+    const auto diff = [](const disc::output& a, const disc::output& b) {
+      return std::fmax(bench::max_diff(a.A, b.A, 6), bench::max_diff(a.V, b.V, 9));
+    };
+    bench::require_agreement(std::fmax(diff(k, h), diff(s, h)));
   }
 }
 }  // namespace
 
 BENCHMARK(bench::run<disc::hand_partials, states>)->Name("disc/nonholonomic_partials/hand");
 BENCHMARK(bench::run<disc::kane_partials, states>)->Name("disc/nonholonomic_partials/kane");
+BENCHMARK(bench::run<disc::sympy_partials, states>)->Name("disc/nonholonomic_partials/sympy");
 
 int main(int argc, char** argv) { return bench::main(argc, argv, agree); }

@@ -1,26 +1,18 @@
-// The rolling disc by hand (disc.hpp): closed forms of the lean frame,
-// of A, and of the partial velocities of the centre.
+// The rolling disc by hand (disc.hpp): the closed forms of A and of the nonholonomic partial
+// velocities of the centre.
 #include <cmath>
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 
 #include "disc.hpp"
 
+// Closed form in plain doubles: u4 = r c1 (u2 - t2 u3), u5 = r s1 (u2 - t2 u3), so v~_1 = -r l2,
+// v~_2 = r (c1 n1 + s1 n2), v~_3 = 0; sin and cos of q1 and q2, one division, seven products.
 void disc::hand_partials(const input& in, output& out) {
   const double c1 = std::cos(in.q[0]), s1 = std::sin(in.q[0]), c2 = std::cos(in.q[1]), s2 = std::sin(in.q[1]);
-  const double t2 = s2 / c2, r = in.r;
-  const Eigen::Vector3d l1(c1, s1, 0), l2(-s1 * c2, c1 * c2, s2), l3(s1 * s2, -c1 * s2, c2);
-  // u4 = r c1 (u2 - t2 u3), u5 = r s1 (u2 - t2 u3)
-  Eigen::Matrix<double, 2, 3> A;
-  A << 0, r * c1, -r * c1 * t2, 0, r * s1, -r * s1 * t2;
-  // v = u4 n1 + u5 n2 + r (u3/c2 n3 + u1 l1) x l3
-  Eigen::Matrix3d V;
-  V.col(0) = -r * l2;
-  V.col(1).setZero();
-  V.col(2) = r / c2 * Eigen::Vector3d::UnitZ().cross(l3);
-  V.row(0) += A.row(0);  // + n1 A_1s
-  V.row(1) += A.row(1);  // + n2 A_2s
-  Eigen::Map<Eigen::Matrix<double, 2, 3, Eigen::RowMajor>>(out.A) = A;
-  Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(out.V) = V;
+  const double rc1 = in.r * c1, rs1 = in.r * s1, t2 = s2 / c2;
+  const double rs2 = in.r * s2;  // every input read before the first store (out may alias in)
+  out.A[0] = 0, out.A[1] = rc1, out.A[2] = -rc1 * t2;
+  out.A[3] = 0, out.A[4] = rs1, out.A[5] = -rs1 * t2;
+  out.V[0] = rs1 * c2, out.V[1] = rc1, out.V[2] = 0;
+  out.V[3] = -rc1 * c2, out.V[4] = rs1, out.V[5] = 0;
+  out.V[6] = -rs2, out.V[7] = 0, out.V[8] = 0;
 }

@@ -54,3 +54,13 @@ constexpr void store3(S* p, const v3<S>& a) {
 #define KANE_FLATTEN
 #endif
 #endif
+
+// Small entry points whose callers gain from seeing them whole (a call would
+// spill every live register): inlined into the caller as well.
+#ifndef KANE_INLINE_FLATTEN
+#if defined(__GNUC__) && defined(__OPTIMIZE__)
+#define KANE_INLINE_FLATTEN [[gnu::flatten, gnu::always_inline]] inline
+#else
+#define KANE_INLINE_FLATTEN inline
+#endif
+#endif

@@ -82,9 +82,12 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
     static_assert(D <= 2, "kane: a state holds q, q' and q'' only");
     if constexpr (D == 0)
       return st_->q[I - 1];
-    else if constexpr (solves)
+    else if constexpr (solves) {
+      static_assert(D == 1 ? Level >= level::velocity : Level >= level::acceleration,
+                    "kane: q' and q'' are solved from the speeds at the velocity and acceleration levels; "
+                    "declare the evaluator with level::velocity or level::acceleration");
       return this->template rate<I, D>();
-    else
+    } else
       return D == 1 ? st_->qd[I - 1] : st_->qdd[I - 1];
   }
 

@@ -182,8 +182,8 @@ class kinematic_equations {
   }
 
   solve_status status_ = solve_status::ok;
-  std::array<scalar, nq> qd_{};
-  std::array<scalar, nq> qdd_{};
+  std::array<scalar, nq> qd_;  // written by solve_rates, read only at the velocity level and above
+  std::array<scalar, nq> qdd_;
   table<scalar, nq, nq> kde_w_;  // W where its structure does not fix it, row after row
   std::array<scalar, nq> kde_x_;
 };

@@ -117,7 +117,7 @@ struct constraint_solution {
 
 // u_dep = A u_ind + B at the evaluator's state.
 template <class NH, class Ev>
-KANE_FLATTEN auto solve_constraints(const Ev& ev) {
+KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
   using S = typename Ev::scalar;
   using Sys = detail::constraint_system<NH>;
   static_assert(std::is_same_v<typename NH::speed_set, detail::speeds_of<Ev>>,
@@ -126,8 +126,8 @@ KANE_FLATTEN auto solve_constraints(const Ev& ev) {
                 "kane: the constraints do not determine the dependent speeds (their block of coefficients is "
                 "singular at every state); choose dependent speeds that the constraints involve");
   constexpr std::size_t m = NH::m, p = NH::p;
-  detail::table<S, m, m> dep;
-  detail::table<S, m, p + 1> right, x;
+  detail::table<S, m, m> dep{};  // zeros where the structure leaves entries unread
+  detail::table<S, m, p + 1> right{}, x;
   detail::static_for<m * m>([&](auto kj) {
     constexpr std::size_t k = kj / m, j = kj % m;
     if constexpr (Sys::m[k][j] == detail::entry::other)
@@ -169,7 +169,7 @@ void add_scaled(Col& col, const V& v, S a, const Ev& ev) {
 
 // [v~_1 ... v~_p] in F: v~_s = v_s + sum_r v_r A_rs over the independent s.
 template <Frame F, class NH, class X, class Ev, class Sol>
-KANE_FLATTEN auto nonholonomic_partial_velocities(const X& x, const Ev& ev, const Sol& sol) {
+KANE_INLINE_FLATTEN auto nonholonomic_partial_velocities(const X& x, const Ev& ev, const Sol& sol) {
   using S = typename Ev::scalar;
   using Sp = typename NH::speed_set;
   static_assert(std::is_same_v<Sp, detail::speeds_of<Ev>>,
