@@ -7,13 +7,10 @@ namespace {
 using namespace models::arm6;
 
 using state = kane::state<double, 6>;
-template <kane::level Level>
-using evaluator = kane::evaluator<state, kane::frames<B6>, Level>;
-
-state s;
-evaluator<kane::level::pose> ev_pose;
-evaluator<kane::level::velocity> ev_velocity;
-evaluator<kane::level::acceleration> ev_all;
+// Q2 to Q4 read nothing of B6 but its angular velocity and acceleration (one edge below B5) and
+// e_B6,1 = e_B5,1 (B6 turns about it): their evaluators hold B1 .. B5, and q6 is not turned.
+template <class Frame, kane::level Level>
+using evaluator = kane::evaluator<state, kane::frames<Frame>, Level>;
 
 constexpr auto r_end = kane::position<O, End>();
 constexpr auto w6 = kane::angular_velocity<N, B6>();
@@ -50,29 +47,39 @@ void q4(const Ev& ev, arm6::output& out) {
 
 namespace arm6 {
 void kane_q1(const input& in, output& out) {
+  state s;
+  evaluator<B6, kane::level::pose> ev_pose;
   s.q = in.q;
   ev_pose.update(s);
   q1(ev_pose, out);
 }
 void kane_q2(const input& in, output& out) {
+  state s;
+  evaluator<B5, kane::level::velocity> ev_velocity;
   s.q = in.q;
   s.qd = in.qd;
   ev_velocity.update(s);
   q2(ev_velocity, out);
 }
 void kane_q3(const input& in, output& out) {
+  state s;
+  evaluator<B5, kane::level::pose> ev_jacobian;
   s.q = in.q;
-  ev_pose.update(s);
-  q3(ev_pose, out);
+  ev_jacobian.update(s);
+  q3(ev_jacobian, out);
 }
 void kane_q4(const input& in, output& out) {
+  state s;
+  evaluator<B5, kane::level::acceleration> ev_acceleration;
   s.q = in.q;
   s.qd = in.qd;
   s.qdd = in.qdd;
-  ev_all.update(s);
-  q4(ev_all, out);
+  ev_acceleration.update(s);
+  q4(ev_acceleration, out);
 }
 void kane_all(const input& in, output& out) {
+  state s;
+  evaluator<B6, kane::level::acceleration> ev_all;
   s.q = in.q;
   s.qd = in.qd;
   s.qdd = in.qdd;

@@ -295,3 +295,23 @@ TEST_CASE("kinematics: numbers of point positions live in types, so derived quan
   using F = decltype(End::position.s);
   STATIC_REQUIRE(F::value == 0.05);
 }
+
+TEST_CASE("kinematics: angular velocity and acceleration one edge below the evaluator's frames") {
+  // C turns from B about b2: ^N w^C and ^N alpha^C come from B's and the edge's rates, and e_C2 = e_B2.
+  std::mt19937 rng(71);
+  for (int k = 0; k < 50; ++k) {
+    auto s = random_state(rng);
+    for (auto& x : s.qd) x = std::uniform_real_distribution<double>(-2, 2)(rng);
+    for (auto& x : s.qdd) x = std::uniform_real_distribution<double>(-2, 2)(rng);
+    kane::evaluator<state6, kane::frames<B>> up_to_b;
+    kane::evaluator<state6, kane::frames<C>> up_to_c;
+    up_to_b.update(s);
+    up_to_c.update(s);
+    const auto w = kane::angular_velocity<N, C>();
+    const auto a = kane::angular_acceleration<N, C>();
+    CHECK(kane::is_approx(kane::express<N>(w, up_to_b), kane::express<N>(w, up_to_c), 1e-14));
+    CHECK(kane::is_approx(kane::express<N>(a, up_to_b), kane::express<N>(a, up_to_c), 1e-14));
+    CHECK(kane::is_approx(kane::express<N>(kane::e<C, 2>, up_to_b), kane::express<N>(kane::e<C, 2>, up_to_c),
+                          0.0));
+  }
+}

@@ -9,6 +9,7 @@
 // case constraints_other_speeds: kane: the constraints and the evaluator use different speed sets
 // case speeds_miss_a_rate: kane: these speeds do not determine q'
 // case dependent_not_in_constraints: kane: the constraints do not determine the dependent speeds
+// case rate_below_level: kane: q' and q'' are solved from the speeds at the velocity and acceleration levels
 #include <kane/kane.hpp>
 
 using q1 = kane::coordinate<1>;
@@ -75,5 +76,13 @@ double use() {
   kane::evaluator<St, kane::frames<B>, kane::level::velocity, kane::qdot_speeds<2>> evq;
   evq.update(s);
   x += kane::solve_constraints<nh3>(evq).A(0, 0) + evb.coordinate_value<1, 1>();
+  // q' of a speed set at the pose level is not solved; the fix is level::velocity
+#ifdef KANE_CASE_rate_below_level
+  kane::evaluator<St, kane::frames<B>, kane::level::pose, sp> evp;
+#else
+  kane::evaluator<St, kane::frames<B>, kane::level::velocity, sp> evp;
+#endif
+  evp.update(s);
+  x += kane::evaluate(kane::dt(kane::q<1>), evp);
   return x;
 }

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 namespace kane::detail {
 
@@ -68,12 +69,12 @@ trig<typename State::scalar, Needed> make_trig(const State& st) {
                 "kane: the frames involved use a generalized coordinate beyond the state's size; "
                 "declare the state with at least that many coordinates");
   trig<typename State::scalar, Needed> t;
-  for (std::size_t k = 0; k < Needed.size(); ++k) {
+  [&]<std::size_t... K>(std::index_sequence<K...>) {  // unrolled at -O2 too
     using std::cos;
     using std::sin;
-    t.s[k] = sin(st.q[Needed[k] - 1]);
-    t.c[k] = cos(st.q[Needed[k] - 1]);
+    ((t.s[K] = sin(st.q[Needed[K] - 1]), t.c[K] = cos(st.q[Needed[K] - 1])), ...);
   }
+  (std::make_index_sequence<Needed.size()>{});
   return t;
 }
 

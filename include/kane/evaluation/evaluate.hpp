@@ -138,9 +138,9 @@ v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev) {
     else
       return cross3(eval_vector(v.l, ev), eval_vector(v.r, ev));
   } else if constexpr (is_v<V, omega>)
-    return load3(ev.template omega<typename V::frame>().data());
+    return ev.template omega_value<typename V::frame>(ev);
   else if constexpr (is_v<V, alpha>)
-    return load3(ev.template alpha<typename V::frame>().data());
+    return ev.template alpha_value<typename V::frame>(ev);
   else if constexpr (is_v<V, angular_velocity_of> || is_v<V, angular_acceleration_of>)
     return eval_vector(expand(v), ev);
   else if constexpr (Quantity<V>)
@@ -170,8 +170,8 @@ requires detail::is_evaluator<Ev>::value KANE_FLATTEN typename Ev::scalar evalua
 
 // ^A v: the components of the vector expression v in A.
 template <Frame A, VectorExpr V, class Ev>
-requires detail::is_evaluator<Ev>::value KANE_FLATTEN vec<A, typename Ev::scalar> express(const V& v,
-                                                                                          const Ev& ev) {
+requires detail::is_evaluator<Ev>::value KANE_INLINE_FLATTEN vec<A, typename Ev::scalar> express(
+    const V& v, const Ev& ev) {
   using R = detail::root_of<A>;
   using VR = detail::root_frame_of_t<V>;
   static_assert(std::is_same_v<VR, root_frame> || std::is_same_v<VR, R>,

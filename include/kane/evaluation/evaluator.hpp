@@ -50,7 +50,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   // velocity and acceleration levels; if Y is singular or not finite,
   // status() says so, and W (but for its structural zeros and ones), X, q',
   // q'' and all computed from them are NaN.
-  KANE_FLATTEN void update(const St& s) {
+  KANE_INLINE_FLATTEN void update(const St& s) {
     st_ = &s;
     const auto t = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
     constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;

@@ -70,6 +70,34 @@ class outward_pass {
         "kane: this evaluator computes no angular velocities; declare it with level::velocity or higher");
     return Eigen::Map<const vector3>(w_[index<F>()].data());
   }
+  // ^R w^F and ^R alpha^F as values, for F held or one edge below a held frame
+  // (from the parent's and the edge's rates: F's own axes are not needed).
+  template <class F, class Rates>
+  v3<scalar> omega_value(const Rates& rates) const {
+    static_assert(
+        Level >= level::velocity,
+        "kane: this evaluator computes no angular velocities; declare it with level::velocity or higher");
+    if constexpr (contains<F, closure>::value || !edge_below_held<F>())
+      return load3(w_[index<F>()].data());
+    else
+      return load3(w_[index<typename F::tree_parent>()].data()) +
+             rates.template coordinate_value<F::step::coordinate::index, 1>() * edge_axis<F>();
+  }
+  template <class F, class Rates>
+  v3<scalar> alpha_value(const Rates& rates) const {
+    static_assert(
+        Level >= level::acceleration,
+        "kane: this evaluator computes no angular accelerations; declare it with level::acceleration");
+    if constexpr (contains<F, closure>::value || !edge_below_held<F>())
+      return load3(a_[index<F>()].data());
+    else {
+      constexpr std::size_t q = F::step::coordinate::index, ip = index<typename F::tree_parent>();
+      const vec3 k = edge_axis<F>();
+      return load3(a_[ip].data()) + rates.template coordinate_value<q, 2>() * k +
+             rates.template coordinate_value<q, 1>() * cross3(load3(w_[ip].data()), k);
+    }
+  }
+
   template <class F>
   Eigen::Map<const vector3> alpha() const {
     static_assert(
@@ -104,6 +132,14 @@ class outward_pass {
       return index_of<F, closure>::value;
     else
       return 0;
+  }
+
+  template <class F>
+  static constexpr bool edge_below_held() {
+    if constexpr (std::is_void_v<typename F::tree_parent>)
+      return false;
+    else
+      return contains<typename F::tree_parent, closure>::value;
   }
 
   template <class F>
@@ -146,9 +182,12 @@ class outward_pass {
       return {scalar(p == 0), scalar(p == 1), scalar(p == 2)};
     } else if constexpr (p >= 0) {
       return column<P>(p);  // the parent's: known before F's own axes
-    } else {
+    } else {                // k has the same components in P and F
       constexpr auto k = unit_axis<K>::value;
-      return scalar(k[0]) * column<F>(0) + scalar(k[1]) * column<F>(1) + scalar(k[2]) * column<F>(2);
+      if constexpr (!is_edge<P>)
+        return {scalar(k[0]), scalar(k[1]), scalar(k[2])};
+      else
+        return scalar(k[0]) * column<P>(0) + scalar(k[1]) * column<P>(1) + scalar(k[2]) * column<P>(2);
     }
   }
 

@@ -48,7 +48,7 @@ auto numbers(const X& x, const Ev& ev) {
 // the expression dx/du_r + sum_s dx/dq_s' W_sr, t is x_0 + sum_s dx/dq_s' X_s,
 // with the zeros and ones of W and X known at compile time (speeds.hpp).
 template <class A, bool Table, bool Rest, class X, class Ev>
-KANE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
+KANE_INLINE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
   using Sp = speeds_of<Ev>;
   constexpr int rows = ScalarExpr<X> ? 1 : 3;
   Eigen::Matrix<typename Ev::scalar, rows, int(Sp::n)> t;
