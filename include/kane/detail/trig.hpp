@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <utility>
 
+#include "kane/detail/inline.hpp"
+
 namespace kane::detail {
 
 template <class S, auto Needed>
@@ -64,7 +66,7 @@ constexpr auto unique_indices() {
 
 // sin/cos of q_k for k in Needed.
 template <auto Needed, class State>
-trig<typename State::scalar, Needed> make_trig(const State& st) {
+KANE_ALWAYS_INLINE trig<typename State::scalar, Needed> make_trig(const State& st) {
   static_assert(Needed.empty() || Needed.back() <= State::nq,
                 "kane: the frames involved use a generalized coordinate beyond the state's size; "
                 "declare the state with at least that many coordinates");

@@ -3,6 +3,8 @@
 // expression trees went through the stack (store-forwarding stalls).
 #pragma once
 
+#include "kane/detail/inline.hpp"
+
 namespace kane::detail {
 
 template <class S>
@@ -44,23 +46,3 @@ constexpr void store3(S* p, const v3<S>& a) {
 }
 
 }  // namespace kane::detail
-
-// Entry points of evaluation inline their whole expression tree: common
-// subexpressions of one call meet in one function body (at -O2 too).
-#ifndef KANE_FLATTEN
-#if defined(__GNUC__) && defined(__OPTIMIZE__)
-#define KANE_FLATTEN [[gnu::flatten]]
-#else
-#define KANE_FLATTEN
-#endif
-#endif
-
-// Small entry points whose callers gain from seeing them whole (a call would
-// spill every live register): inlined into the caller as well.
-#ifndef KANE_INLINE_FLATTEN
-#if defined(__GNUC__) && defined(__OPTIMIZE__)
-#define KANE_INLINE_FLATTEN [[gnu::flatten, gnu::always_inline]] inline
-#else
-#define KANE_INLINE_FLATTEN inline
-#endif
-#endif

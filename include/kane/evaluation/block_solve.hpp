@@ -17,6 +17,7 @@
 
 #include <Eigen/Core>
 
+#include "kane/detail/inline.hpp"
 #include "kane/detail/invert.hpp"
 #include "kane/detail/structure.hpp"
 #include "kane/evaluation/status.hpp"
@@ -39,8 +40,9 @@ using table = std::array<std::array<S, C>, R>;
 // Sys: static constexpr n, k, m (pattern n x n), r (n x k), form (blocks_of(m)), x (solution_pattern).
 // The zeros and ones of X are written unless the caller keeps them (WriteConstants false).
 template <class Sys, bool WriteConstants = true, class S>
-solve_status solve_structured(const table<S, Sys::n, Sys::n>& m, const table<S, Sys::n, Sys::k>& r,
-                              table<S, Sys::n, Sys::k>& x) {
+KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>& m,
+                                                 const table<S, Sys::n, Sys::k>& r,
+                                                 table<S, Sys::n, Sys::k>& x) {
   static_assert(Sys::form.regular);
   using std::abs;
   constexpr std::size_t n = Sys::n, k = Sys::k;

@@ -26,7 +26,7 @@ template <class X>
 struct is_evaluator : std::false_type {};
 
 template <class Ev, class V>
-v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev);
+KANE_ALWAYS_INLINE v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev);
 
 // e_Ri of a root frame R (or a unit vector equal to one): components known at compile time.
 template <class V>
@@ -49,7 +49,7 @@ v3<S> cross_unit(const v3<S>& a) {
 }
 
 template <class Ev, class X>
-typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
+KANE_ALWAYS_INLINE typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
   using S = typename Ev::scalar;
   if constexpr (coordinate_info<X>::value)
     return ev.template coordinate_value<X::index, X::order>();
@@ -111,7 +111,7 @@ typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
 
 // Components in the root frame.
 template <class Ev, class V>
-v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev) {
+KANE_ALWAYS_INLINE v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev) {
   using S = typename Ev::scalar;
   if constexpr (is_zero_vector_v<V>)
     return {S(0), S(0), S(0)};
@@ -151,7 +151,7 @@ v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev) {
 
 // ^A components of the root components r.
 template <class A, class Ev>
-v3<typename Ev::scalar> in_frame(const v3<typename Ev::scalar>& r, const Ev& ev) {
+KANE_ALWAYS_INLINE v3<typename Ev::scalar> in_frame(const v3<typename Ev::scalar>& r, const Ev& ev) {
   if constexpr (std::is_same_v<A, root_of<A>>)
     return r;
   else {
@@ -164,7 +164,8 @@ v3<typename Ev::scalar> in_frame(const v3<typename Ev::scalar>& r, const Ev& ev)
 
 // The value of a scalar expression.
 template <ScalarExpr X, class Ev>
-requires detail::is_evaluator<Ev>::value KANE_FLATTEN typename Ev::scalar evaluate(const X& x, const Ev& ev) {
+requires detail::is_evaluator<Ev>::value KANE_INLINE_FLATTEN typename Ev::scalar evaluate(const X& x,
+                                                                                          const Ev& ev) {
   return detail::eval_scalar(x, ev);
 }
 

@@ -112,7 +112,7 @@ class kinematic_equations {
   // Y q' + Z = u, so q' = W u + X with W = Y^-1 (evaluation/block_solve.hpp) and X = -W Z:
   // W and X depend on q alone. The zeros and ones of W are written once, by the constructor.
   template <class Ev>
-  void solve_kinematic_equations(const Ev& ev) {
+  KANE_ALWAYS_INLINE void solve_kinematic_equations(const Ev& ev) {
     table<scalar, nq, nq> y;
     static_for<nq * nq>([&](auto rc) {
       constexpr std::size_t r = rc / nq, c = rc % nq;
@@ -132,7 +132,7 @@ class kinematic_equations {
         if constexpr (system::offset[c]) kde_x_[c] = std::numeric_limits<scalar>::quiet_NaN();
       });
   }
-  void solve_rates(const St& s) {
+  KANE_ALWAYS_INLINE void solve_rates(const St& s) {
     if constexpr (direct) {  // u = q'
       for (std::size_t i = 0; i < nq; ++i) qd_[i] = s.u[i];
     } else {
@@ -142,7 +142,7 @@ class kinematic_equations {
   }
   // (W v)_c (+ X_c), skipping the zeros of W and X.
   template <std::size_t C, bool Offset, class V>
-  scalar apply_row(const V& v) const {
+  KANE_ALWAYS_INLINE scalar apply_row(const V& v) const {
     scalar sum = scalar(0);
     if constexpr (Offset && system::offset[C]) sum = kde_x_[C];
     static_for<nq>([&](auto j) {
@@ -154,7 +154,7 @@ class kinematic_equations {
     return sum;
   }
   template <bool Offset, class V>
-  std::array<scalar, nq> apply(const V& v) const {
+  KANE_ALWAYS_INLINE std::array<scalar, nq> apply(const V& v) const {
     std::array<scalar, nq> out;
     static_for<nq>([&](auto c) { out[c] = apply_row<c, Offset>(v); });
     return out;
@@ -162,7 +162,7 @@ class kinematic_equations {
 
   // u' = Y q'' + Y' q' + Z', so q'' = W (u' - Y' q' - Z').
   template <class Ev>
-  void solve_accelerations(const Ev& ev, const St& s) {
+  KANE_ALWAYS_INLINE void solve_accelerations(const Ev& ev, const St& s) {
     if constexpr (Speeds::identity) {
       for (std::size_t i = 0; i < nq; ++i) qdd_[i] = s.ud[i];
     } else {

@@ -73,7 +73,7 @@ class outward_pass {
   // ^R w^F and ^R alpha^F as values, for F held or one edge below a held frame
   // (from the parent's and the edge's rates: F's own axes are not needed).
   template <class F, class Rates>
-  v3<scalar> omega_value(const Rates& rates) const {
+  KANE_ALWAYS_INLINE v3<scalar> omega_value(const Rates& rates) const {
     static_assert(
         Level >= level::velocity,
         "kane: this evaluator computes no angular velocities; declare it with level::velocity or higher");
@@ -84,7 +84,7 @@ class outward_pass {
              rates.template coordinate_value<F::step::coordinate::index, 1>() * edge_axis<F>();
   }
   template <class F, class Rates>
-  v3<scalar> alpha_value(const Rates& rates) const {
+  KANE_ALWAYS_INLINE v3<scalar> alpha_value(const Rates& rates) const {
     static_assert(
         Level >= level::acceleration,
         "kane: this evaluator computes no angular accelerations; declare it with level::acceleration");
@@ -114,11 +114,11 @@ class outward_pass {
 
   // One pass at the levels asked for, frame after frame.
   template <bool Pose, bool Velocity, bool Acceleration, class Rates>
-  void pass(const trig_type& t, const Rates& rates) {
+  KANE_ALWAYS_INLINE void pass(const trig_type& t, const Rates& rates) {
     pass_over<Pose, Velocity, Acceleration>(closure{}, t, rates);
   }
   // element by element: a wide copy of values just written narrowly would stall
-  void store_trig(const trig_type& t) {
+  KANE_ALWAYS_INLINE void store_trig(const trig_type& t) {
     for (std::size_t k = 0; k < trig_type::size; ++k) trig_.s[k] = t.s[k], trig_.c[k] = t.c[k];
   }
   const trig_type& cached_trig() const { return trig_; }
@@ -146,7 +146,7 @@ class outward_pass {
   static constexpr bool is_edge = !std::is_void_v<typename F::tree_parent>;
 
   template <class... F>
-  void init_roots(list<F...>) {
+  KANE_ALWAYS_INLINE void init_roots(list<F...>) {
     (
         [&] {
           if constexpr (!is_edge<F>)
@@ -156,25 +156,25 @@ class outward_pass {
   }
 
   template <bool Pose, bool Velocity, bool Acceleration, class Rates, class... F>
-  void pass_over(list<F...>, const trig_type& t, const Rates& rates) {
-    (
-        [&] {
-          if constexpr (Pose) pose_edge<F>(t);
-          if constexpr (Velocity) velocity_edge<F>(rates);
-          if constexpr (Acceleration) acceleration_edge<F>(rates);
-        }(),
-        ...);
+  KANE_ALWAYS_INLINE void pass_over(list<F...>, const trig_type& t, const Rates& rates) {
+    (edge<Pose, Velocity, Acceleration, F>(t, rates), ...);  // no lambdas: g++ -O2 left them out of line
+  }
+  template <bool Pose, bool Velocity, bool Acceleration, class F, class Rates>
+  KANE_ALWAYS_INLINE void edge(const trig_type& t, const Rates& rates) {
+    if constexpr (Pose) pose_edge<F>(t);
+    if constexpr (Velocity) velocity_edge<F>(rates);
+    if constexpr (Acceleration) acceleration_edge<F>(rates);
   }
 
   using vec3 = v3<scalar>;
   template <class F>
-  vec3 column(int j) const {
+  KANE_ALWAYS_INLINE vec3 column(int j) const {
     return load3(c_[index<F>()].data() + 3 * j);
   }
 
   // The axis k of the edge above F, in the root's components (fixed in both frames).
   template <class F>
-  vec3 edge_axis() const {
+  KANE_ALWAYS_INLINE vec3 edge_axis() const {
     using K = typename F::step::axis;
     using P = typename F::tree_parent;
     constexpr int p = unit_axis<K>::principal;
@@ -192,7 +192,7 @@ class outward_pass {
   }
 
   template <class F>
-  void pose_edge(const trig_type& t) {
+  KANE_ALWAYS_INLINE void pose_edge(const trig_type& t) {
     if constexpr (is_edge<F>) {
       using P = typename F::tree_parent;
       using K = typename F::step::axis;
@@ -225,7 +225,7 @@ class outward_pass {
   }
 
   template <class F, class Rates>
-  void velocity_edge(const Rates& rates) {
+  KANE_ALWAYS_INLINE void velocity_edge(const Rates& rates) {
     if constexpr (is_edge<F>) {
       constexpr std::size_t q = F::step::coordinate::index;
       const vec3 wp = load3(w_[index<typename F::tree_parent>()].data());
@@ -234,7 +234,7 @@ class outward_pass {
   }
 
   template <class F, class Rates>
-  void acceleration_edge(const Rates& rates) {
+  KANE_ALWAYS_INLINE void acceleration_edge(const Rates& rates) {
     if constexpr (is_edge<F>) {
       constexpr std::size_t q = F::step::coordinate::index;
       constexpr std::size_t ip = index<typename F::tree_parent>();

@@ -33,7 +33,7 @@ using speeds_of = std::conditional_t<std::is_void_v<typename Ev::speed_set>, qdo
 namespace detail {
 // x as numbers: a scalar, or a vector in A.
 template <class A, class X, class Ev>
-auto numbers(const X& x, const Ev& ev) {
+KANE_ALWAYS_INLINE auto numbers(const X& x, const Ev& ev) {
   using S = typename Ev::scalar;
   if constexpr (ScalarExpr<X>) {
     return Eigen::Matrix<S, 1, 1>(eval_scalar(x, ev));
