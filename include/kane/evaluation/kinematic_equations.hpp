@@ -116,13 +116,18 @@ class kinematic_equations {
     table<scalar, nq, nq> y;
     static_for<nq * nq>([&](auto rc) {
       constexpr std::size_t r = rc / nq, c = rc % nq;
-      if constexpr (system::m[r][c] == entry::other)
-        y[r][c] = eval_scalar(diff(definition<r>(), coordinate<c + 1, 1>{}), ev);
+      if constexpr (system::m[r][c] == entry::other) {
+        constexpr auto e = diff(definition<r>(), coordinate<c + 1, 1>{});  // built by the constant evaluator
+        y[r][c] = eval_scalar(e, ev);
+      }
     });
     status_ = solve_structured<system, false>(y, y, kde_w_);
     std::array<scalar, nq> z;
     static_for<nq>([&](auto r) {
-      if constexpr (system::z[r] != entry::zero) z[r] = -eval_scalar(at_rest(definition<r>()), ev);
+      if constexpr (system::z[r] != entry::zero) {
+        constexpr auto e = at_rest(definition<r>());
+        z[r] = -eval_scalar(e, ev);
+      }
     });
     static_for<nq>([&](auto c) {
       if constexpr (system::offset[c]) kde_x_[c] = apply_row<c, false>(z);
@@ -169,8 +174,8 @@ class kinematic_equations {
       std::array<scalar, nq> v;
       static_for<nq>([&](auto r) {
         scalar sum = s.ud[r];
-        if constexpr (!is_zero_v<decltype(dt(at_rest(definition<r>())))>)
-          sum -= eval_scalar(dt(at_rest(definition<r>())), ev);
+        constexpr auto zd = dt(at_rest(definition<r>()));
+        if constexpr (!is_zero_v<std::remove_cv_t<decltype(zd)>>) sum -= eval_scalar(zd, ev);
         static_for<nq>([&](auto c) {
           constexpr auto yd = dt(diff(definition<r>(), coordinate<c + 1, 1>{}));
           if constexpr (!is_zero_v<std::remove_cv_t<decltype(yd)>>) sum -= eval_scalar(yd, ev) * qd_[c];

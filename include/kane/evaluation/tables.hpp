@@ -43,6 +43,31 @@ KANE_ALWAYS_INLINE auto numbers(const X& x, const Ev& ev) {
   }
 }
 
+// Column R of T and the remainder t as expressions. An expression of empty
+// nodes (every expression without a runtime literal) is differentiated in a
+// constant expression: building the derivative then emits no code, at -O0
+// too, and the optimiser never sees it.
+template <class X>
+inline constexpr bool foldable = (std::is_empty_v<X> && std::is_trivially_copyable_v<X>);
+template <class Sp, std::size_t R, class X>
+constexpr auto column_of(const X& x) {
+  if constexpr (foldable<X>) {
+    const X y = x;  // copying an empty node reads nothing: usable in a constant expression
+    constexpr auto c = column<Sp, R>(y);
+    return c;
+  } else
+    return column<Sp, R>(x);
+}
+template <class Sp, class X>
+constexpr auto remainder_of(const X& x) {
+  if constexpr (foldable<X>) {
+    const X y = x;
+    constexpr auto c = remainder_u<Sp>(y, std::make_index_sequence<Sp::n>{});
+    return c;
+  } else
+    return remainder_u<Sp>(x, std::make_index_sequence<Sp::n>{});
+}
+
 // x = T u + t in A: the table T = [v_1 ... v_n] (rows 1 for a scalar x, 3 for
 // a vector) and the remainder t, each computed only if asked for. Column r is
 // the expression dx/du_r + sum_s dx/dq_s' W_sr, t is x_0 + sum_s dx/dq_s' X_s,
@@ -54,8 +79,8 @@ KANE_INLINE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
   Eigen::Matrix<typename Ev::scalar, rows, int(Sp::n)> t;
   Eigen::Matrix<typename Ev::scalar, rows, 1> rest;
   [&]<std::size_t... R>(std::index_sequence<R...>) {
-    if constexpr (Table) ((t.col(R) = numbers<A>(column<Sp, R + 1>(x), ev)), ...);
-    if constexpr (Rest) rest = numbers<A>(remainder_u<Sp>(x, std::make_index_sequence<Sp::n>{}), ev);
+    if constexpr (Table) ((t.col(R) = numbers<A>(column_of<Sp, R + 1>(x), ev)), ...);
+    if constexpr (Rest) rest = numbers<A>(remainder_of<Sp>(x), ev);
   }
   (std::make_index_sequence<Sp::n>{});
   if constexpr (Table && Rest)
@@ -130,13 +155,18 @@ KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
   detail::table<S, m, p + 1> right{}, x;
   detail::static_for<m * m>([&](auto kj) {
     constexpr std::size_t k = kj / m, j = kj % m;
-    if constexpr (Sys::m[k][j] == detail::entry::other)
-      dep[k][j] = detail::eval_scalar(Sys::template coefficient<k, NH::dependents[j]>(), ev);
+    if constexpr (Sys::m[k][j] == detail::entry::other) {
+      constexpr auto c =
+          Sys::template coefficient<k, NH::dependents[j]>();  // built by the constant evaluator
+      dep[k][j] = detail::eval_scalar(c, ev);
+    }
   });
   detail::static_for<m*(p + 1)>([&](auto kj) {
     constexpr std::size_t k = kj / (p + 1), j = kj % (p + 1);
-    if constexpr (Sys::r[k][j] == detail::entry::other)
-      right[k][j] = detail::eval_scalar(Sys::template right<k, j>(), ev);
+    if constexpr (Sys::r[k][j] == detail::entry::other) {
+      constexpr auto c = Sys::template right<k, j>();
+      right[k][j] = detail::eval_scalar(c, ev);
+    }
   });
   constraint_solution<S, m, p> out;
   out.status = detail::solve_structured<Sys>(dep, right, x);
@@ -176,9 +206,9 @@ KANE_INLINE_FLATTEN auto nonholonomic_partial_velocities(const X& x, const Ev& e
                 "kane: the constraints and the evaluator use different speed sets");
   Eigen::Matrix<S, ScalarExpr<X> ? 1 : 3, int(NH::p)> out;
   detail::static_for<NH::p>([&](auto k) {
-    auto col = detail::numbers<F>(detail::column<Sp, NH::independents[k]>(x), ev);
+    auto col = detail::numbers<F>(detail::column_of<Sp, NH::independents[k]>(x), ev);
     detail::static_for<NH::m>([&](auto r) {
-      detail::add_scaled<F>(col, detail::column<Sp, NH::dependents[r]>(x),
+      detail::add_scaled<F>(col, detail::column_of<Sp, NH::dependents[r]>(x),
                             sol.A(Eigen::Index(r), Eigen::Index(k)), ev);
     });
     out.col(k) = col;

@@ -21,8 +21,10 @@
 
 namespace kane {
 
+// the builtin (GCC, Clang): std::derived_from would instantiate std::is_convertible
+// for every node type, names of whole expression trees
 template <class T>
-concept ScalarExpr = std::derived_from<T, detail::scalar_tag>;
+concept ScalarExpr = __is_base_of(detail::scalar_tag, T);
 
 template <class T>
 concept Number = std::is_arithmetic_v<T>;
@@ -162,11 +164,9 @@ namespace detail {
 
 // X is an instance of the node template T
 template <class X, template <class...> class T>
-struct is_inst : std::false_type {};
+inline constexpr bool is_v = false;
 template <template <class...> class T, class... A>
-struct is_inst<T<A...>, T> : std::true_type {};
-template <class X, template <class...> class T>
-inline constexpr bool is_v = is_inst<X, T>::value;
+inline constexpr bool is_v<T<A...>, T> = true;
 
 template <class T>
 struct is_fixed : std::false_type {};

@@ -17,8 +17,10 @@ namespace detail {
 struct vector_tag {};
 }  // namespace detail
 
+// the builtin (GCC, Clang): std::derived_from would instantiate std::is_convertible
+// for every node type, names of whole expression trees
 template <class T>
-concept VectorExpr = std::derived_from<T, detail::vector_tag>;
+concept VectorExpr = __is_base_of(detail::vector_tag, T);
 
 namespace detail {
 struct quantity_tag : vector_tag {};

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <type_traits>
 
 #include "kane/detail/frame_check.hpp"
@@ -151,6 +152,71 @@ constexpr auto partial_omega(list<Up...>, list<Down...>) {
   return (zero_vector{} - ... - edge_axis<R, Up>()) + (zero_vector{} + ... + edge_axis<R, Down>());
 }
 
+// The rates q_i' and speeds u_i that an expression may hold (bit i - 1; all
+// bits for an index beyond 64 or a node not listed): the partial derivative
+// by a rate or speed outside the set is zero (sums and products drop the
+// type-level zeros), so it is returned without being built.
+struct leaf_set {
+  std::uint64_t rates = 0, speeds = 0;
+  bool all = false;  // a query that every expression may hold (a leaf other than q' or u)
+};
+constexpr leaf_set operator|(leaf_set a, leaf_set b) {
+  return {a.rates | b.rates, a.speeds | b.speeds, a.all || b.all};
+}
+constexpr bool overlaps(leaf_set x, leaf_set leaf) {
+  return leaf.all || (x.rates & leaf.rates) != 0 || (x.speeds & leaf.speeds) != 0;
+}
+constexpr std::uint64_t leaf_bit(std::size_t i) {
+  return i >= 1 && i <= 64 ? std::uint64_t(1) << (i - 1) : ~std::uint64_t(0);
+}
+inline constexpr leaf_set any_leaf{~std::uint64_t(0), ~std::uint64_t(0)};
+// The rates of the edges from the root down to F (those of ^R w^F).
+template <class F>
+constexpr std::uint64_t path_rates() {
+  if constexpr (std::is_void_v<typename F::tree_parent>)
+    return 0;
+  else
+    return leaf_bit(F::step::coordinate::index) | path_rates<typename F::tree_parent>();
+}
+template <class X>
+constexpr leaf_set leaves_in();
+template <class X>
+inline constexpr leaf_set leaves_of = leaves_in<X>();  // once per node type
+template <class X>
+constexpr leaf_set leaves_in() {
+  if constexpr (coordinate_info<X>::value)
+    return {X::order == 1 ? leaf_bit(X::index) : 0, 0};
+  else if constexpr (speed_info<X>::value)
+    return {0, X::order == 0 ? leaf_bit(X::index) : 0};
+  else if constexpr (std::is_same_v<X, time_variable> || LeafConstant<X> || is_unit<X>::value ||
+                     is_zero_vector_v<X>)
+    return {};
+  else if constexpr (binary_node(static_cast<X*>(nullptr)))
+    return leaves_of<decltype(X::l)> | leaves_of<decltype(X::r)>;
+  else if constexpr (is_v<X, scaled>)
+    return leaves_of<decltype(X::s)> | leaves_of<decltype(X::v)>;
+  else if constexpr (is_v<X, neg> || is_v<X, unary> || power_info<X>::value || is_v<X, call>)
+    return leaves_of<decltype(X::x)>;
+  else if constexpr (is_v<X, omega>)
+    return {path_rates<typename X::frame>(), 0};
+  else if constexpr (is_v<X, angular_velocity_of>)
+    return {path_rates<typename X::observer>() | path_rates<typename X::body>(), 0};
+  else if constexpr (is_v<X, vneg> || Quantity<X>)
+    return leaves_of<decltype(X::v)>;
+  else
+    return any_leaf;  // alpha, angular_acceleration_of, unknown nodes: partial_in says why
+}
+// The set of the leaf Leaf, for the query above.
+template <class Leaf>
+constexpr leaf_set leaf_query() {
+  if constexpr (coordinate_info<Leaf>::value) {
+    if constexpr (Leaf::order == 1) return {leaf_bit(Leaf::index), 0};
+  } else if constexpr (speed_info<Leaf>::value) {
+    if constexpr (Leaf::order == 0) return {0, leaf_bit(Leaf::index)};
+  }
+  return {0, 0, true};
+}
+
 template <class X>
 constexpr auto ddt(X x);
 template <class X>
@@ -195,7 +261,9 @@ constexpr auto ddt(X x) {
 // Partial derivative of a scalar by a leaf (q_i, q_i', u_i, t, ...).
 template <class Leaf, class X>
 constexpr auto partial(X x) {
-  if constexpr (std::is_same_v<X, Leaf>)
+  if constexpr (!overlaps(leaves_of<X>, leaf_query<Leaf>()))
+    return zero_t{};
+  else if constexpr (std::is_same_v<X, Leaf>)
     return one_t{};
   else if constexpr (coordinate_info<X>::value || speed_info<X>::value || std::is_same_v<X, time_variable> ||
                      LeafConstant<X>)
@@ -266,7 +334,9 @@ constexpr auto ddt_in(V v) {
 // ^A d v/d x for a leaf x (eq. 6 for x = q_i).
 template <class A, class Leaf, class V>
 constexpr auto partial_in(V v) {
-  if constexpr (is_zero_vector_v<V>)
+  if constexpr (!overlaps(leaves_of<V>, leaf_query<Leaf>()))
+    return zero_vector{};
+  else if constexpr (is_zero_vector_v<V>)
     return v;
   else if constexpr (is_unit<V>::value) {
     if constexpr (coordinate_info<Leaf>::value && Leaf::order == 0) {

@@ -119,6 +119,10 @@ constexpr auto measured_acceleration(V v) {
 }
 }  // namespace detail
 
+// position, velocity and acceleration hold their expression in a constexpr
+// variable: the expression is built by the constant evaluator, so no function
+// of its construction is compiled (at -O0 each would be).
+
 // r^PQ, the position of Q from P.
 template <Point P, Point Q>
 constexpr auto position() {
@@ -128,9 +132,12 @@ constexpr auto position() {
   static_assert(!std::is_void_v<X>, "kane: no chain of points joins these two points (their origins differ)");
   if constexpr (std::is_void_v<X>)
     return zero_vector{};
-  else
-    return detail::sum_positions(typename detail::reverse<typename detail::before<cq, X>::type>::type{}) -
-           detail::sum_positions(typename detail::reverse<typename detail::before<cp, X>::type>::type{});
+  else {
+    constexpr auto r =
+        detail::sum_positions(typename detail::reverse<typename detail::before<cq, X>::type>::type{}) -
+        detail::sum_positions(typename detail::reverse<typename detail::before<cp, X>::type>::type{});
+    return r;
+  }
 }
 
 template <Point P, Frame A>
@@ -146,14 +153,17 @@ constexpr auto velocity(P = {}) {
                 "from it is constant in A)");
   if constexpr (std::is_void_v<Q>)
     return zero_vector{};
-  else
-    return detail::measured_velocity<A, P>(dt<A>(position<Q, P>()));
+  else {
+    constexpr auto v = detail::measured_velocity<A, P>(dt<A>(position<Q, P>()));
+    return v;
+  }
 }
 
 // ^A a^P = ^A d(^A v^P)/dt (eq. 15).
 template <Frame A, Point P>
 constexpr auto acceleration(P = {}) {
-  return detail::measured_acceleration<A, P>(dt<A>(velocity<A, P>()));
+  constexpr auto a = detail::measured_acceleration<A, P>(dt<A>(velocity<A, P>()));
+  return a;
 }
 
 // Two points P, Q fixed in B: ^A v^P = ^A v^Q + ^A w^B x r^QP. Checked at
