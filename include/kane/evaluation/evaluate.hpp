@@ -169,17 +169,36 @@ requires detail::is_evaluator<Ev>::value KANE_INLINE_FLATTEN typename Ev::scalar
   return detail::eval_scalar(x, ev);
 }
 
-// ^A v: the components of the vector expression v in A.
-template <Frame A, VectorExpr V, class Ev>
-requires detail::is_evaluator<Ev>::value KANE_INLINE_FLATTEN vec<A, typename Ev::scalar> express(
-    const V& v, const Ev& ev) {
-  using R = detail::root_of<A>;
-  using VR = detail::root_frame_of_t<V>;
+namespace detail {
+// Entry points inline into their caller for evaluators of up to 8 frames; for
+// larger trees each stays one flattened function (one body per entry point
+// keeps g++'s register allocation of a long chain in reach).
+template <class Ev>
+inline constexpr bool inlined_entry = Ev::size <= 8;
+
+template <class A, class V, class Ev>
+KANE_ALWAYS_INLINE vec<A, typename Ev::scalar> express_in(const V& v, const Ev& ev) {
+  using R = root_of<A>;
+  using VR = root_frame_of_t<V>;
   static_assert(std::is_same_v<VR, root_frame> || std::is_same_v<VR, R>,
                 "kane: no path of the frame tree joins the vector's frames and the frame of expression; "
                 "express it in a frame of its own tree");
-  const auto r = detail::in_frame<A>(detail::eval_vector(v, ev), ev);
+  const auto r = in_frame<A>(eval_vector(v, ev), ev);
   return vec<A, typename Ev::scalar>(r.x, r.y, r.z);
+}
+}  // namespace detail
+
+// ^A v: the components of the vector expression v in A.
+template <Frame A, VectorExpr V, class Ev>
+requires(detail::is_evaluator<Ev>::value&& detail::inlined_entry<Ev>)
+    KANE_INLINE_FLATTEN vec<A, typename Ev::scalar> express(const V& v, const Ev& ev) {
+  return detail::express_in<A>(v, ev);
+}
+template <Frame A, VectorExpr V, class Ev>
+requires(detail::is_evaluator<Ev>::value &&
+         !detail::inlined_entry<Ev>) KANE_FLATTEN vec<A, typename Ev::scalar> express(const V& v,
+                                                                                      const Ev& ev) {
+  return detail::express_in<A>(v, ev);
 }
 
 }  // namespace kane

@@ -50,27 +50,8 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   // velocity and acceleration levels; if Y is singular or not finite,
   // status() says so, and W (but for its structural zeros and ones), X, q',
   // q'' and all computed from them are NaN.
-  KANE_INLINE_FLATTEN void update(const St& s) {
-    st_ = &s;
-    const auto t = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
-    constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
-    if constexpr (!solves) {
-      this->template pass<true, velocity, acceleration>(t, *this);  // frame after frame, all levels at once
-      this->store_trig(t);
-    } else {  // Y, Z need the axes; Y', Z' the angular velocities
-      this->template pass<true, false, false>(t, *this);
-      this->store_trig(t);
-      if constexpr (!direct) this->solve_kinematic_equations(*this);
-      if constexpr (velocity) {
-        this->solve_rates(s);
-        this->template pass<false, true, false>(t, *this);
-      }
-      if constexpr (acceleration) {
-        this->solve_accelerations(*this, s);
-        this->template pass<false, false, true>(t, *this);
-      }
-    }
-  }
+  KANE_INLINE_FLATTEN void update(const St& s) requires(detail::inlined_entry<pass_type>) { pass_at(s); }
+  KANE_FLATTEN void update(const St& s) requires(!detail::inlined_entry<pass_type>) { pass_at(s); }
 
   const St& state() const { return *st_; }
 
@@ -110,6 +91,28 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   }
 
  private:
+  KANE_ALWAYS_INLINE void pass_at(const St& s) {
+    st_ = &s;
+    const auto t = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
+    constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
+    if constexpr (!solves) {
+      this->template pass<true, velocity, acceleration>(t, *this);  // frame after frame, all levels at once
+      this->store_trig(t);
+    } else {  // Y, Z need the axes; Y', Z' the angular velocities
+      this->template pass<true, false, false>(t, *this);
+      this->store_trig(t);
+      if constexpr (!direct) this->solve_kinematic_equations(*this);
+      if constexpr (velocity) {
+        this->solve_rates(s);
+        this->template pass<false, true, false>(t, *this);
+      }
+      if constexpr (acceleration) {
+        this->solve_accelerations(*this, s);
+        this->template pass<false, false, true>(t, *this);
+      }
+    }
+  }
+
   const St* st_ = nullptr;
 };
 

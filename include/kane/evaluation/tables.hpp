@@ -73,7 +73,7 @@ constexpr auto remainder_of(const X& x) {
 // the expression dx/du_r + sum_s dx/dq_s' W_sr, t is x_0 + sum_s dx/dq_s' X_s,
 // with the zeros and ones of W and X known at compile time (speeds.hpp).
 template <class A, bool Table, bool Rest, class X, class Ev>
-KANE_INLINE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
+KANE_ALWAYS_INLINE auto linear_parts_in(const X& x, const Ev& ev) {
   using Sp = speeds_of<Ev>;
   constexpr int rows = ScalarExpr<X> ? 1 : 3;
   Eigen::Matrix<typename Ev::scalar, rows, int(Sp::n)> t;
@@ -89,6 +89,14 @@ KANE_INLINE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
     return t;
   else
     return rest;
+}
+template <class A, bool Table, bool Rest, class X, class Ev>
+requires(inlined_entry<Ev>) KANE_INLINE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
+  return linear_parts_in<A, Table, Rest>(x, ev);
+}
+template <class A, bool Table, bool Rest, class X, class Ev>
+requires(!inlined_entry<Ev>) KANE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
+  return linear_parts_in<A, Table, Rest>(x, ev);
 }
 }  // namespace detail
 
