@@ -1,11 +1,20 @@
-// kane: Kane's method with reference frames as types. The chapters, each
-// including only the ones above it:
+// kane: Kane's method with reference frames as types. The chapters, in order,
+// each including only the ones above it:
 #pragma once
 
-#include "kane/evaluation.hpp"   // the evaluator and the numbers of all of the above
-#include "kane/expressions.hpp"  // scalar and vector expressions
-#include "kane/frames.hpp"       // frames, coordinates, components, direction cosines
-#include "kane/kinematics.hpp"   // derivatives, angular velocities, points
-#include "kane/speeds.hpp"       // generalized speeds, partial velocities, constraints
+// frames, coordinates, components, direction cosines
+#include "kane/frames.hpp"
+
+// scalar and vector expressions
+#include "kane/expressions.hpp"
+
+// derivatives, angular velocities, points
+#include "kane/kinematics.hpp"
+
+// generalized speeds, partial velocities, constraints
+#include "kane/speeds.hpp"
+
+// the evaluator and the numbers of all of the above
+#include "kane/evaluation.hpp"
 
 // Printing: #include <kane/print.hpp> (kept out of the core).
