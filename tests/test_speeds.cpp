@@ -6,6 +6,7 @@
 #include <limits>
 #include <random>
 
+#include "../examples/models/disc.hpp"
 #include "data/sympy_speeds.hpp"
 #include "trees.hpp"
 
@@ -16,31 +17,17 @@ using trees::N;
 namespace {
 template <std::size_t I>
 using q = kane::coordinate<I>;
-struct Rad : kane::parameter<1> {};
-inline constexpr Rad r;
 
-// The rolling disc: yaw q1 about n3, lean q2 about y1, spin q3 about l2.
-struct Y : kane::frame<N, kane::simple<kane::axis::z, q<1>>> {};
-struct L : kane::frame<Y, kane::simple<kane::axis::x, q<2>>> {};
-struct R : kane::frame<L, kane::simple<kane::axis::y, q<3>>> {};
-inline constexpr auto w = kane::angular_velocity<N, R>();
-// u1..u3: ^N w^R in L.
-using disc3_speeds = kane::speeds<dot(w, e<L, 1>), dot(w, e<L, 2>), dot(w, e<L, 3>)>;
-static_assert(std::is_same_v<disc3_speeds, kane::angular_velocity_speeds<N, R, L>>);
-// Three coordinates: the contact point C has zero velocity; the centre is C + r l3.
-struct C : kane::origin<N> {};
-struct Centre : kane::point<C, r * e<L, 3>> {};
-inline constexpr auto v_centre = kane::body_point_velocity<N, R, C, Centre>();
-
-// Five coordinates: the contact point at q4 n1 + q5 n2, u4 = q4', u5 = q5' dependent.
-struct O : kane::origin<N> {};
-struct Contact : kane::point<O, kane::q<4> * e<N, 1> + kane::q<5> * e<N, 2>> {};
-struct Centre5 : kane::point<Contact, r * e<L, 3>> {};
-struct Below : kane::point<Centre5, -r * e<L, 3>> {};  // the disc's point at the contact
-using disc5_speeds = kane::angular_velocity_speeds<N, R, L, kane::dt(kane::q<4>), kane::dt(kane::q<5>)>;
-inline constexpr auto v_contact = kane::body_point_velocity<N, R, Centre5, Below>();
-using rolling =
-    kane::nonholonomic<disc5_speeds, kane::dependent<4, 5>, dot(v_contact, e<N, 1>), dot(v_contact, e<N, 2>)>;
+// The rolling disc of examples/models/disc.hpp (yaw q1 about n3, lean q2 about y1, spin q3 about
+// l2), rooted at its own Newtonian frame DN.
+namespace disc = models::disc;
+using DN = disc::N;
+using disc::w, disc::v_centre, disc::rolling;
+using disc::Y, disc::L, disc::R, disc::C, disc::Centre, disc::O, disc::Contact, disc::Centre5, disc::Below;
+inline constexpr auto v_contact = disc::v_below;
+using disc3_speeds = disc::speeds3;  // u1..u3: ^N w^R in L
+using disc5_speeds = disc::speeds5;
+static_assert(std::is_same_v<disc3_speeds, kane::angular_velocity_speeds<DN, R, L>>);
 static_assert(rolling::p == 3 && rolling::independents == std::array<std::size_t, 3>{1, 2, 3});
 
 using St3 = kane::state<double, 3, 3, 1>;
@@ -86,10 +73,10 @@ TEST_CASE(
     // ^N w^R in L equals u.
     const auto wL = kane::express<L>(w, ev);
     for (int i = 0; i < 3; ++i) CHECK(wL[i] == Approx(c.u[i]).margin(1e-13));
-    const auto vc = kane::express<N>(v_centre, ev);
+    const auto vc = kane::express<DN>(v_centre, ev);
     for (int i = 0; i < 3; ++i) CHECK(vc[i] == Approx(c.vc_N[i]).margin(1e-13));
-    const auto V = kane::partial_velocities<N>(v_centre, ev);
-    const auto Wt = kane::partial_velocities<N>(w, ev);
+    const auto V = kane::partial_velocities<DN>(v_centre, ev);
+    const auto Wt = kane::partial_velocities<DN>(w, ev);
     CHECK(max_diff(V, c.vc_partials) < 1e-13);
     CHECK(max_diff(Wt, c.w_partials) < 1e-13);
     // Closed forms: v_1 = -r l2, v_2 = r l1, v_3 = 0; w_r = l_r; remainders zero.
@@ -98,10 +85,10 @@ TEST_CASE(
     CHECK((V.col(1) - c.r * l.col(0)).norm() < 1e-14);
     CHECK(V.col(2).norm() < 1e-14);
     CHECK((Wt - l).norm() < 1e-14);
-    CHECK(kane::remainder<N>(v_centre, ev).norm() < 1e-14);
+    CHECK(kane::remainder<DN>(v_centre, ev).norm() < 1e-14);
     // v = sum v_r u_r + v_t
     const Eigen::Vector3d u(c.u[0], c.u[1], c.u[2]);
-    CHECK((V * u + kane::remainder<N>(v_centre, ev) - vc.eigen()).norm() < 1e-13);
+    CHECK((V * u + kane::remainder<DN>(v_centre, ev) - vc.eigen()).norm() < 1e-13);
   }
 }
 
@@ -125,12 +112,12 @@ TEST_CASE("speeds: the five-coordinate disc's constraints, A, B and nonholonomic
     CHECK((sol.A - A).cwiseAbs().maxCoeff() < 1e-13);
     // The nonholonomic partial velocities of the centre equal the holonomic
     // ones of the three-coordinate disc; so do the partial angular velocities.
-    const auto v5 = kane::velocity<N, Centre5>();
-    const auto Vnh = kane::nonholonomic_partial_velocities<N, rolling>(v5, ev, sol);
+    const auto v5 = kane::velocity<DN, Centre5>();
+    const auto Vnh = kane::nonholonomic_partial_velocities<DN, rolling>(v5, ev, sol);
     CHECK(max_diff(Vnh, c.v5_partials) < 1e-13);
     CHECK(max_diff(Vnh, c.vc_partials) < 1e-13);
-    CHECK(max_diff(kane::nonholonomic_partial_velocities<N, rolling>(w, ev, sol), c.w_partials) < 1e-13);
-    CHECK(kane::nonholonomic_remainder<N, rolling>(v5, ev, sol).norm() < 1e-14);
+    CHECK(max_diff(kane::nonholonomic_partial_velocities<DN, rolling>(w, ev, sol), c.w_partials) < 1e-13);
+    CHECK(kane::nonholonomic_remainder<DN, rolling>(v5, ev, sol).norm() < 1e-14);
     // Constraints hold for u_dep = A u_ind + B: the contact point is at rest.
     St5 s2 = s;
     const Eigen::Vector3d ui(c.u[0], c.u[1], c.u[2]);
@@ -139,7 +126,7 @@ TEST_CASE("speeds: the five-coordinate disc's constraints, A, B and nonholonomic
     s2.u[4] = ud(1);
     Ev5 ev2;
     ev2.update(s2);
-    CHECK(kane::express<N>(v_contact, ev2).eigen().norm() < 1e-13);
+    CHECK(kane::express<DN>(v_contact, ev2).eigen().norm() < 1e-13);
   }
 }
 
@@ -153,14 +140,14 @@ TEST_CASE("speeds: law tests over random states: v = sum v_r u_r + v_t, constrai
     Ev5 ev;
     ev.update(s);
     REQUIRE(ev.status() == kane::solve_status::ok);
-    const auto v5 = kane::velocity<N, Centre5>();
+    const auto v5 = kane::velocity<DN, Centre5>();
     const Eigen::Matrix<double, 5, 1> u = Eigen::Map<const Eigen::Matrix<double, 5, 1>>(s.u.data());
-    CHECK((kane::partial_velocities<N>(v5, ev) * u + kane::remainder<N>(v5, ev) -
-           kane::express<N>(v5, ev).eigen())
+    CHECK((kane::partial_velocities<DN>(v5, ev) * u + kane::remainder<DN>(v5, ev) -
+           kane::express<DN>(v5, ev).eigen())
               .norm() < 1e-12);
-    CHECK(
-        (kane::partial_velocities<N>(w, ev) * u + kane::remainder<N>(w, ev) - kane::express<N>(w, ev).eigen())
-            .norm() < 1e-12);
+    CHECK((kane::partial_velocities<DN>(w, ev) * u + kane::remainder<DN>(w, ev) -
+           kane::express<DN>(w, ev).eigen())
+              .norm() < 1e-12);
     const auto sol = kane::solve_constraints<rolling>(ev);
     St5 s2 = s;
     const Eigen::Vector2d ud = sol.A * u.head<3>() + sol.B;
@@ -168,11 +155,11 @@ TEST_CASE("speeds: law tests over random states: v = sum v_r u_r + v_t, constrai
     s2.u[4] = ud(1);
     Ev5 ev2;
     ev2.update(s2);
-    CHECK(kane::express<N>(v_contact, ev2).eigen().norm() < 1e-12);
+    CHECK(kane::express<DN>(v_contact, ev2).eigen().norm() < 1e-12);
     // With the dependent speeds from the constraints, v = sum v~_s u_s + v~_t.
-    const auto Vnh = kane::nonholonomic_partial_velocities<N, rolling>(v5, ev2, sol);
-    CHECK((Vnh * u.head<3>() + kane::nonholonomic_remainder<N, rolling>(v5, ev2, sol) -
-           kane::express<N>(v5, ev2).eigen())
+    const auto Vnh = kane::nonholonomic_partial_velocities<DN, rolling>(v5, ev2, sol);
+    CHECK((Vnh * u.head<3>() + kane::nonholonomic_remainder<DN, rolling>(v5, ev2, sol) -
+           kane::express<DN>(v5, ev2).eigen())
               .norm() < 1e-12);
   }
 }
@@ -201,7 +188,7 @@ TEST_CASE("speeds: a singular dependent block gives NaN and a status, never a tr
   ev.update(s);
   CHECK(ev.status() == kane::solve_status::singular);
   CHECK(std::isnan(ev.coordinate_value<1, 1>()));
-  CHECK(std::isnan(kane::express<N>(v_contact, ev)[0]));
+  CHECK(std::isnan(kane::express<DN>(v_contact, ev)[0]));
   const auto sol = kane::solve_constraints<rolling>(ev);
   CHECK(sol.status != kane::solve_status::ok);
   CHECK(std::isnan(sol.A(0, 0)));
@@ -440,7 +427,8 @@ TEST_CASE("speeds: partial velocities and constraints need only the pose level")
     const auto sol = kane::solve_constraints<rolling>(ev);
     REQUIRE(sol.status == kane::solve_status::ok);
     CHECK(max_diff(sol.A, c.A) < 1e-13);
-    const auto Vnh = kane::nonholonomic_partial_velocities<N, rolling>(kane::velocity<N, Centre5>(), ev, sol);
+    const auto Vnh =
+        kane::nonholonomic_partial_velocities<DN, rolling>(kane::velocity<DN, Centre5>(), ev, sol);
     CHECK(max_diff(Vnh, c.v5_partials) < 1e-13);
   }
   // A singular Y at the pose level: W's numbers and the constraints are NaN, with a status.
