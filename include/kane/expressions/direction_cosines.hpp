@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "kane/expressions/expr.hpp"
+#include "kane/expressions/functions.hpp"
 #include "kane/frames/axis.hpp"
 
 namespace kane::detail {

@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "kane/expressions/expr.hpp"
+#include "kane/expressions/functions.hpp"
 #include "kane/frames/frame.hpp"
 
 namespace kane {

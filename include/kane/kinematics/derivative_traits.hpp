@@ -1,0 +1,216 @@
+// What derivatives need to know of expression nodes: their kinds, the frame
+// and root a vector uses, the axes behind partial angular velocities, the
+// literals moved into types (freeze), and which rates q' and speeds u an
+// expression holds (so a derivative by another one is zero without being built).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+
+#include "kane/detail/frame_check.hpp"
+#include "kane/detail/tree.hpp"
+#include "kane/expressions/expr.hpp"
+#include "kane/expressions/functions.hpp"
+#include "kane/expressions/vector.hpp"
+#include "kane/kinematics/angular_velocity.hpp"
+
+namespace kane {
+
+namespace detail {
+
+template <class X>
+struct power_info : std::false_type {};
+template <class X, int N>
+struct power_info<power<X, N>> : std::true_type {
+  static constexpr int n = N;
+};
+template <template <class, class> class T, class L, class R>
+constexpr bool binary_node(T<L, R>*) {
+  return is_v<T<L, R>, add> || is_v<T<L, R>, sub> || is_v<T<L, R>, mul> || is_v<T<L, R>, quot> ||
+         is_v<T<L, R>, vsum> || is_v<T<L, R>, vdiff> || is_v<T<L, R>, vcross> || is_v<T<L, R>, vdot>;
+}
+constexpr bool binary_node(void*) { return false; }
+template <template <class, class> class T, class L, class R, class A, class B>
+constexpr auto rebuild(T<L, R>*, A a, B b) {
+  return T<A, B>(a, b);
+}
+template <class Fn, class X, class A>
+constexpr auto rebuild(unary<Fn, X>*, A a) {
+  return unary<Fn, A>(a);
+}
+
+// The expression X (a template argument) with every literal moved into its
+// type: nodes become empty, so derivatives of X cost nothing to build.
+template <auto X>
+constexpr auto freeze() {
+  using T = std::remove_cv_t<decltype(X)>;
+  if constexpr (std::is_same_v<T, literal>)
+    return fixed<X>{};
+  else if constexpr (std::is_empty_v<T>)
+    return X;
+  else if constexpr (binary_node(static_cast<T*>(nullptr)))
+    return rebuild(static_cast<T*>(nullptr), freeze<X.l>(), freeze<X.r>());
+  else if constexpr (is_v<T, scaled>)
+    return scaled(freeze<X.s>(), freeze<X.v>());
+  else if constexpr (is_v<T, neg>)
+    return neg(freeze<X.x>());
+  else if constexpr (is_v<T, vneg>)
+    return vneg(freeze<X.v>());
+  else if constexpr (is_v<T, unary>)
+    return rebuild(static_cast<T*>(nullptr), freeze<X.x>());
+  else if constexpr (power_info<T>::value)
+    return power<decltype(freeze<X.x>()), power_info<T>::n>(freeze<X.x>());
+  else
+    return X;  // a call keeps its function object
+}
+
+template <class X>
+struct coordinate_info : std::false_type {};
+template <std::size_t I, std::size_t D>
+struct coordinate_info<coordinate<I, D>> : std::true_type {};
+template <class X>
+struct speed_info : std::false_type {};
+template <std::size_t I, std::size_t D>
+struct speed_info<speed<I, D>> : std::true_type {};
+
+template <class X>
+concept LeafConstant =
+    is_constant<X>::value || std::is_same_v<X, literal> || is_fixed<X>::value || Parameter<X>;
+
+// A frame that the vector V uses (void if none): its root is V's root.
+template <class V>
+struct some_frame {
+  using type = void;
+};
+template <class F, int I>
+struct some_frame<unit<F, I>> {
+  using type = F;
+};
+template <class F>
+struct some_frame<omega<F>> {
+  using type = F;
+};
+template <class F>
+struct some_frame<alpha<F>> {
+  using type = F;
+};
+template <class A, class B>
+struct some_frame<angular_velocity_of<A, B>> {
+  using type = A;
+};
+template <class A, class B>
+struct some_frame<angular_acceleration_of<A, B>> {
+  using type = A;
+};
+template <class S, class V>
+struct some_frame<scaled<S, V>> : some_frame<V> {};
+template <class V>
+struct some_frame<vneg<V>> : some_frame<V> {};
+template <template <class, class> class T, class L, class R>
+requires(is_v<T<L, R>, vsum> || is_v<T<L, R>, vdiff> || is_v<T<L, R>, vcross>) struct some_frame<T<L, R>> {
+  using type = std::conditional_t<std::is_void_v<typename some_frame<L>::type>, typename some_frame<R>::type,
+                                  typename some_frame<L>::type>;
+};
+
+template <class V>
+constexpr auto root_frame_of() {
+  using F = typename some_frame<V>::type;
+  if constexpr (std::is_void_v<F>)
+    return static_cast<root_frame*>(nullptr);
+  else
+    return static_cast<root_of<F>*>(nullptr);
+}
+template <class V>
+using root_frame_of_t = std::remove_pointer_t<decltype(root_frame_of<V>())>;
+
+// The axis of the edge above X as a vector in X, if its coordinate is q_R.
+template <std::size_t R, class X>
+constexpr auto edge_axis() {
+  if constexpr (X::step::coordinate::index != R)
+    return zero_vector{};
+  else {
+    using K = typename X::step::axis;
+    constexpr int p = unit_axis<K>::principal;
+    if constexpr (p >= 0)
+      return unit<X, p + 1>{};
+    else {
+      constexpr auto k = unit_axis<K>::value;
+      return fixed<literal(k[0])>{} * unit<X, 1>{} + fixed<literal(k[1])>{} * unit<X, 2>{} +
+             fixed<literal(k[2])>{} * unit<X, 3>{};
+    }
+  }
+}
+template <std::size_t R, class... Up, class... Down>
+constexpr auto partial_omega(list<Up...>, list<Down...>) {
+  return (zero_vector{} - ... - edge_axis<R, Up>()) + (zero_vector{} + ... + edge_axis<R, Down>());
+}
+
+// The rates q_i' and speeds u_i that an expression may hold (bit i - 1; all
+// bits for an index beyond 64 or a node not listed): the partial derivative
+// by a rate or speed outside the set is zero (sums and products drop the
+// type-level zeros), so it is returned without being built.
+struct leaf_set {
+  std::uint64_t rates = 0, speeds = 0;
+  bool all = false;  // a query that every expression may hold (a leaf other than q' or u)
+};
+constexpr leaf_set operator|(leaf_set a, leaf_set b) {
+  return {a.rates | b.rates, a.speeds | b.speeds, a.all || b.all};
+}
+constexpr bool overlaps(leaf_set x, leaf_set leaf) {
+  return leaf.all || (x.rates & leaf.rates) != 0 || (x.speeds & leaf.speeds) != 0;
+}
+constexpr std::uint64_t leaf_bit(std::size_t i) {
+  return i >= 1 && i <= 64 ? std::uint64_t(1) << (i - 1) : ~std::uint64_t(0);
+}
+inline constexpr leaf_set any_leaf{~std::uint64_t(0), ~std::uint64_t(0)};
+// The rates of the edges from the root down to F (those of ^R w^F).
+template <class F>
+constexpr std::uint64_t path_rates() {
+  if constexpr (std::is_void_v<typename F::tree_parent>)
+    return 0;
+  else
+    return leaf_bit(F::step::coordinate::index) | path_rates<typename F::tree_parent>();
+}
+template <class X>
+constexpr leaf_set leaves_in();
+template <class X>
+inline constexpr leaf_set leaves_of = leaves_in<X>();  // once per node type
+template <class X>
+constexpr leaf_set leaves_in() {
+  if constexpr (coordinate_info<X>::value)
+    return {X::order == 1 ? leaf_bit(X::index) : 0, 0};
+  else if constexpr (speed_info<X>::value)
+    return {0, X::order == 0 ? leaf_bit(X::index) : 0};
+  else if constexpr (std::is_same_v<X, time_variable> || LeafConstant<X> || is_unit<X>::value ||
+                     is_zero_vector_v<X>)
+    return {};
+  else if constexpr (binary_node(static_cast<X*>(nullptr)))
+    return leaves_of<decltype(X::l)> | leaves_of<decltype(X::r)>;
+  else if constexpr (is_v<X, scaled>)
+    return leaves_of<decltype(X::s)> | leaves_of<decltype(X::v)>;
+  else if constexpr (is_v<X, neg> || is_v<X, unary> || power_info<X>::value || is_v<X, call>)
+    return leaves_of<decltype(X::x)>;
+  else if constexpr (is_v<X, omega>)
+    return {path_rates<typename X::frame>(), 0};
+  else if constexpr (is_v<X, angular_velocity_of>)
+    return {path_rates<typename X::observer>() | path_rates<typename X::body>(), 0};
+  else if constexpr (is_v<X, vneg> || Quantity<X>)
+    return leaves_of<decltype(X::v)>;
+  else
+    return any_leaf;  // alpha, angular_acceleration_of, unknown nodes: partial_in says why
+}
+// The set of the leaf Leaf, for the query above.
+template <class Leaf>
+constexpr leaf_set leaf_query() {
+  if constexpr (coordinate_info<Leaf>::value) {
+    if constexpr (Leaf::order == 1) return {leaf_bit(Leaf::index), 0};
+  } else if constexpr (speed_info<Leaf>::value) {
+    if constexpr (Leaf::order == 0) return {0, leaf_bit(Leaf::index)};
+  }
+  return {0, 0, true};
+}
+
+}  // namespace detail
+
+}  // namespace kane
