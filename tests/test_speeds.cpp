@@ -244,6 +244,11 @@ TEST_CASE("speeds: a 3-2-1 body with body-frame angular velocity components as s
   CHECK(ev.status() == kane::solve_status::singular);
   CHECK(std::isnan(ev.coordinate_value<2, 1>()));
   CHECK(std::isnan(kane::express<N>(wb, ev)[0]));
+  // NaN in the coupled block (q1', q2'): not finite rather than singular.
+  s.q[1] = std::numeric_limits<double>::quiet_NaN();
+  ev.update(s);
+  CHECK(ev.status() == kane::solve_status::not_finite);
+  CHECK(std::isnan(ev.coordinate_value<3, 1>()));
 }
 
 namespace {

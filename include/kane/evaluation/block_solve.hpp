@@ -74,9 +74,8 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
   });
   solve_status status = scale <= std::numeric_limits<S>::max() ? solve_status::ok : solve_status::not_finite;
   const S tol = std::numeric_limits<S>::epsilon() * S(n) * scale;
-  auto fail = [&](S pivot) {
-    if (status == solve_status::ok)
-      status = pivot == pivot ? solve_status::singular : solve_status::not_finite;
+  auto fail = [&](bool finite) {  // the first failure decides the status
+    if (status == solve_status::ok) status = finite ? solve_status::singular : solve_status::not_finite;
   };
   static_for<Sys::form.count>([&](auto b) {
     constexpr std::size_t first = Sys::form.start[b], size = Sys::form.start[b + 1] - first;
@@ -95,7 +94,7 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
       S inverse = S(1);
       if constexpr (Sys::m[row][c] == entry::other) {
         const S pivot = m[row][c];
-        if (!(abs(pivot) > tol)) fail(pivot);
+        if (!(abs(pivot) > tol)) fail(pivot == pivot);
         inverse = S(1) / pivot;
       }
       static_for<k>([&](auto j) {
@@ -111,7 +110,7 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
         block(a, e) = value(index_c<Sys::form.row[Sys::form.order[first + a]]>{},
                             index_c<Sys::form.order[first + e]>{});
       });
-      if (!invert(block, inverse, tol)) fail(block.sum());
+      if (!invert(block, inverse, tol)) fail(block.allFinite());
       static_for<k>([&](auto j) {
         if constexpr (Sys::x[Sys::form.order[first]][j] != entry::zero) {
           Eigen::Matrix<S, int(size), 1> t;
