@@ -47,7 +47,8 @@ template <class X>
 concept has_dt = requires(X x) {
   kane::dt(x);
 };
-static_assert(has_dt<decltype(q<1> * q<2>)> && !has_dt<decltype(kane::e<A, 1>)> && !has_dt<double>);
+// dt(v) of a vector is found and rejected by a static assertion naming the rule (compile_fail).
+static_assert(has_dt<decltype(q<1> * q<2>)> && has_dt<decltype(kane::e<A, 1>)> && !has_dt<double>);
 
 template <class X>
 double value(const X& x, const state6& s) {

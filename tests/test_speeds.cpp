@@ -53,8 +53,9 @@ template <class X, class Leaf>
 concept has_partial = requires(X x, Leaf l) {
   kane::partial_velocity<q6>(x, l);
 };
+// by a coordinate: found and rejected by a static assertion naming the rule (compile_fail/speeds)
 static_assert(has_partial<kane::unit<N, 1>, kane::speed<1>> &&
-              !has_partial<kane::unit<N, 1>, kane::coordinate<1>>);
+              has_partial<kane::unit<N, 1>, kane::coordinate<1>>);
 }  // namespace
 
 TEST_CASE(
@@ -320,6 +321,7 @@ TEST_CASE("speeds: holonomic constraints, their residuals, velocity constraints 
   ev.update(s);
   for (double r : kane::residuals<cfg>(ev)) CHECK(std::abs(r) < 1e-14);
   s.q[0] += 0.01;  // off the constraint surface
+  ev.update(s);    // the evaluator holds a copy of the state of its last update
   const auto res = kane::residuals<cfg>(ev);
   const double x1 = s.q[0], y1 = s.q[1];
   CHECK(res[2] == Approx(x1 * x1 + y1 * y1 - la * la));

@@ -1,13 +1,24 @@
-# Build TARGET in BUILD_DIR; pass if the build fails and its output matches
-# every regular expression of REGEX (separated by " && ").
-execute_process(COMMAND ${CMAKE_COMMAND} --build ${BUILD_DIR} --target ${TARGET}
-                RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE out)
-if(result EQUAL 0)
-  message(FATAL_ERROR "${TARGET} compiled, but it must not")
+# Build TARGET in BUILD_DIR, or compile SOURCE with CXX and FLAGS (another
+# compiler); pass if the compile fails and its first error line matches every
+# regular expression of REGEX (separated by " && "). Only the first error line
+# counts: later lines quote the source, which would match anything it names.
+if(DEFINED CXX)
+  separate_arguments(flags UNIX_COMMAND "${FLAGS}")
+  execute_process(COMMAND ${CXX} ${flags} -fsyntax-only ${SOURCE} RESULT_VARIABLE result OUTPUT_VARIABLE out
+                  ERROR_VARIABLE out)
+  set(what "${SOURCE} (${CASE})")
+else()
+  execute_process(COMMAND ${CMAKE_COMMAND} --build ${BUILD_DIR} --target ${TARGET} RESULT_VARIABLE result
+                  OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  set(what ${TARGET})
 endif()
+if(result EQUAL 0)
+  message(FATAL_ERROR "${what} compiled, but it must not")
+endif()
+string(REGEX MATCH "[^\n]*error: [^\n]*" first "${out}")
 string(REPLACE " && " ";" regexes "${REGEX}")
 foreach(regex IN LISTS regexes)
-  if(NOT out MATCHES "${regex}")
-    message(FATAL_ERROR "${TARGET} failed, but its diagnostic does not match\n  ${regex}\n${out}")
+  if(NOT first MATCHES "${regex}")
+    message(FATAL_ERROR "${what} failed, but its first error line does not match\n  ${regex}\n${first}\n\n${out}")
   endif()
 endforeach()

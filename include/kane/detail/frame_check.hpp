@@ -1,6 +1,9 @@
-// The frame checks in one place. A mismatch selects a deleted overload whose
-// signature carries one of these tags, so the first error line names the rule,
-// the fix and both frames ([with LeftFrame = N; RightFrame = A]).
+// The rules of the types in one place. Each rule is a class template that is
+// declared and never defined; its name says the rule and the fix, its
+// arguments are the frames (or points) involved. A broken rule instantiates
+//   static_assert(detail::check<false, error::rule<A, B>>)
+// and sizeof of the undefined class is the first error of g++ and clang:
+//   error: invalid application of 'sizeof' to incomplete type 'kane::error::rule<N, A>'
 #pragma once
 
 #include <type_traits>
@@ -11,32 +14,68 @@ template <class F1, class F2>
 concept DifferentFrames = !std::is_same_v<F1, F2>;
 
 namespace error {
-// ^N p + ^A p: write both in one frame first, e.g. express<N>(p_A, state).
+// Components: ^N p + ^A p; write both in one frame first, e.g. express<N>(p_A, ev).
 template <class LeftFrame, class RightFrame>
-struct frames_differ_express_one_in_the_others_frame_first {};
-// vec<A> = vec<N>: change the frame with express<A>(p_N, state).
+struct frames_differ_express_one_in_the_others_frame_first;
+// vec<A> = vec<N>: change the frame with express<A>(p_N, ev).
 template <class GivenFrame, class TargetFrame>
-struct frames_differ_use_express_to_change_frame {};
+struct frames_differ_use_express_to_change_frame;
 // ^C P^D * ^A P^B needs C == B: the result maps A to D.
 template <class LeftFrom, class RightTo>
-struct dcm_product_needs_left_from_frame_equal_right_to_frame {};
+struct dcm_product_needs_left_from_frame_equal_right_to_frame;
 // ^A P^B * ^C p needs C == A: express the components in A first.
 template <class DcmFrom, class VecFrame>
-struct dcm_applies_only_to_components_in_its_from_frame {};
-// ^A w^B + ^C w^D needs B == C (eq. 10): the sum is ^A w^D.
+struct dcm_applies_only_to_components_in_its_from_frame;
+// ^A w^B + ^C w^D needs B == C, ^A w^B - ^C w^D needs A == C or B == D (eq. 10).
 template <class FirstBody, class SecondObserver>
-struct angular_velocities_do_not_chain_the_first_body_must_be_the_second_observer {};
-// ^A v^P + ^B v^Q: measure both in one frame first, velocity<A, Q>().
+struct angular_velocities_do_not_chain_the_first_body_must_be_the_second_observer;
+template <class FirstObserver, class FirstBody, class SecondObserver, class SecondBody>
+struct angular_velocities_differ_only_with_one_observer_or_one_body_in_common;
+// ^A v^P + ^B v^Q (also scaled, negated, summed, differentiated): measure both in one frame.
 template <class FirstObserver, class SecondObserver>
-struct quantities_measured_in_different_frames_measure_both_in_one_frame {};
-// dt(v) of a vector: its derivative depends on the frame; write dt<A>(v).
+struct quantities_measured_in_different_frames_measure_both_in_one_frame;
+// Frames of two trees in one expression, evaluator or express.
+template <class FirstRoot, class SecondRoot>
+struct frames_of_two_trees_relate_them_through_a_common_root_frame;
+template <class ExpressionRoot, class EvaluatorRoot>
+struct expression_and_evaluator_in_two_trees_build_the_evaluator_on_the_expression_tree;
+// Points: a chain joins them; velocities need a point of the chain fixed in the observer.
+template <class P, class Q>
+struct points_not_joined_locate_both_from_one_origin;
+template <class Observer, class P>
+struct no_point_of_the_chain_is_fixed_in_the_observer_locate_the_point_from_one;
+// The two-point theorem (P, Q fixed in B) and the one-point theorem (Q fixed in B).
+template <class Body, class Q, class P>
+struct two_point_theorem_needs_both_points_fixed_in_the_body_use_one_point_velocity;
+template <class Body, class Q>
+struct one_point_theorem_needs_the_reference_point_fixed_in_the_body;
+// dt(v), diff(v, q) of a vector: its derivative depends on the frame.
 template <class Vector>
-struct a_vector_derivative_needs_a_frame_write_dt_A_of_v {};
+struct a_vector_derivative_needs_a_frame_write_dt_A_of_v;
 template <class Vector>
-struct a_vector_derivative_needs_a_frame_write_diff_A_of_v_q {};
+struct a_vector_derivative_needs_a_frame_write_diff_A_of_v_q;
 // partial_velocity(v, q<1>): partial velocities are d/du_r; pass u<r>.
 template <class NotASpeed>
-struct partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r {};
+struct partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r;
+// Tables of one speed set read with an evaluator or a solution of another.
+template <class EvaluatorSpeeds, class TableSpeeds>
+struct evaluator_and_constraints_use_different_speed_sets;
+template <class SolvedConstraints, class UsedConstraints>
+struct constraint_solution_of_other_constraints_solve_these;
+// u_r read by an evaluator without a speed set (u = q', s.u unread): declare the speeds.
+template <class Speed>
+struct evaluator_without_speed_set_reads_no_u_declare_the_speed_set;
+// The evaluator holds (or is one edge above) every frame it is asked for.
+template <class Frame>
+struct evaluator_does_not_hold_the_frame_add_it_to_frames;
 }  // namespace error
+
+namespace detail {
+// true, or the first error names Rule (sizeof of an undefined class).
+template <bool Ok, class Rule>
+inline constexpr bool check = true;
+template <class Rule>
+inline constexpr bool check<false, Rule> = sizeof(Rule) > 0;
+}  // namespace detail
 
 }  // namespace kane

@@ -10,6 +10,7 @@
 
 #include <type_traits>
 
+#include "kane/detail/frame_check.hpp"
 #include "kane/detail/list.hpp"
 
 namespace kane::detail {
@@ -48,9 +49,9 @@ struct closure {
 // The path from A to B, required to exist: the one check that two frames share a tree.
 template <class A, class B>
 struct joined_frames : path<A, B> {
-  static_assert(path<A, B>::joined,
-                "kane: no path of the frame tree joins these two frames (their roots differ); "
-                "relate them through a common root frame");
+  static_assert(
+      check<path<A, B>::joined,
+            error::frames_of_two_trees_relate_them_through_a_common_root_frame<root_of<A>, root_of<B>>>);
 };
 // The same check where a path is walked for direction cosines (frames/express.hpp).
 template <class A, class B>

@@ -3,9 +3,25 @@
 // expression trees went through the stack (store-forwarding stalls).
 #pragma once
 
+#include <limits>
+#include <type_traits>
+
 #include "kane/detail/inline.hpp"
 
 namespace kane::detail {
+
+// An array (of arrays) of S with every number NaN: caches before their first write.
+template <class A>
+constexpr A nan_filled() {
+  A a{};
+  for (auto& x : a) {
+    if constexpr (requires { x.size(); })
+      x = nan_filled<std::remove_cvref_t<decltype(x)>>();
+    else
+      x = std::numeric_limits<std::remove_cvref_t<decltype(x)>>::quiet_NaN();
+  }
+  return a;
+}
 
 template <class S>
 struct v3 {

@@ -179,10 +179,11 @@ inline constexpr bool inlined_entry = Ev::size <= 8;
 template <class A, class V, class Ev>
 KANE_ALWAYS_INLINE vec<A, typename Ev::scalar> express_in(const V& v, const Ev& ev) {
   using R = root_of<A>;
-  using VR = root_frame_of_t<V>;
-  static_assert(std::is_same_v<VR, root_frame> || std::is_same_v<VR, R>,
-                "kane: no path of the frame tree joins the vector's frames and the frame of expression; "
-                "express it in a frame of its own tree");
+  static_assert(one_tree_v<join_trees_t<tree_of_t<V>, R>>);
+  static_assert(
+      check < std::is_void_v<tree_of_t<V>> || std::is_same_v<tree_of_t<V>, root_of<typename Ev::root>>,
+      error::expression_and_evaluator_in_two_trees_build_the_evaluator_on_the_expression_tree < tree_of_t<V>,
+      typename Ev::root >>);
   const auto r = in_frame<A>(eval_vector(v, ev), ev);
   return vec<A, typename Ev::scalar>(r.x, r.y, r.z);
 }

@@ -7,10 +7,14 @@
 //   kane::vec<N> v = kane::express<N>(expr, ev);     // ^N components of expr
 //
 // With a speed set, q' and q'' are solved from u and u' (kinematic_equations.hpp).
-// update(s) keeps a pointer to s: s must outlive the evaluations that follow.
+// update(s) copies s: every result is of the state of the last update, so a
+// result is never a mix of two states and s may be a temporary. Before the
+// first update the state is NaN (updated() is false, debug builds assert):
+// every result is NaN, never a read of memory not written.
 // Evaluating allocates nothing and calls no sin or cos of a frame coordinate.
 #pragma once
 
+#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <type_traits>
@@ -34,6 +38,8 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
     : public detail::outward_pass<typename St::scalar, typename detail::closure<Fs...>::type, Level>,
       public detail::kinematic_equations<St, Speeds> {
   using pass_type = detail::outward_pass<typename St::scalar, typename detail::closure<Fs...>::type, Level>;
+  static_assert((detail::one_tree_v<detail::join_trees_t<detail::root_of<Fs>, typename pass_type::root>> &&
+                 ...));
   using equations = detail::kinematic_equations<St, Speeds>;
   using equations::direct;
   using equations::solves;
@@ -53,7 +59,11 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   KANE_INLINE_FLATTEN void update(const St& s) requires(detail::inlined_entry<pass_type>) { pass_at(s); }
   KANE_FLATTEN void update(const St& s) requires(!detail::inlined_entry<pass_type>) { pass_at(s); }
 
-  const St& state() const { return *st_; }
+  const St& state() const {
+    assert(updated_ && "kane: evaluate after update(s)");
+    return st_;
+  }
+  bool updated() const { return updated_; }
 
   // q_I, q_I', q_I'': from the state, or solved from the speeds.
   template <std::size_t I, std::size_t D>
@@ -62,14 +72,14 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
                   "kane: this coordinate is beyond the state; declare the state with NQ >= I");
     static_assert(D <= 2, "kane: a state holds q, q' and q'' only");
     if constexpr (D == 0)
-      return st_->q[I - 1];
+      return st_.q[I - 1];
     else if constexpr (solves) {
       static_assert(D == 1 ? Level >= level::velocity : Level >= level::acceleration,
                     "kane: q' and q'' are solved from the speeds at the velocity and acceleration levels; "
                     "declare the evaluator with level::velocity or level::acceleration");
       return this->template rate<I, D>();
     } else
-      return D == 1 ? st_->qd[I - 1] : st_->qdd[I - 1];
+      return D == 1 ? st_.qd[I - 1] : st_.qdd[I - 1];
   }
 
   // sin q_I and cos q_I: from the cache when a frame turns by q_I.
@@ -79,7 +89,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
     if constexpr (trig_type::template holds<I>())
       return this->cached_trig().template sin<I>();
     else
-      return sin(st_->q[I - 1]);
+      return sin(st_.q[I - 1]);
   }
   template <std::size_t I>
   scalar cos_q() const {
@@ -87,12 +97,12 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
     if constexpr (trig_type::template holds<I>())
       return this->cached_trig().template cos<I>();
     else
-      return cos(st_->q[I - 1]);
+      return cos(st_.q[I - 1]);
   }
 
  private:
   KANE_ALWAYS_INLINE void pass_at(const St& s) {
-    st_ = &s;
+    st_ = s, updated_ = true;
     const auto t = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
     constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
     if constexpr (!solves) {
@@ -113,7 +123,8 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
     }
   }
 
-  const St* st_ = nullptr;
+  St st_ = detail::nan_state<St>();
+  bool updated_ = false;
 };
 
 namespace detail {

@@ -187,10 +187,12 @@ class kinematic_equations {
   }
 
   solve_status status_ = solve_status::ok;
-  std::array<scalar, nq> qd_;  // written by solve_rates, read only at the velocity level and above
-  std::array<scalar, nq> qdd_;
-  table<scalar, nq, nq> kde_w_;  // W where its structure does not fix it, row after row
-  std::array<scalar, nq> kde_x_;
+  // NaN until the first update
+  std::array<scalar, nq> qd_ = nan_filled<std::array<scalar, nq>>();  // read at the velocity level and above
+  std::array<scalar, nq> qdd_ = nan_filled<std::array<scalar, nq>>();
+  table<scalar, nq, nq> kde_w_ =
+      nan_filled<table<scalar, nq, nq>>();  // W where its structure does not fix it
+  std::array<scalar, nq> kde_x_ = nan_filled<std::array<scalar, nq>>();
 };
 
 }  // namespace kane::detail

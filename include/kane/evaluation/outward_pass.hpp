@@ -54,6 +54,7 @@ class outward_pass {
  public:
   using scalar = S;
   using closure = Closure;
+  using root = typename at<closure, 0>::type;
   static constexpr std::size_t size = detail::size<closure>::value;
   using matrix3 = Eigen::Matrix<scalar, 3, 3>;
   using vector3 = Eigen::Matrix<scalar, 3, 1>;
@@ -125,9 +126,8 @@ class outward_pass {
 
   template <class F>
   static constexpr std::size_t index() {
-    static_assert(contains<F, closure>::value,
-                  "kane: this evaluator does not hold the frame; list it (or a frame below it) in "
-                  "evaluator<State, frames<...>>");
+    static_assert(detail::check<contains<F, closure>::value,
+                                error::evaluator_does_not_hold_the_frame_add_it_to_frames<F>>);
     if constexpr (contains<F, closure>::value)
       return index_of<F, closure>::value;
     else
@@ -245,10 +245,11 @@ class outward_pass {
     }
   }
 
-  trig_type trig_;
-  std::array<std::array<scalar, 9>, size> c_;  // e_F1, e_F2, e_F3 in R, column after column
-  std::array<std::array<scalar, 3>, size> w_;
-  std::array<std::array<scalar, 3>, size> a_;
+  trig_type trig_{nan_filled<decltype(trig_type::s)>(), nan_filled<decltype(trig_type::c)>()};
+  // NaN until the first update; e_F1, e_F2, e_F3 in R, column after column
+  std::array<std::array<scalar, 9>, size> c_ = nan_filled<std::array<std::array<scalar, 9>, size>>();
+  std::array<std::array<scalar, 3>, size> w_ = nan_filled<std::array<std::array<scalar, 3>, size>>();
+  std::array<std::array<scalar, 3>, size> a_ = nan_filled<std::array<std::array<scalar, 3>, size>>();
 };
 
 }  // namespace detail

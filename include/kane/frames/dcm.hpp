@@ -68,11 +68,20 @@ dcm<A, C, S> operator*(const dcm<B, C, S>& l, const dcm<A, B, S>& r) {
   return dcm<A, C, S>(l.eigen() * r.eigen());
 }
 
-// clang-format off
-template <class DcmFrom, class To, class VecFrame, class S> requires DifferentFrames<DcmFrom, VecFrame>
-error::dcm_applies_only_to_components_in_its_from_frame<DcmFrom, VecFrame> operator*(const dcm<DcmFrom, To, S>&, const vec<VecFrame, S>&) = delete;
-template <class LeftFrom, class LeftTo, class RightFrom, class RightTo, class S> requires DifferentFrames<LeftFrom, RightTo>
-error::dcm_product_needs_left_from_frame_equal_right_to_frame<LeftFrom, RightTo> operator*(const dcm<LeftFrom, LeftTo, S>&, const dcm<RightFrom, RightTo, S>&) = delete;
-// clang-format on
+// Frames that do not match: the first error names the rule and the frames.
+template <class DcmFrom, class To, class VecFrame, class S>
+requires DifferentFrames<DcmFrom, VecFrame> vec<To, S>
+operator*(const dcm<DcmFrom, To, S>&, const vec<VecFrame, S>&) {
+  static_assert(
+      detail::check<false, error::dcm_applies_only_to_components_in_its_from_frame<DcmFrom, VecFrame>>);
+  return {};
+}
+template <class LeftFrom, class LeftTo, class RightFrom, class RightTo, class S>
+requires DifferentFrames<LeftFrom, RightTo> dcm<RightFrom, LeftTo, S>
+operator*(const dcm<LeftFrom, LeftTo, S>&, const dcm<RightFrom, RightTo, S>&) {
+  static_assert(
+      detail::check<false, error::dcm_product_needs_left_from_frame_equal_right_to_frame<LeftFrom, RightTo>>);
+  return {};
+}
 
 }  // namespace kane

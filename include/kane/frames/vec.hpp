@@ -37,10 +37,10 @@ class vec {
     eigen() = m;
   }
 
-  // clang-format off
-  template <class G> requires DifferentFrames<G, F>
-  vec(const vec<G, S>&, error::frames_differ_use_express_to_change_frame<G, F> = {}) = delete;
-  // clang-format on
+  template <class G>
+  requires DifferentFrames<G, F> vec(const vec<G, S>&) {
+    static_assert(detail::check<false, error::frames_differ_use_express_to_change_frame<G, F>>);
+  }
 
   static vec e1() { return vec(S(1), S(0), S(0)); }
   static vec e2() { return vec(S(0), S(1), S(0)); }
@@ -54,6 +54,7 @@ class vec {
   Eigen::Map<const eigen_type> eigen() const& { return Eigen::Map<const eigen_type>(c_); }
   Eigen::Map<eigen_type> eigen() & { return Eigen::Map<eigen_type>(c_); }
   eigen_type eigen() && { return Eigen::Map<const eigen_type>(c_); }
+  eigen_type eigen() const&& { return Eigen::Map<const eigen_type>(c_); }  // a copy: no view of a temporary
 
   vec& operator+=(const vec& o) {
     eigen() += o.eigen();
@@ -127,20 +128,45 @@ bool is_approx(const vec<F, S>& a, const vec<F, S>& b, S tol) {
   return ((a.eigen() - b.eigen()).cwiseAbs().array() <= tol).all();
 }
 
-// Mixing frames: deleted, the signature names the rule, the fix and the frames.
-// clang-format off
-template <class LeftFrame, class RightFrame, class S> requires DifferentFrames<LeftFrame, RightFrame>
-error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> operator+(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
-template <class LeftFrame, class RightFrame, class S> requires DifferentFrames<LeftFrame, RightFrame>
-error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> operator-(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
-template <class LeftFrame, class RightFrame, class S> requires DifferentFrames<LeftFrame, RightFrame>
-error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> operator==(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
-template <class LeftFrame, class RightFrame, class S> requires DifferentFrames<LeftFrame, RightFrame>
-error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> dot(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
-template <class LeftFrame, class RightFrame, class S> requires DifferentFrames<LeftFrame, RightFrame>
-error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> cross(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) = delete;
-template <class LeftFrame, class RightFrame, class S> requires DifferentFrames<LeftFrame, RightFrame>
-error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame> is_approx(const vec<LeftFrame, S>&, const vec<RightFrame, S>&, S) = delete;
-// clang-format on
+// Mixing frames: the first error names the rule, the fix and both frames.
+template <class LeftFrame, class RightFrame>
+inline constexpr bool same_frame_v =
+    detail::check<std::is_same_v<LeftFrame, RightFrame>,
+                  error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame>>;
+template <class LeftFrame, class RightFrame, class S>
+requires DifferentFrames<LeftFrame, RightFrame> vec<LeftFrame, S>
+operator+(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) {
+  static_assert(same_frame_v<LeftFrame, RightFrame>);
+  return {};
+}
+template <class LeftFrame, class RightFrame, class S>
+requires DifferentFrames<LeftFrame, RightFrame> vec<LeftFrame, S>
+operator-(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) {
+  static_assert(same_frame_v<LeftFrame, RightFrame>);
+  return {};
+}
+template <class LeftFrame, class RightFrame, class S>
+requires DifferentFrames<LeftFrame, RightFrame>
+bool operator==(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) {
+  static_assert(same_frame_v<LeftFrame, RightFrame>);
+  return {};
+}
+template <class LeftFrame, class RightFrame, class S>
+requires DifferentFrames<LeftFrame, RightFrame> S dot(const vec<LeftFrame, S>&, const vec<RightFrame, S>&) {
+  static_assert(same_frame_v<LeftFrame, RightFrame>);
+  return {};
+}
+template <class LeftFrame, class RightFrame, class S>
+requires DifferentFrames<LeftFrame, RightFrame> vec<LeftFrame, S> cross(const vec<LeftFrame, S>&,
+                                                                        const vec<RightFrame, S>&) {
+  static_assert(same_frame_v<LeftFrame, RightFrame>);
+  return {};
+}
+template <class LeftFrame, class RightFrame, class S>
+requires DifferentFrames<LeftFrame, RightFrame>
+bool is_approx(const vec<LeftFrame, S>&, const vec<RightFrame, S>&, S) {
+  static_assert(same_frame_v<LeftFrame, RightFrame>);
+  return {};
+}
 
 }  // namespace kane

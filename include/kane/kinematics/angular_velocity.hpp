@@ -82,22 +82,33 @@ constexpr auto operator-(angular_velocity_of<A, B>) {
   return angular_velocity_of<B, A>{};
 }
 
-// ^A w^B + ^B w^C = ^A w^C (eq. 10)
-template <class A, class B, class C>
-constexpr auto operator+(angular_velocity_of<A, B>, angular_velocity_of<B, C>) {
-  return angular_velocity<A, C>();
+// ^A w^B + ^B w^C = ^A w^C (eq. 10), in either order; other sums do not compile.
+template <class A, class B, class C, class D>
+constexpr auto operator+(angular_velocity_of<A, B>, angular_velocity_of<C, D>) {
+  if constexpr (std::is_same_v<B, C>)
+    return angular_velocity<A, D>();
+  else if constexpr (std::is_same_v<D, A>)
+    return angular_velocity<C, B>();
+  else {
+    static_assert(
+        detail::check<
+            false, error::angular_velocities_do_not_chain_the_first_body_must_be_the_second_observer<B, C>>);
+    return zero_vector{};
+  }
 }
-// ^A w^B - ^C w^B = ^A w^C
-template <class A, class B, class C>
-constexpr auto operator-(angular_velocity_of<A, B>, angular_velocity_of<C, B>) {
-  return angular_velocity<A, C>();
+// ^A w^B - ^C w^B = ^A w^C and ^A w^B - ^A w^D = ^D w^B; other differences do not compile.
+template <class A, class B, class C, class D>
+constexpr auto operator-(angular_velocity_of<A, B>, angular_velocity_of<C, D>) {
+  if constexpr (std::is_same_v<B, D>)
+    return angular_velocity<A, C>();
+  else if constexpr (std::is_same_v<A, C>)
+    return angular_velocity<D, B>();
+  else {
+    static_assert(detail::check<
+                  false,
+                  error::angular_velocities_differ_only_with_one_observer_or_one_body_in_common<A, B, C, D>>);
+    return zero_vector{};
+  }
 }
-
-// clang-format off
-template <class FirstObserver, class FirstBody, class SecondObserver, class SecondBody> requires DifferentFrames<FirstBody, SecondObserver>
-error::angular_velocities_do_not_chain_the_first_body_must_be_the_second_observer<FirstBody, SecondObserver> operator+(angular_velocity_of<FirstObserver, FirstBody>, angular_velocity_of<SecondObserver, SecondBody>) = delete;
-template <class FirstObserver, class FirstBody, class SecondObserver, class SecondBody> requires DifferentFrames<FirstBody, SecondBody>
-error::angular_velocities_do_not_chain_the_first_body_must_be_the_second_observer<FirstBody, SecondBody> operator-(angular_velocity_of<FirstObserver, FirstBody>, angular_velocity_of<SecondObserver, SecondBody>) = delete;
-// clang-format on
 
 }  // namespace kane

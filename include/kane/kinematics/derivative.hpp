@@ -194,16 +194,29 @@ constexpr auto dt(X x) {
   return detail::ddt(x);
 }
 
+// ^A d x/dt of a quantity x measured in A: measured in A too (dt<A>(^A v^P) + ^B a^Q does not compile).
+template <class A, class V>
+struct measured_in : detail::quantity_tag {
+  using observer = A;
+  [[no_unique_address]] V v;
+  constexpr explicit measured_in(V x) : v(x) {}
+};
+
 // ^A dv/dt (eq. 7 and 12).
 template <Frame A, VectorExpr V>
 constexpr auto dt(V v) {
-  return detail::ddt_in<A>(v);
+  auto d = detail::ddt_in<A>(v);
+  if constexpr (std::is_same_v<detail::observer_of_t<V>, A> && !is_zero_vector_v<decltype(d)>)
+    return measured_in<A, decltype(d)>(d);
+  else
+    return d;
 }
 
-// clang-format off
 template <VectorExpr V>
-error::a_vector_derivative_needs_a_frame_write_dt_A_of_v<V> dt(V v) = delete;
-// clang-format on
+constexpr V dt(V v) {
+  static_assert(detail::check<false, error::a_vector_derivative_needs_a_frame_write_dt_A_of_v<V>>);
+  return v;
+}
 
 // Partial derivative of a scalar by q<i>, dt(q<i>), u<i> or t.
 template <ScalarExpr X, ScalarExpr Leaf>
@@ -219,9 +232,10 @@ requires(detail::coordinate_info<Leaf>::value || detail::speed_info<Leaf>::value
   return detail::partial_in<A, Leaf>(v);
 }
 
-// clang-format off
 template <VectorExpr V, ScalarExpr Leaf>
-error::a_vector_derivative_needs_a_frame_write_diff_A_of_v_q<V> diff(V v, Leaf) = delete;
-// clang-format on
+constexpr V diff(V v, Leaf) {
+  static_assert(detail::check<false, error::a_vector_derivative_needs_a_frame_write_diff_A_of_v_q<V>>);
+  return v;
+}
 
 }  // namespace kane

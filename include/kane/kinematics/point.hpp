@@ -129,7 +129,8 @@ constexpr auto position() {
   using cp = typename detail::point_chain<P>::type;
   using cq = typename detail::point_chain<Q>::type;
   using X = typename detail::first_common<cp, cq>::type;
-  static_assert(!std::is_void_v<X>, "kane: no chain of points joins these two points (their origins differ)");
+  static_assert(
+      detail::check<!std::is_void_v<X>, error::points_not_joined_locate_both_from_one_origin<P, Q>>);
   if constexpr (std::is_void_v<X>)
     return zero_vector{};
   else {
@@ -147,14 +148,14 @@ inline constexpr bool fixed_in_v = detail::fixed_in<P, A>();
 template <Frame A, Point P>
 constexpr auto velocity(P = {}) {
   using Q = typename detail::first_fixed<typename detail::point_chain<P>::type, A>::type;
-  static_assert(!std::is_void_v<Q>,
-                "kane: no point on this point's chain is fixed in the frame of differentiation; "
-                "locate the point from one fixed in that frame (an origin<A> or a point whose position "
-                "from it is constant in A)");
+  // an origin<A>, or a point whose position from one is constant in A
+  static_assert(
+      detail::check<!std::is_void_v<Q>,
+                    error::no_point_of_the_chain_is_fixed_in_the_observer_locate_the_point_from_one<A, P>>);
   if constexpr (std::is_void_v<Q>)
     return zero_vector{};
   else {
-    constexpr auto v = detail::measured_velocity<A, P>(dt<A>(position<Q, P>()));
+    constexpr auto v = detail::measured_velocity<A, P>(detail::ddt_in<A>(position<Q, P>()));
     return v;
   }
 }
@@ -162,7 +163,7 @@ constexpr auto velocity(P = {}) {
 // ^A a^P = ^A d(^A v^P)/dt (eq. 15).
 template <Frame A, Point P>
 constexpr auto acceleration(P = {}) {
-  constexpr auto a = detail::measured_acceleration<A, P>(dt<A>(velocity<A, P>()));
+  constexpr auto a = detail::measured_acceleration<A, P>(detail::ddt_in<A>(velocity<A, P>()));
   return a;
 }
 
@@ -172,9 +173,9 @@ template <Frame A, Frame B, Point Q, Point P>
 constexpr auto two_point_velocity() {
   constexpr auto r = position<Q, P>();
   static_assert(
-      is_zero_vector_v<decltype(dt<B>(r))>,
-      "kane: the two-point theorem needs both points fixed in the body frame B (r^QP changes in B); "
-      "use one_point_velocity<A, B, Q, P>()");
+      detail::check<
+          is_zero_vector_v<decltype(detail::ddt_in<B>(r))>,
+          error::two_point_theorem_needs_both_points_fixed_in_the_body_use_one_point_velocity<B, Q, P>>);
   return detail::measured_velocity<A, P>(velocity<A, Q>() + cross(angular_velocity<A, B>(), r));
 }
 // ^A a^P = ^A a^Q + ^A alpha^B x r^QP + ^A w^B x (^A w^B x r^QP).
@@ -182,9 +183,9 @@ template <Frame A, Frame B, Point Q, Point P>
 constexpr auto two_point_acceleration() {
   constexpr auto r = position<Q, P>();
   static_assert(
-      is_zero_vector_v<decltype(dt<B>(r))>,
-      "kane: the two-point theorem needs both points fixed in the body frame B (r^QP changes in B); "
-      "use one_point_acceleration<A, B, Q, P>()");
+      detail::check<
+          is_zero_vector_v<decltype(detail::ddt_in<B>(r))>,
+          error::two_point_theorem_needs_both_points_fixed_in_the_body_use_one_point_velocity<B, Q, P>>);
   constexpr auto w = angular_velocity<A, B>();
   return detail::measured_acceleration<A, P>(acceleration<A, Q>() + cross(angular_acceleration<A, B>(), r) +
                                              cross(w, cross(w, r)));
@@ -195,15 +196,17 @@ constexpr auto two_point_acceleration() {
 template <Frame A, Frame B, Point Q, Point P>
 constexpr auto one_point_velocity() {
   constexpr auto r = position<Q, P>();
-  return detail::measured_velocity<A, P>(velocity<A, Q>() + dt<B>(r) + cross(angular_velocity<A, B>(), r));
+  return detail::measured_velocity<A, P>(velocity<A, Q>() + detail::ddt_in<B>(r) +
+                                         cross(angular_velocity<A, B>(), r));
 }
 // ^A a^P = ^A a^Q + ^B a^P + 2 ^A w^B x ^B v^P + ^A alpha^B x r + ^A w^B x (^A w^B x r).
 template <Frame A, Frame B, Point Q, Point P>
 constexpr auto one_point_acceleration() {
   constexpr auto r = position<Q, P>();
   constexpr auto w = angular_velocity<A, B>();
-  constexpr auto vB = dt<B>(r);
-  return detail::measured_acceleration<A, P>(acceleration<A, Q>() + dt<B>(vB) + constant<2>{} * cross(w, vB) +
+  constexpr auto vB = detail::ddt_in<B>(r);
+  return detail::measured_acceleration<A, P>(acceleration<A, Q>() + detail::ddt_in<B>(vB) +
+                                             constant<2>{} * cross(w, vB) +
                                              cross(angular_acceleration<A, B>(), r) + cross(w, cross(w, r)));
 }
 
@@ -214,17 +217,5 @@ template <Frame A, Frame B, Point Q, Point P>
 constexpr auto body_point_velocity() {
   return velocity<A, Q>() + cross(angular_velocity<A, B>(), position<Q, P>());
 }
-
-// ^A v^P + ^B v^Q with A != B does not compile; likewise accelerations.
-// clang-format off
-template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W> requires DifferentFrames<FirstObserver, SecondObserver>
-error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator+(velocity_of<FirstObserver, P, V>, velocity_of<SecondObserver, Q, W>) = delete;
-template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W> requires DifferentFrames<FirstObserver, SecondObserver>
-error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator-(velocity_of<FirstObserver, P, V>, velocity_of<SecondObserver, Q, W>) = delete;
-template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W> requires DifferentFrames<FirstObserver, SecondObserver>
-error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator+(acceleration_of<FirstObserver, P, V>, acceleration_of<SecondObserver, Q, W>) = delete;
-template <class FirstObserver, class P, class V, class SecondObserver, class Q, class W> requires DifferentFrames<FirstObserver, SecondObserver>
-error::quantities_measured_in_different_frames_measure_both_in_one_frame<FirstObserver, SecondObserver> operator-(acceleration_of<FirstObserver, P, V>, acceleration_of<SecondObserver, Q, W>) = delete;
-// clang-format on
 
 }  // namespace kane

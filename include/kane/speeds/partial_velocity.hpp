@@ -60,10 +60,12 @@ requires(ScalarExpr<X> || VectorExpr<X>) constexpr auto partial_velocity(X x, sp
   static_assert(R >= 1 && R <= Sp::n, "kane: u_R is not a generalized speed of this system (u_1 .. u_n)");
   return detail::partial_u<Sp, R>(x, std::make_index_sequence<Sp::n>{});
 }
-// clang-format off
-template <SpeedSet Sp, class X, class Leaf> requires(!Speed<Leaf>)
-error::partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r<Leaf> partial_velocity(X x, Leaf) = delete;
-// clang-format on
+template <SpeedSet Sp, class X, class Leaf>
+requires(!Speed<Leaf>) constexpr X partial_velocity(X x, Leaf) {
+  static_assert(
+      detail::check<false, error::partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r<Leaf>>);
+  return x;
+}
 
 // v_t = v - sum_r v_r u_r.
 template <SpeedSet Sp, class X>
