@@ -3,9 +3,15 @@
 // for a block of one unknown (none for an exact one), a Gauss-Jordan inverse
 // only for a coupled block. Zeros and ones of M, R and X are never touched.
 //
-// Rank rule: a pivot counts if |pivot| > eps * n * max |M_ij|, so scaling M
-// does not change the status. NaN or inf in M, or in what is produced, gives
-// not_finite; X is then NaN, as it is for a singular M.
+// Rank rule: a pivot counts if |pivot| > eps * n * max |M_ij|. A max |M_ij|
+// outside about [sqrt(min), sqrt(max)] of S is first brought into [1/2, 1) by a
+// power of two f (M x = R solved as f M x = f R, exact): the threshold never
+// underflows, 1/pivot never overflows, and M and sM get the same status for
+// every power of two s that keeps the entries of sM normal (any other s rounds
+// sM, and the rule holds to that rounding). Status ok means every number of X
+// is finite: NaN or inf in M, or in what is produced (an X beyond the range of
+// S, as for M = 1e-310 I), gives not_finite; X is then NaN, as it is for a
+// singular M.
 #pragma once
 
 #include <array>
@@ -36,6 +42,15 @@ constexpr void static_for(F&& f) {
 
 template <class S, std::size_t R, std::size_t C>
 using table = std::array<std::array<S, C>, R>;
+
+// 2^e, exactly, in a constant expression.
+template <class S>
+constexpr S pow2(int e) {
+  S x = S(1);
+  for (; e > 0; --e) x *= S(2);
+  for (; e < 0; ++e) x /= S(2);
+  return x;
+}
 
 // Sys: static constexpr n, k, m (pattern n x n), r (n x k), form (blocks_of(m)), x (solution_pattern).
 // The zeros and ones of X are written unless the caller keeps them (WriteConstants false).
@@ -72,8 +87,19 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
       scale = a > scale ? a : scale;
     }
   });
-  solve_status status = scale <= std::numeric_limits<S>::max() ? solve_status::ok : solve_status::not_finite;
-  const S tol = std::numeric_limits<S>::epsilon() * S(n) * scale;
+  using limits = std::numeric_limits<S>;
+  solve_status status = scale <= limits::max() ? solve_status::ok : solve_status::not_finite;
+  S f = S(1);  // 2^-e with 2^(e-1) <= scale < 2^e, e clamped so that f is normal
+  if (constexpr S lo = pow2<S>(limits::min_exponent / 2), hi = pow2<S>(limits::max_exponent / 2);
+      scale > S(0) && scale <= limits::max() && !(scale >= lo && scale <= hi)) {
+    using std::frexp, std::ldexp;
+    int e = 0;
+    frexp(scale, &e);
+    if (e < limits::min_exponent - 2) e = limits::min_exponent - 2;  // a subnormal scale
+    if (e > limits::max_exponent - 2) e = limits::max_exponent - 2;
+    f = ldexp(S(1), -e);
+  }
+  const S tol = limits::epsilon() * S(n) * (scale * f);
   auto fail = [&](bool finite) {  // the first failure decides the status
     if (status == solve_status::ok) status = finite ? solve_status::singular : solve_status::not_finite;
   };
@@ -93,14 +119,14 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
       constexpr std::size_t c = Sys::form.order[first], row = Sys::form.row[c];
       S inverse = S(1);
       if constexpr (Sys::m[row][c] == entry::other) {
-        const S pivot = m[row][c];
+        const S pivot = m[row][c] * f;
         if (!(abs(pivot) > tol)) fail(pivot == pivot);
-        inverse = S(1) / pivot;
+        inverse = S(1) / pivot;  // of f M_rc
       }
       static_for<k>([&](auto j) {
         if constexpr (Sys::x[c][j] == entry::other) {
           const S t = reduced(index_c<c>{}, j);
-          x[c][j] = Sys::m[row][c] == entry::one ? t : t * inverse;
+          x[c][j] = Sys::m[row][c] == entry::one ? t : t * f * inverse;
         }
       });
     } else {
@@ -108,15 +134,16 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
       static_for<size * size>([&](auto ab) {
         constexpr std::size_t a = ab / size, e = ab % size;
         block(a, e) = value(index_c<Sys::form.row[Sys::form.order[first + a]]>{},
-                            index_c<Sys::form.order[first + e]>{});
+                            index_c<Sys::form.order[first + e]>{}) *
+                      f;
       });
       if (!invert(block, inverse, tol)) fail(block.allFinite());
       static_for<k>([&](auto j) {
         if constexpr (Sys::x[Sys::form.order[first]][j] != entry::zero) {
           Eigen::Matrix<S, int(size), 1> t;
           static_for<size>(
-              [&](auto a) { t(Eigen::Index(a)) = reduced(index_c<Sys::form.order[first + a]>{}, j); });
-          const Eigen::Matrix<S, int(size), 1> y = inverse * t;
+              [&](auto a) { t(Eigen::Index(a)) = reduced(index_c<Sys::form.order[first + a]>{}, j) * f; });
+          const Eigen::Matrix<S, int(size), 1> y = inverse * t;  // (f M)^-1 f t
           static_for<size>([&](auto a) { x[Sys::form.order[first + a]][j] = y(Eigen::Index(a)); });
         }
       });

@@ -53,9 +53,12 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
 
   // The outward pass at s; s must outlive the evaluations that follow. With a
   // speed set, W and X at every level, q' and q'' from s.u and s.ud at the
-  // velocity and acceleration levels; if Y is singular or not finite,
-  // status() says so, and W (but for its structural zeros and ones), X, q',
-  // q'' and all computed from them are NaN.
+  // velocity and acceleration levels. status() is ok only if the numbers of s
+  // this level reads are finite (q, p, t; then qd or u, then qdd or ud) and,
+  // with a speed set, Y is regular and W, X, q', q'' are finite; otherwise it
+  // is singular or not_finite, and W (but for its structural zeros and ones),
+  // X, q', q'' and all computed from them are NaN (without a speed set, NaN
+  // or inf in s reaches what is computed from it).
   KANE_INLINE_FLATTEN void update(const St& s) requires(detail::inlined_entry<pass_type>) { pass_at(s); }
   KANE_FLATTEN void update(const St& s) requires(!detail::inlined_entry<pass_type>) { pass_at(s); }
 
@@ -105,6 +108,11 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
     st_ = s, updated_ = true;
     const auto t = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
     constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
+    bool finite = detail::all_finite(s.q) && detail::all_finite(s.p) && s.t - s.t == scalar(0);
+    if constexpr (velocity) finite = finite && (solves ? detail::all_finite(s.u) : detail::all_finite(s.qd));
+    if constexpr (acceleration)
+      finite = finite && (solves ? detail::all_finite(s.ud) : detail::all_finite(s.qdd));
+    this->status_ = finite ? solve_status::ok : solve_status::not_finite;
     if constexpr (!solves) {
       this->template pass<true, velocity, acceleration>(t, *this);  // frame after frame, all levels at once
       this->store_trig(t);

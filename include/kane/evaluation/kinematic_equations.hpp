@@ -111,6 +111,7 @@ class kinematic_equations {
 
   // Y q' + Z = u, so q' = W u + X with W = Y^-1 (evaluation/block_solve.hpp) and X = -W Z:
   // W and X depend on q alone. The zeros and ones of W are written once, by the constructor.
+  // status_ holds the check of the state; a failure there or here makes W's numbers and X NaN.
   template <class Ev>
   KANE_ALWAYS_INLINE void solve_kinematic_equations(const Ev& ev) {
     table<scalar, nq, nq> y;
@@ -121,7 +122,8 @@ class kinematic_equations {
         y[r][c] = eval_scalar(e, ev);
       }
     });
-    status_ = solve_structured<system, false>(y, y, kde_w_);
+    const solve_status solved = solve_structured<system, false>(y, y, kde_w_);
+    if (status_ == solve_status::ok) status_ = solved;
     std::array<scalar, nq> z;
     static_for<nq>([&](auto r) {
       if constexpr (system::z[r] != entry::zero) {
@@ -129,21 +131,31 @@ class kinematic_equations {
         z[r] = -eval_scalar(e, ev);
       }
     });
+    bool finite = true;  // X = -W Z may overflow where W does not
     static_for<nq>([&](auto c) {
-      if constexpr (system::offset[c]) kde_x_[c] = apply_row<c, false>(z);
+      if constexpr (system::offset[c]) {
+        kde_x_[c] = apply_row<c, false>(z);
+        finite = finite & (kde_x_[c] - kde_x_[c] == scalar(0));
+      }
     });
+    if (status_ == solve_status::ok && !finite) status_ = solve_status::not_finite;
     if (status_ != solve_status::ok)
-      static_for<nq>([&](auto c) {
-        if constexpr (system::offset[c]) kde_x_[c] = std::numeric_limits<scalar>::quiet_NaN();
+      static_for<nq * nq>([&](auto rc) {
+        constexpr std::size_t r = rc / nq, c = rc % nq;
+        if constexpr (system::x[r][c] == entry::other)
+          kde_w_[r][c] = std::numeric_limits<scalar>::quiet_NaN();
+        if constexpr (c == 0 && system::offset[r]) kde_x_[r] = std::numeric_limits<scalar>::quiet_NaN();
       });
   }
+  // q' (NaN if status_ is not ok; not_finite if q' = W u + X overflows).
   KANE_ALWAYS_INLINE void solve_rates(const St& s) {
     if constexpr (direct) {  // u = q'
       for (std::size_t i = 0; i < nq; ++i) qd_[i] = s.u[i];
     } else {
       qd_ = apply<true>(s.u);
-      if (status_ != solve_status::ok) qd_.fill(std::numeric_limits<scalar>::quiet_NaN());
     }
+    if (status_ == solve_status::ok && !all_finite(qd_)) status_ = solve_status::not_finite;
+    if (status_ != solve_status::ok) qd_.fill(std::numeric_limits<scalar>::quiet_NaN());
   }
   // (W v)_c (+ X_c), skipping the zeros of W and X.
   template <std::size_t C, bool Offset, class V>
@@ -184,6 +196,8 @@ class kinematic_equations {
       });
       qdd_ = apply<false>(v);
     }
+    if (status_ == solve_status::ok && !all_finite(qdd_)) status_ = solve_status::not_finite;
+    if (status_ != solve_status::ok) qdd_.fill(std::numeric_limits<scalar>::quiet_NaN());
   }
 
   solve_status status_ = solve_status::ok;

@@ -139,8 +139,10 @@ auto velocity_residuals(const Ev& ev) {
   (std::make_index_sequence<Config::constraints>{});
 }
 
-// u_dep = A u_ind + B at a state; status says whether the dependent block was
-// solvable (A and B are NaN when it is singular or not finite).
+// u_dep = A u_ind + B at a state; status is ok only if the evaluator's status
+// is ok and the dependent block was solvable with finite A and B (it is the
+// evaluator's status when that failed, as for NaN in the state; A and B are
+// NaN whenever status is not ok).
 template <class S, std::size_t M, std::size_t P>
 struct constraint_solution {
   Eigen::Matrix<S, int(M), int(P)> A;
@@ -177,7 +179,8 @@ KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
     }
   });
   constraint_solution<S, m, p> out;
-  out.status = detail::solve_structured<Sys>(dep, right, x);
+  const solve_status solved = detail::solve_structured<Sys>(dep, right, x);
+  out.status = ev.status() != solve_status::ok ? ev.status() : solved;
   for (std::size_t k = 0; k < m; ++k) {
     for (std::size_t j = 0; j < p; ++j) out.A(k, j) = -x[k][j];
     out.B(k) = -x[k][p];
