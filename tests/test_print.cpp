@@ -4,6 +4,7 @@
 
 #include <kane/print.hpp>
 
+#include "../examples/models/disc.hpp"
 #include "trees.hpp"
 
 using namespace trees;
@@ -63,4 +64,24 @@ TEST_CASE("print: crosses with one atomic left operand merge at compile time") {
                                                        kane::scaled<kane::literal, kane::unit<B, 2>>>>>);
   CHECK(kane::to_string(l * kane::cross(w, e<A, 1>) + 2.0 * kane::cross(w, e<B, 2>)) ==
         "^N w^A x (L a1 + 2 b2)");
+}
+
+TEST_CASE("print: partial velocities under general speeds print W_sr = dq_s'/du_r and X_s = q_s' at u = 0") {
+  using kane::e;
+  using kane::q;
+  using kane::u;
+  // The rolling disc: q1' = u3 / cos q2 and q3' = u2 - tan q2 u3, so W_13 and W_33 are numbers.
+  namespace disc = models::disc;
+  CHECK(kane::to_string(kane::partial_velocity<disc::speeds3>(disc::w, u<3>)) == "W1_3 y3 + W3_3 r2");
+  CHECK(kane::to_string(kane::partial_velocity<disc::speeds5>(kane::dot(disc::v_below, e<disc::N, 1>),
+                                                              u<3>)) == "-r_*cos(q1)*W3_3");
+  // u1 = q1' + q2', u2 = q2' + t: q1' = u1 - u2 + t, q2' = u2 - t; W_12 = -1 is a number of the
+  // evaluator, W_11 = W_22 = 1 and W_21 = 0 are types.
+  using sp = kane::speeds<kane::dt(q<1>) + kane::dt(q<2>), kane::dt(q<2>) + kane::t>;
+  constexpr auto v = kane::dt(q<1>) * e<A, 1> + kane::dt(q<2>) * e<A, 2>;
+  CHECK(kane::to_string(kane::partial_velocity<sp>(v, u<1>)) == "a1");
+  CHECK(kane::to_string(kane::partial_velocity<sp>(v, u<2>)) == "W1_2 a1 + a2");
+  std::ostringstream os;
+  os << kane::velocity_remainder<sp>(v);
+  CHECK(os.str() == "X1 a1 + X2 a2");
 }

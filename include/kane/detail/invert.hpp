@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 #include <Eigen/Core>
@@ -16,12 +17,13 @@ namespace kane::detail {
 template <class S, int N>
 bool invert(const Eigen::Matrix<S, N, N>& m, Eigen::Matrix<S, N, N>& inv, S tol = S(-1)) {
   using std::abs;
-  S g[N][2 * N];
+  constexpr std::size_t n = static_cast<std::size_t>(N);  // array bounds are sizes
+  S g[n][2 * n];
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j) g[i][j] = m(i, j), g[i][N + j] = S(i == j);
-  int rows[N], cols[N];  // the rows and columns not pivoted yet: rows[0 .. N-k), cols[0 .. N-k)
+  int rows[n], cols[n];  // the rows and columns not pivoted yet: rows[0 .. N-k), cols[0 .. N-k)
   for (int i = 0; i < N; ++i) rows[i] = cols[i] = i;
-  int row_of[N]{};  // row_of[c]: the row whose pivot eliminated column c
+  int row_of[n]{};  // row_of[c]: the row whose pivot eliminated column c
   for (int k = 0, left = N; k < N; ++k, --left) {
     int bi = 0, bj = 0;
     S best = S(-1);

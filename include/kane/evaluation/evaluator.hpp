@@ -106,7 +106,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
  private:
   KANE_ALWAYS_INLINE void pass_at(const St& s) {
     st_ = s, updated_ = true;
-    const auto t = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
+    const auto tr = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
     constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
     bool finite = detail::all_finite(s.q) && detail::all_finite(s.p) && s.t - s.t == scalar(0);
     if constexpr (velocity) finite = finite && (solves ? detail::all_finite(s.u) : detail::all_finite(s.qd));
@@ -114,19 +114,19 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
       finite = finite && (solves ? detail::all_finite(s.ud) : detail::all_finite(s.qdd));
     this->status_ = finite ? solve_status::ok : solve_status::not_finite;
     if constexpr (!solves) {
-      this->template pass<true, velocity, acceleration>(t, *this);  // frame after frame, all levels at once
-      this->store_trig(t);
+      this->template pass<true, velocity, acceleration>(tr, *this);  // frame after frame, all levels at once
+      this->store_trig(tr);
     } else {  // Y, Z need the axes; Y', Z' the angular velocities
-      this->template pass<true, false, false>(t, *this);
-      this->store_trig(t);
+      this->template pass<true, false, false>(tr, *this);
+      this->store_trig(tr);
       if constexpr (!direct) this->solve_kinematic_equations(*this);
       if constexpr (velocity) {
         this->solve_rates(s);
-        this->template pass<false, true, false>(t, *this);
+        this->template pass<false, true, false>(tr, *this);
       }
       if constexpr (acceleration) {
         this->solve_accelerations(*this, s);
-        this->template pass<false, false, true>(t, *this);
+        this->template pass<false, false, true>(tr, *this);
       }
     }
   }

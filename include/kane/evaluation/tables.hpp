@@ -182,8 +182,9 @@ KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
   const solve_status solved = detail::solve_structured<Sys>(dep, right, x);
   out.status = ev.status() != solve_status::ok ? ev.status() : solved;
   for (std::size_t k = 0; k < m; ++k) {
-    for (std::size_t j = 0; j < p; ++j) out.A(k, j) = -x[k][j];
-    out.B(k) = -x[k][p];
+    const auto row = static_cast<Eigen::Index>(k);
+    for (std::size_t j = 0; j < p; ++j) out.A(row, static_cast<Eigen::Index>(j)) = -x[k][j];
+    out.B(row) = -x[k][p];
   }
   if (out.status != solve_status::ok) {
     out.A.setConstant(std::numeric_limits<S>::quiet_NaN());
@@ -231,7 +232,8 @@ KANE_INLINE_FLATTEN auto nonholonomic_partial_velocities(const X& x, const Ev& e
 template <Frame F, class NH, class X, class Ev, class Sol>
 auto nonholonomic_remainder(const X& x, const Ev& ev, const Sol& sol) {
   auto [all, rest] = linear_in_speeds<F>(x, ev);
-  for (std::size_t r = 0; r < NH::m; ++r) rest += all.col(NH::dependents[r] - 1) * sol.B(r);
+  for (std::size_t r = 0; r < NH::m; ++r)
+    rest += all.col(static_cast<Eigen::Index>(NH::dependents[r] - 1)) * sol.B(static_cast<Eigen::Index>(r));
   return rest;
 }
 

@@ -69,9 +69,9 @@ dcm<A, B, typename St::scalar> direction_cosines(const St& st) {
     return {};
   } else {
     constexpr auto needed = detail::path_coordinates<typename p::up, typename p::down>::value;
-    const auto t = detail::make_trig<needed>(st);
+    const auto tr = detail::make_trig<needed>(st);
     return dcm<A, B, S>(
-        detail::chain<S>(t, typename detail::factors<typename p::up, typename p::down>::type{}));
+        detail::chain<S>(tr, typename detail::factors<typename p::up, typename p::down>::type{}));
   }
 }
 

@@ -33,7 +33,7 @@ Eigen::Matrix<S, 3, 3> elementary(S c, S s) {
     m << c, s, o, -s, c, o, o, o, l;
   } else {
     constexpr auto k = unit_axis<K>::value;
-    const S k1(k[0]), k2(k[1]), k3(k[2]), d = l - c;
+    const S k1 = static_cast<S>(k[0]), k2 = static_cast<S>(k[1]), k3 = static_cast<S>(k[2]), d = l - c;
     m << c + d * k1 * k1, d * k1 * k2 + s * k3, d * k1 * k3 - s * k2,  //
         d * k2 * k1 - s * k3, c + d * k2 * k2, d * k2 * k3 + s * k1,   //
         d * k3 * k1 + s * k2, d * k3 * k2 - s * k1, c + d * k3 * k3;
@@ -59,8 +59,8 @@ struct simple {
   using steps = detail::list<simple>;
   // ^P P^C
   template <class S, class Trig>
-  static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
-    return detail::elementary<S, K>(t.template cos<Q::index>(), t.template sin<Q::index>());
+  static Eigen::Matrix<S, 3, 3> matrix(const Trig& tr) {
+    return detail::elementary<S, K>(tr.template cos<Q::index>(), tr.template sin<Q::index>());
   }
 };
 
