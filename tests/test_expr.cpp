@@ -99,7 +99,8 @@ TEST_CASE("expr: time, parameters and speeds read the state") {
   s.p[0] = 0.5;
   s.u[2] = -3.0;
   s.ud[2] = 4.0;
-  kane::evaluator<decltype(s), kane::frames<A>> ev;
+  // u is read by an evaluator with a speed set (here u = q'); without one, reading u does not compile
+  kane::evaluator<decltype(s), kane::frames<A>, kane::level::acceleration, kane::qdot_speeds<6>> ev;
   ev.update(s);
   CHECK(kane::evaluate(l1 * kane::t * kane::t + u<3>, ev) == Approx(0.5 * 4 - 3));
   CHECK(kane::evaluate(kane::dt(l1 * kane::t * kane::t + u<3>), ev) == Approx(0.5 * 4 + 4));

@@ -52,7 +52,7 @@ struct P3 : kane::point<P2, q<4> * e<C, 1>> {};  // moving on C
 // Expressions of every kind.
 inline constexpr auto scalar_expr = kane::sin(q<1>) * kane::cos(q<2>) + kane::sqrt(l1 * l1 + kane::t) -
                                     kane::pow<2>(q<3>) / l2 + kane::pow<-1>(2.0 + kane::cos(q<4>)) +
-                                    kane::invoke(ramp{}, q<5>) - 3.0 * kane::dt(q<6>) + u<1>;
+                                    kane::invoke(ramp{}, q<5>) - 3.0 * kane::dt(q<6>);  // u: in speeds()
 inline constexpr auto vector_expr =
     scalar_expr * e<A, 1> - cross(e<B, 2>, l1* e<E, 3>) + dot(e<F, 1>, e<D, 2>) * e<N, 3>;
 

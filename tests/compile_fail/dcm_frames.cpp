@@ -1,6 +1,6 @@
 // Direction cosines compose and apply only along matching frames.
-// case compose: deleted && dcm_product_needs_left_from_frame_equal_right_to_frame && LeftFrom = A. LeftTo = B. RightFrom = A. RightTo = B
-// case apply: deleted && dcm_applies_only_to_components_in_its_from_frame && DcmFrom = N. To = A. VecFrame = B
+// case compose: dcm_product_needs_left_from_frame_equal_right_to_frame<A, B>
+// case apply: dcm_applies_only_to_components_in_its_from_frame<N, B>
 #include <kane/kane.hpp>
 
 struct N : kane::root_frame {};

@@ -1,19 +1,29 @@
-// Kinematic quantities keep their frames.
-// case dt_without_frame: deleted && a_vector_derivative_needs_a_frame_write_dt_A_of_v && unit<A, 1>
-// case diff_without_frame: deleted && a_vector_derivative_needs_a_frame_write_diff_A_of_v_q && unit<A, 1>
-// case no_chain: deleted && angular_velocities_do_not_chain_the_first_body_must_be_the_second_observer && FirstBody = A. SecondObserver = B
-// case velocities_in_two_frames: deleted && quantities_measured_in_different_frames_measure_both_in_one_frame && FirstObserver = N && SecondObserver = A
-// case accelerations_in_two_frames: deleted && quantities_measured_in_different_frames_measure_both_in_one_frame && FirstObserver = A && SecondObserver = N
-// case angular_velocity_across_roots: kane: no path of the frame tree joins these two frames && joined_frames<A, G>
-// case no_fixed_point: kane: no point on this point.s chain is fixed in the frame of differentiation && (A = A. P = P|velocity<A, P>)
-// case points_not_joined: kane: no chain of points joins these two points && (P = P. Q = QA|position<P, QA>)
+// Kinematic quantities keep their frames, observers and trees on every leaf. Each case is a
+// misuse (#ifdef) and its fix (#else): the file as it is compiles every fix.
+// case dt_without_frame: a_vector_derivative_needs_a_frame_write_dt_A_of_v<kane::unit<A, 1> ?>
+// case diff_without_frame: a_vector_derivative_needs_a_frame_write_diff_A_of_v_q<kane::unit<A, 1> ?>
+// case no_chain: angular_velocities_do_not_chain_the_first_body_must_be_the_second_observer<A, B>
+// case difference_no_common_frame: angular_velocities_differ_only_with_one_observer_or_one_body_in_common<N, A, B, C>
+// case velocities_in_two_frames: quantities_measured_in_different_frames_measure_both_in_one_frame<N, A>
+// case scaled_velocities_in_two_frames: quantities_measured_in_different_frames_measure_both_in_one_frame<N, A>
+// case negated_velocities_in_two_frames: quantities_measured_in_different_frames_measure_both_in_one_frame<A, N>
+// case accelerations_in_two_frames: quantities_measured_in_different_frames_measure_both_in_one_frame<A, N>
+// case angular_accelerations_in_two_frames: quantities_measured_in_different_frames_measure_both_in_one_frame<N, A>
+// case derivative_in_two_frames: quantities_measured_in_different_frames_measure_both_in_one_frame<N, A>
+// case angular_velocity_across_roots: frames_of_two_trees_relate_them_through_a_common_root_frame<N, M0>
+// case sum_across_roots: frames_of_two_trees_relate_them_through_a_common_root_frame<N, M0>
+// case leaf_across_roots: frames_of_two_trees_relate_them_through_a_common_root_frame<M0, N>
+// case express_across_roots: frames_of_two_trees_relate_them_through_a_common_root_frame<N, M0>
+// case evaluator_across_roots: frames_of_two_trees_relate_them_through_a_common_root_frame<M0, N>
+// case expression_of_other_tree: expression_and_evaluator_in_two_trees_build_the_evaluator_on_the_expression_tree<N, M0>
+// case no_fixed_point: no_point_of_the_chain_is_fixed_in_the_observer_locate_the_point_from_one<A, P>
+// case points_not_joined: points_not_joined_locate_both_from_one_origin<P, QA>
 // case jerk: kane: the time derivative of an angular acceleration .a third derivative. is not available
 // case partial_of_angular_velocity: kane: partial derivatives apply to vectors of unit vectors and scalars
-// case two_point_not_fixed: kane: the two-point theorem needs both points fixed in the body frame B && (A = N. B = A. Q = P. P = M|two_point_velocity<N, A, P, M>)
-// case express_across_roots: kane: no path of the frame tree joins the vector.s frames and the frame of expression && (A = G|express<G)
-// case level_pose: kane: this evaluator computes no angular velocities && level::velocity
-// case level_velocity: kane: this evaluator computes no angular accelerations && level::acceleration
-// case frame_not_held: kane: this evaluator does not hold the frame && evaluator<State, frames<...>>
+// case two_point_not_fixed: two_point_theorem_needs_both_points_fixed_in_the_body_use_one_point_velocity<A, O, P>
+// case level_pose: kane: this evaluator computes no angular velocities.*level::velocity
+// case level_velocity: kane: this evaluator computes no angular accelerations.*level::acceleration
+// case frame_not_held: evaluator_does_not_hold_the_frame_add_it_to_frames<C>
 // case third_derivative_in_state: kane: a state holds q, q' and q'' only
 #include <kane/kane.hpp>
 
@@ -27,77 +37,153 @@ struct M0 : kane::root_frame {};
 struct G : kane::frame<M0, kane::simple<kane::axis::x, q2>> {};
 
 struct O : kane::origin<N> {};
-struct P : kane::point<O, kane::q<2> * kane::e<A, 1>> {};
+struct P : kane::point<O, kane::q<2> * kane::e<A, 1>> {};            // moves in A
+struct PA : kane::point<O, kane::constant<2>{} * kane::e<A, 1>> {};  // fixed in A
 struct M : kane::point<P, kane::q<1> * kane::e<A, 2>> {};
 struct OA : kane::origin<A> {};
 struct QA : kane::point<OA, kane::q<1> * kane::e<B, 1>> {};
+struct QB : kane::point<OA, kane::q<2> * kane::e<B, 2>> {};
 
 using St = kane::state<double, 2>;
 
 double use() {
   St s;
   kane::evaluator<St, kane::frames<B>> ev;
+  kane::evaluator<St, kane::frames<C>> ev_c;
+  kane::evaluator<St, kane::frames<G>> ev_g;
   kane::evaluator<St, kane::frames<B>, kane::level::pose> ev_pose;
   kane::evaluator<St, kane::frames<B>, kane::level::velocity> ev_velocity;
-  ev.update(s);
-  ev_pose.update(s);
-  ev_velocity.update(s);
+  ev.update(s), ev_c.update(s), ev_g.update(s), ev_pose.update(s), ev_velocity.update(s);
   const auto a1 = kane::e<A, 1>;
-  double x = kane::express<N>(kane::dt<N>(a1) + kane::diff<N>(a1, kane::q<1>), ev)[0];
-  x += kane::express<N>(kane::angular_velocity<N, A>() + kane::angular_velocity<A, B>(), ev)[0];
-  x += kane::express<N>(kane::velocity<N, P>() + kane::velocity<N, M>(), ev)[0];
-  x += kane::express<N>(kane::velocity<A, QA>(), ev)[0] +
-       kane::express<N>(kane::two_point_velocity<N, B, P, P>(), ev)[0];
-  x += kane::express<N>(kane::e<B, 2>, ev_pose)[0] +
-       kane::express<N>(kane::angular_velocity<N, B>(), ev_velocity)[0];
-  x += s[kane::dt(kane::dt(kane::q<1>))];
+  const auto x0 = kane::e<N, 1>;
+  double x = kane::express<M0>(kane::e<G, 2>, ev_g)[0];
+  using kane::acceleration, kane::angular_acceleration, kane::angular_velocity, kane::velocity;
 #ifdef KANE_CASE_dt_without_frame
   x += kane::express<N>(kane::dt(a1), ev)[0];
+#else
+  x += kane::express<N>(kane::dt<N>(a1), ev)[0];
 #endif
 #ifdef KANE_CASE_diff_without_frame
   x += kane::express<N>(kane::diff(a1, kane::q<1>), ev)[0];
+#else
+  x += kane::express<N>(kane::diff<N>(a1, kane::q<1>), ev)[0];
 #endif
 #ifdef KANE_CASE_no_chain
-  x += kane::express<N>(kane::angular_velocity<N, A>() + kane::angular_velocity<B, C>(), ev)[0];
+  x += kane::express<N>(angular_velocity<N, A>() + angular_velocity<B, C>(), ev_c)[0];
+#else
+  x += kane::express<N>(angular_velocity<N, A>() + angular_velocity<A, C>(), ev_c)[0];
+#endif
+#ifdef KANE_CASE_difference_no_common_frame
+  x += kane::express<N>(angular_velocity<N, A>() - angular_velocity<B, C>(), ev_c)[0];
+#else
+  x += kane::express<N>(angular_velocity<N, A>() - angular_velocity<N, C>(), ev_c)[0];  // ^C w^A
 #endif
 #ifdef KANE_CASE_velocities_in_two_frames
-  x += kane::express<N>(kane::velocity<N, P>() + kane::velocity<A, QA>(), ev)[0];
+  x += kane::express<N>(velocity<N, P>() + velocity<A, QA>(), ev)[0];
+#else
+  x += kane::express<N>(velocity<N, P>() + velocity<N, M>(), ev)[0];
+#endif
+#ifdef KANE_CASE_scaled_velocities_in_two_frames
+  x += kane::express<N>(2.0 * velocity<N, P>() + velocity<A, QA>(), ev)[0];
+#else
+  x += kane::express<N>(2.0 * velocity<N, P>() + velocity<N, M>(), ev)[0];
+#endif
+#ifdef KANE_CASE_negated_velocities_in_two_frames
+  x += kane::express<N>(-velocity<A, QA>() - velocity<N, P>() * kane::q<1>, ev)[0];
+#else
+  x += kane::express<N>(-velocity<A, QA>() - velocity<A, QB>() * kane::q<1>, ev)[0];
 #endif
 #ifdef KANE_CASE_accelerations_in_two_frames
-  x += kane::express<N>(kane::acceleration<A, QA>() - kane::acceleration<N, P>(), ev)[0];
+  x += kane::express<N>(acceleration<A, QA>() - acceleration<N, P>(), ev)[0];
+#else
+  x += kane::express<N>(acceleration<A, QA>() - acceleration<A, QB>(), ev)[0];
+#endif
+#ifdef KANE_CASE_angular_accelerations_in_two_frames
+  x += kane::express<N>(angular_acceleration<N, A>() + angular_acceleration<A, B>(), ev)[0];
+#else
+  x += kane::express<N>(angular_acceleration<N, A>() + angular_acceleration<N, B>(), ev)[0];
+#endif
+#ifdef KANE_CASE_derivative_in_two_frames
+  x += kane::express<N>(kane::dt<N>(velocity<N, P>()) + acceleration<A, QA>(), ev)[0];
+#else
+  x += kane::express<N>(kane::dt<N>(velocity<N, P>()) + acceleration<N, M>(), ev)[0];
 #endif
 #ifdef KANE_CASE_angular_velocity_across_roots
-  (void)kane::angular_velocity<A, G>();
+  (void)angular_velocity<A, G>();
+#else
+  (void)angular_velocity<A, B>();
 #endif
-#ifdef KANE_CASE_no_fixed_point
-  (void)kane::velocity<A, P>();
+#ifdef KANE_CASE_sum_across_roots
+  (void)(a1 + kane::e<G, 1>);
+#else
+  (void)(a1 + kane::e<B, 1>);
 #endif
-#ifdef KANE_CASE_points_not_joined
-  (void)kane::position<P, QA>();
-#endif
-#ifdef KANE_CASE_jerk
-  (void)kane::dt<N>(kane::dt<N>(kane::dt<N>(kane::angular_velocity<N, B>())));
-#endif
-#ifdef KANE_CASE_partial_of_angular_velocity
-  (void)kane::diff<N>(kane::angular_velocity<N, B>(), kane::q<1>);
-#endif
-#ifdef KANE_CASE_two_point_not_fixed
-  (void)kane::two_point_velocity<N, A, P, M>();
+#ifdef KANE_CASE_leaf_across_roots  // the tree of a scalar factor's frames
+  x += kane::express<N>(kane::dot(kane::e<G, 1>, kane::q<1> * kane::e<G, 3>) * a1, ev)[0];
+#else
+  x += kane::express<N>(kane::dot(kane::e<B, 1>, kane::q<1> * kane::e<B, 3>) * a1, ev)[0];
 #endif
 #ifdef KANE_CASE_express_across_roots
   x += kane::express<G>(a1, ev)[0];
+#else
+  x += kane::express<B>(a1, ev)[0];
+#endif
+#ifdef KANE_CASE_evaluator_across_roots
+  kane::evaluator<St, kane::frames<B, G>> ev2;
+#else
+  kane::evaluator<St, kane::frames<B, C>> ev2;
+#endif
+  ev2.update(s);
+  x += kane::express<N>(x0, ev2)[0];
+#ifdef KANE_CASE_expression_of_other_tree
+  x += kane::express<N>(a1, ev_g)[0];
+#else
+  x += kane::express<N>(a1, ev)[0];
+#endif
+#ifdef KANE_CASE_no_fixed_point
+  x += kane::express<N>(velocity<A, P>(), ev)[0];
+#else
+  x += kane::express<N>(velocity<N, P>(), ev)[0];
+#endif
+#ifdef KANE_CASE_points_not_joined
+  x += kane::express<N>(kane::position<P, QA>(), ev)[0];
+#else
+  x += kane::express<N>(kane::position<P, M>(), ev)[0];
+#endif
+#ifdef KANE_CASE_jerk
+  (void)kane::dt<N>(kane::dt<N>(angular_velocity<N, B>()));
+#else
+  (void)kane::dt<N>(angular_velocity<N, B>());
+#endif
+#ifdef KANE_CASE_partial_of_angular_velocity
+  (void)kane::diff<N>(angular_velocity<N, B>(), kane::q<1>);
+#else
+  (void)kane::diff<N>(kane::position<O, M>(), kane::q<1>);
+#endif
+#ifdef KANE_CASE_two_point_not_fixed  // r^OP = q2 a1 changes in A
+  x += kane::express<N>(kane::two_point_velocity<N, A, O, P>(), ev)[0];
+#else
+  x += kane::express<N>(kane::two_point_velocity<N, A, O, PA>(), ev)[0];
 #endif
 #ifdef KANE_CASE_level_pose
-  x += kane::express<N>(kane::angular_velocity<N, B>(), ev_pose)[0];
+  x += kane::express<N>(angular_velocity<N, B>(), ev_pose)[0];
+#else
+  x += kane::express<N>(angular_velocity<N, B>(), ev_velocity)[0];
 #endif
 #ifdef KANE_CASE_level_velocity
-  x += kane::express<N>(kane::angular_acceleration<N, B>(), ev_velocity)[0];
+  x += kane::express<N>(angular_acceleration<N, B>(), ev_velocity)[0];
+#else
+  x += kane::express<N>(angular_acceleration<N, B>(), ev)[0];
 #endif
 #ifdef KANE_CASE_frame_not_held
   x += kane::express<N>(kane::e<C, 2>, ev)[0];  // e_C1 = e_B1 would be read from B
+#else
+  x += kane::express<N>(kane::e<C, 2>, ev_c)[0];
 #endif
 #ifdef KANE_CASE_third_derivative_in_state
   x += s[kane::dt(kane::dt(kane::dt(kane::q<1>)))];
+#else
+  x += s[kane::dt(kane::dt(kane::q<1>))];
 #endif
   return x;
 }

@@ -1,14 +1,17 @@
 // Generalized speeds, partial velocities and constraints keep their counts.
-// case partial_wrt_coordinate: deleted && partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r && coordinate<1
+// case partial_wrt_coordinate: partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r<kane::coordinate<1(, 0)?(UL)?> ?>
 // case partial_beyond_speeds: kane: u_R is not a generalized speed of this system
 // case constraint_count: kane: m dependent speeds need m constraint equations
 // case dependent_not_a_speed: kane: the dependent speeds must be speeds of the system
 // case dependent_twice: kane: a dependent speed is named twice
 // case speed_count: kane: a speed set defines as many speeds as the state has coordinates
 // case too_many_holonomic: kane: more holonomic constraints than coordinates
-// case constraints_other_speeds: kane: the constraints and the evaluator use different speed sets
+// case constraints_other_speeds: evaluator_and_constraints_use_different_speed_sets<kane::speeds<.*>, kane::qdot_speeds<2(UL)?> ?>
 // case speeds_miss_a_rate: kane: these speeds do not determine q'
 // case dependent_not_in_constraints: kane: the constraints do not determine the dependent speeds
+// case solution_of_other_constraints: constraint_solution_of_other_constraints_solve_these<kane::nonholonomic<.*>, kane::nonholonomic<
+// case remainder_other_speeds: evaluator_and_constraints_use_different_speed_sets<kane::qdot_speeds<2(UL)?>, kane::speeds<
+// case u_without_speed_set: evaluator_without_speed_set_reads_no_u_declare_the_speed_set<kane::speed<1(UL)?, 0(UL)?> ?>
 // case rate_below_level: kane: q' and q'' are solved from the speeds at the velocity and acceleration levels
 #include <kane/kane.hpp>
 
@@ -76,6 +79,26 @@ double use() {
   kane::evaluator<St, kane::frames<B>, kane::level::velocity, kane::qdot_speeds<2>> evq;
   evq.update(s);
   x += kane::solve_constraints<nh3>(evq).A(0, 0) + evb.coordinate_value<1, 1>();
+  // tables of nh take its own solution and an evaluator of its speed set
+#ifdef KANE_CASE_solution_of_other_constraints
+  const auto sol = kane::solve_constraints<kane::nonholonomic<sp, kane::dependent<2>, 2.0 * c1>>(ev);
+#else
+  const auto sol = kane::solve_constraints<nh>(ev);
+#endif
+  x += kane::nonholonomic_partial_velocities<N, nh>(w, ev, sol)(0, 0);
+#ifdef KANE_CASE_remainder_other_speeds
+  x += kane::nonholonomic_remainder<N, nh>(w, evq, sol)(0);
+#else
+  x += kane::nonholonomic_remainder<N, nh>(w, ev, sol)(0);
+#endif
+  // without a speed set u = q' and s.u is not read: reading u does not compile
+  kane::evaluator<St, kane::frames<B>> ev0;
+  ev0.update(s);
+#ifdef KANE_CASE_u_without_speed_set
+  x += kane::evaluate(kane::u<1>, ev0);
+#else
+  x += kane::evaluate(kane::u<1>, ev) + kane::evaluate(kane::dt(kane::q<1>), ev0);
+#endif
   // q' of a speed set at the pose level is not solved; the fix is level::velocity
 #ifdef KANE_CASE_rate_below_level
   kane::evaluator<St, kane::frames<B>, kane::level::pose, sp> evp;

@@ -1,6 +1,6 @@
 // A state holds every coordinate it is asked for.
-// case index: kane: this coordinate is beyond the state && (I = 3|<3UL) && (NQ = 2|state<double, 2)
-// case path: kane: the frames involved use a generalized coordinate beyond the state.s size && direction_cosines && state<double, 2
+// case index: kane: this coordinate is beyond the state. declare the state with NQ >= I
+// case path: kane: the frames involved use a generalized coordinate beyond the state.s size
 #include <kane/kane.hpp>
 
 struct N : kane::root_frame {};

@@ -1,10 +1,10 @@
 // Frame trees: no cycles, real parents and axes, joined frames only.
-// case cycle: kane: a frame.s parent must be declared .complete. before the frame && frame<Y
-// case not_a_frame: kane: frame<Parent, Orientation> needs a frame as Parent && frame<int
-// case no_path: kane: no path of the frame tree joins these two frames && joined_path<A, G>
-// case zero_axis: kane: an axis direction must not be the zero vector && direction<0, 0, 0>
-// case sequence: kane: a rotation sequence takes axes 1, 2, 3 with consecutive axes different && body_fixed<3, 3, 1
-// case vec_of_non_frame: kane: vec<F> needs a frame F && vec<double
+// case cycle: kane: a frame.s parent must be declared .complete. before the frame
+// case not_a_frame: kane: frame<Parent, Orientation> needs a frame as Parent
+// case no_path: frames_of_two_trees_relate_them_through_a_common_root_frame<N, M>
+// case zero_axis: kane: an axis direction must not be the zero vector
+// case sequence: kane: a rotation sequence takes axes 1, 2, 3 with consecutive axes different
+// case vec_of_non_frame: kane: vec<F> needs a frame F
 #include <kane/kane.hpp>
 
 using q1 = kane::coordinate<1>;

@@ -1,11 +1,11 @@
 // Components expressed in different frames do not mix.
-// case plus: deleted && frames_differ_express_one_in_the_others_frame_first && LeftFrame = N. RightFrame = A
-// case minus: deleted && frames_differ_express_one_in_the_others_frame_first && LeftFrame = A. RightFrame = N
-// case dot: deleted && frames_differ_express_one_in_the_others_frame_first && dot && LeftFrame = N. RightFrame = A
-// case cross: deleted && frames_differ_express_one_in_the_others_frame_first && cross && LeftFrame = A. RightFrame = N
-// case equal: deleted && frames_differ_express_one_in_the_others_frame_first && LeftFrame = N. RightFrame = A
-// case assign: deleted && frames_differ_use_express_to_change_frame && (G = A. F = N|vec<A.*vec<N)
-// case construct: deleted && frames_differ_use_express_to_change_frame && (G = N. F = A|vec<N.*vec<A)
+// case plus: frames_differ_express_one_in_the_others_frame_first<N, A>
+// case minus: frames_differ_express_one_in_the_others_frame_first<A, N>
+// case dot: frames_differ_express_one_in_the_others_frame_first<N, A>
+// case cross: frames_differ_express_one_in_the_others_frame_first<A, N>
+// case equal: frames_differ_express_one_in_the_others_frame_first<N, A>
+// case assign: frames_differ_use_express_to_change_frame<A, N>
+// case construct: frames_differ_use_express_to_change_frame<N, A>
 #include <kane/kane.hpp>
 
 struct N : kane::root_frame {};

@@ -53,9 +53,11 @@ KANE_ALWAYS_INLINE typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
   using S = typename Ev::scalar;
   if constexpr (coordinate_info<X>::value)
     return ev.template coordinate_value<X::index, X::order>();
-  else if constexpr (speed_info<X>::value)
+  else if constexpr (speed_info<X>::value) {
+    static_assert(check<!std::is_void_v<typename Ev::speed_set>,
+                        error::evaluator_without_speed_set_reads_no_u_declare_the_speed_set<X>>);
     return ev.state()[x];
-  else if constexpr (Parameter<X>)
+  } else if constexpr (Parameter<X>)
     return ev.state()[parameter<X::index>{}];
   else if constexpr (std::is_same_v<X, time_variable>)
     return ev.state().t;

@@ -28,6 +28,15 @@ template <class Ev>
 using speeds_of = std::conditional_t<std::is_void_v<typename Ev::speed_set>, qdot_speeds<Ev::state_type::nq>,
                                      typename Ev::speed_set>;
 
+// The evaluator's speed set is the constraints'; a solution is of these constraints.
+template <class Ev, class NH>
+inline constexpr bool same_speeds_v =
+    check<std::is_same_v<speeds_of<Ev>, typename NH::speed_set>,
+          error::evaluator_and_constraints_use_different_speed_sets<speeds_of<Ev>, typename NH::speed_set>>;
+template <class Sol, class NH>
+inline constexpr bool solution_of_v =
+    check<std::is_same_v<typename Sol::constraints, NH>,
+          error::constraint_solution_of_other_constraints_solve_these<typename Sol::constraints, NH>>;
 }  // namespace detail
 
 namespace detail {
@@ -143,8 +152,9 @@ auto velocity_residuals(const Ev& ev) {
 // is ok and the dependent block was solvable with finite A and B (it is the
 // evaluator's status when that failed, as for NaN in the state; A and B are
 // NaN whenever status is not ok).
-template <class S, std::size_t M, std::size_t P>
+template <class S, std::size_t M, std::size_t P, class NH = void>
 struct constraint_solution {
+  using constraints = NH;  // the declaration solved: tables of other constraints refuse it
   Eigen::Matrix<S, int(M), int(P)> A;
   Eigen::Matrix<S, int(M), 1> B;
   solve_status status;
@@ -155,8 +165,7 @@ template <class NH, class Ev>
 KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
   using S = typename Ev::scalar;
   using Sys = detail::constraint_system<NH>;
-  static_assert(std::is_same_v<typename NH::speed_set, detail::speeds_of<Ev>>,
-                "kane: the constraints and the evaluator use different speed sets");
+  static_assert(detail::same_speeds_v<Ev, NH>);
   static_assert(Sys::form.regular,
                 "kane: the constraints do not determine the dependent speeds (their block of coefficients is "
                 "singular at every state); choose dependent speeds that the constraints involve");
@@ -178,7 +187,7 @@ KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
       right[k][j] = detail::eval_scalar(c, ev);
     }
   });
-  constraint_solution<S, m, p> out;
+  constraint_solution<S, m, p, NH> out;
   const solve_status solved = detail::solve_structured<Sys>(dep, right, x);
   out.status = ev.status() != solve_status::ok ? ev.status() : solved;
   for (std::size_t k = 0; k < m; ++k) {
@@ -195,16 +204,25 @@ KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
 
 namespace detail {
 // col += a v in F; a v_r that is +-e_Fi adds to one component.
+template <class F, class V>
+constexpr bool unit_of() {  // V is e_Fi
+  if constexpr (is_unit<V>::value)
+    return std::is_same_v<typename V::frame, F>;
+  else
+    return false;
+}
 template <class F, class V, class Col, class S, class Ev>
 void add_scaled(Col& col, const V& v, S a, const Ev& ev) {
   if constexpr (is_zero_v<V> || is_zero_vector_v<V>)
     return;
-  else if constexpr (is_unit<V>::value && std::is_same_v<typename V::frame, F>)
+  else if constexpr (unit_of<F, V>())
     col(V::index - 1) += a;
-  else if constexpr (is_vneg<V>::value && is_unit<decltype(v.v)>::value &&
-                     std::is_same_v<typename decltype(v.v)::frame, F>)
-    col(decltype(v.v)::index - 1) -= a;
-  else
+  else if constexpr (is_vneg<V>::value) {
+    if constexpr (unit_of<F, decltype(v.v)>())
+      col(decltype(v.v)::index - 1) -= a;
+    else
+      col += numbers<F>(v, ev) * a;
+  } else
     col += numbers<F>(v, ev) * a;
 }
 }  // namespace detail
@@ -214,8 +232,7 @@ template <Frame F, class NH, class X, class Ev, class Sol>
 KANE_INLINE_FLATTEN auto nonholonomic_partial_velocities(const X& x, const Ev& ev, const Sol& sol) {
   using S = typename Ev::scalar;
   using Sp = typename NH::speed_set;
-  static_assert(std::is_same_v<Sp, detail::speeds_of<Ev>>,
-                "kane: the constraints and the evaluator use different speed sets");
+  static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
   Eigen::Matrix<S, ScalarExpr<X> ? 1 : 3, int(NH::p)> out;
   detail::static_for<NH::p>([&](auto k) {
     auto col = detail::numbers<F>(detail::column_of<Sp, NH::independents[k]>(x), ev);
@@ -231,6 +248,7 @@ KANE_INLINE_FLATTEN auto nonholonomic_partial_velocities(const X& x, const Ev& e
 // v~_t = v_t + sum_r v_r B_r, in F.
 template <Frame F, class NH, class X, class Ev, class Sol>
 auto nonholonomic_remainder(const X& x, const Ev& ev, const Sol& sol) {
+  static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
   auto [all, rest] = linear_in_speeds<F>(x, ev);
   for (std::size_t r = 0; r < NH::m; ++r)
     rest += all.col(static_cast<Eigen::Index>(NH::dependents[r] - 1)) * sol.B(static_cast<Eigen::Index>(r));

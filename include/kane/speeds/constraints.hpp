@@ -67,14 +67,13 @@ struct nonholonomic<Sp, dependent<D...>, C...> {
     }
     return r;
   }();
-  static_assert(
-      [] {
-        for (std::size_t i = 0; i < m; ++i)
-          for (std::size_t j = 0; j < i; ++j)
-            if (dependents[i] == dependents[j]) return false;
-        return true;
-      }(),
-      "kane: a dependent speed is named twice");
+  static constexpr bool distinct_dependents = [] {
+    for (std::size_t i = 0; i < m; ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (dependents[i] == dependents[j]) return false;
+    return true;
+  }();
+  static_assert(distinct_dependents, "kane: a dependent speed is named twice");
   static constexpr std::tuple<decltype(C)...> equations{C...};
 };
 
