@@ -315,3 +315,36 @@ TEST_CASE("kinematics: angular velocity and acceleration one edge below the eval
                           0.0));
   }
 }
+
+TEST_CASE("kinematics: ^A w^B - ^A w^C = ^C w^B, reversed chains, and the evaluator's copy of its state") {
+  state6 s;
+  s.q = {0.3, -0.7, 1.1, 0, 0, 0};
+  s.qd = {0.5, 1.5, -2.0, 0, 0, 0};
+  kane::evaluator<state6, kane::frames<C>> ev;
+  CHECK(!ev.updated());
+  // before the first update every result is NaN, never a read of memory not written
+  CHECK(std::isnan(kane::express<N>(e<C, 2>, ev)[0]));
+  ev.update(s);
+  CHECK(ev.updated());
+  const auto wNA = kane::express<N>(kane::angular_velocity<N, A>(), ev);
+  const auto wNC = kane::express<N>(kane::angular_velocity<N, C>(), ev);
+  // ^N w^A - ^N w^C = ^C w^A = -(q2' a1 + q3' b2) (B about a1 = x by q2, C about b2 = y by q3)
+  const auto diff = kane::express<N>(kane::angular_velocity<N, A>() - kane::angular_velocity<N, C>(), ev);
+  const auto wCA = kane::express<N>(kane::angular_velocity<C, A>(), ev);
+  const auto a1 = kane::express<N>(e<A, 1>, ev), b2 = kane::express<N>(e<B, 2>, ev);
+  for (int i = 0; i < 3; ++i) {
+    CHECK(diff[i] == Approx(wNA[i] - wNC[i]).margin(1e-15));
+    CHECK(diff[i] == Approx(wCA[i]).margin(1e-15));
+    CHECK(diff[i] == Approx(-(1.5 * a1[i] - 2.0 * b2[i])).margin(1e-15));
+  }
+  // ^A w^C + ^N w^A (the chain written in reverse) = ^N w^C
+  const auto rev = kane::express<N>(kane::angular_velocity<A, C>() + kane::angular_velocity<N, A>(), ev);
+  for (int i = 0; i < 3; ++i) CHECK(rev[i] == Approx(wNC[i]).margin(1e-15));
+  // update copies the state: a temporary is safe, and a later change of s is not seen until update
+  ev.update(state6{s});
+  s.q[0] += 0.4;
+  CHECK(kane::express<N>(e<A, 1>, ev)[0] == Approx(std::cos(0.3)));
+  CHECK(ev.coordinate_value<1, 0>() == 0.3);
+  ev.update(s);
+  CHECK(kane::express<N>(e<A, 1>, ev)[0] == Approx(std::cos(0.7)));
+}
