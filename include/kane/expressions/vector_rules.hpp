@@ -68,40 +68,51 @@ template <class X>
 struct tree_of;
 template <class X>
 using tree_of_t = typename tree_of<X>::type;
-template <class X, class M>
-using member_tree_t = tree_of_t<std::remove_cvref_t<M>>;
+// The trees of a node's children l and r, s, v, x (void where it has none).
+template <class M>
+using child_tree_t = tree_of_t<std::remove_cvref_t<M>>;
 template <class X>
-constexpr auto members_tree() {  // the children l, r, s, v, x of a node
-  auto lr = [] {
-    if constexpr (requires { &X::l; })
-      return static_cast<join_trees_t<member_tree_t<X, decltype(X::l)>, member_tree_t<X, decltype(X::r)>>*>(
-          nullptr);
-    else
-      return static_cast<void*>(nullptr);
-  };
-  auto one = []<class T>(T*) {
-    if constexpr (requires { &X::s; })
-      return static_cast<join_trees_t<T, member_tree_t<X, decltype(X::s)>>*>(nullptr);
-    else if constexpr (requires { &X::v; })
-      return static_cast<join_trees_t<T, member_tree_t<X, decltype(X::v)>>*>(nullptr);
-    else if constexpr (requires { &X::x; })
-      return static_cast<join_trees_t<T, member_tree_t<X, decltype(X::x)>>*>(nullptr);
-    else
-      return static_cast<T*>(nullptr);
-  };
-  auto sv = [](auto* t) {  // scaled holds s and v
-    using T = std::remove_pointer_t<decltype(t)>;
-    if constexpr (
-        requires { &X::s; } && requires { &X::v; })
-      return static_cast<join_trees_t<T, member_tree_t<X, decltype(X::v)>>*>(nullptr);
-    else
-      return t;
-  };
-  return sv(one(lr()));
-}
+struct lr_tree {
+  using type = void;
+};
+template <class X>
+requires requires { &X::l; }
+struct lr_tree<X> {
+  using type = join_trees_t<child_tree_t<decltype(X::l)>, child_tree_t<decltype(X::r)>>;
+};
+template <class X>
+struct s_tree {
+  using type = void;
+};
+template <class X>
+requires requires { &X::s; }
+struct s_tree<X> {
+  using type = child_tree_t<decltype(X::s)>;
+};
+template <class X>
+struct v_tree {
+  using type = void;
+};
+template <class X>
+requires requires { &X::v; }
+struct v_tree<X> {
+  using type = child_tree_t<decltype(X::v)>;
+};
+template <class X>
+struct x_tree {
+  using type = void;
+};
+template <class X>
+requires requires { &X::x; }
+struct x_tree<X> {
+  using type = child_tree_t<decltype(X::x)>;
+};
+template <class X>
+using members_tree_t = join_trees_t<join_trees_t<typename lr_tree<X>::type, typename s_tree<X>::type>,
+                                    join_trees_t<typename v_tree<X>::type, typename x_tree<X>::type>>;
 template <class X>
 struct tree_of {
-  using type = std::remove_pointer_t<decltype(members_tree<X>())>;
+  using type = members_tree_t<X>;
 };
 template <class X>
 requires requires { typename X::frame; }
@@ -111,8 +122,7 @@ struct tree_of<X> {
 template <class X>
 requires requires { typename X::observer; }
 struct tree_of<X> {
-  using type =
-      join_trees_t<root_of<typename X::observer>, std::remove_pointer_t<decltype(members_tree<X>())>>;
+  using type = join_trees_t<root_of<typename X::observer>, members_tree_t<X>>;
 };
 
 // One tree for the frames of X, Y, ...; the first error names both roots.
