@@ -1,4 +1,5 @@
-// Direction cosines compose and apply only along matching frames.
+// Direction cosines compose and apply only along matching frames. Each case is a misuse (#ifdef)
+// and its fix (#else).
 // case compose: dcm_product_needs_left_from_frame_equal_right_to_frame<A, B>
 // case apply: dcm_applies_only_to_components_in_its_from_frame<N, B>
 #include <kane/kane.hpp>
@@ -16,9 +17,14 @@ double use() {
 #ifdef KANE_CASE_compose
   const auto wrong = APB * APB;
   (void)wrong;
+#else
+  const auto right = APB * NPA;
+  (void)right;
 #endif
 #ifdef KANE_CASE_apply
   pA = NPA * kane::vec<B>(1, 2, 3);
+#else
+  pA = NPA * kane::vec<N>(1, 2, 3);
 #endif
   return NPB(0, 0) + pA[0];
 }

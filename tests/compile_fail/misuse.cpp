@@ -1,4 +1,5 @@
-// The remaining rules of the types: numbering, scalar types, sizes, kinds of arguments.
+// The remaining rules of the types: numbering, scalar types, sizes, kinds of arguments. Each case
+// is a misuse (#ifdef) and its fix (#else): the file as it is compiles every fix.
 // case zero_denominator: kane: a constant.s denominator must not be zero
 // case division_by_zero: kane: division by the constant zero
 // case coordinate_zero: kane: generalized coordinates are numbered from 1
@@ -42,71 +43,118 @@ double use() {
   x += kane::dcm<N, A, float>()(0, 0) + kane::vec<N, float>()[0];
 #ifdef KANE_CASE_zero_denominator
   (void)kane::constant<1, 0>{};
+#else
+  (void)kane::constant<1, 2>{};
 #endif
 #ifdef KANE_CASE_division_by_zero
   (void)(kane::q<1> / kane::zero_t{});
+#else
+  (void)(kane::q<1> / kane::q<2>);
 #endif
 #ifdef KANE_CASE_coordinate_zero
   (void)kane::coordinate<0>{};
+#else
+  (void)kane::coordinate<1>{};
 #endif
 #ifdef KANE_CASE_speed_zero
   (void)kane::speed<0>{};
+#else
+  (void)kane::speed<1>{};
 #endif
 #ifdef KANE_CASE_parameter_zero
   (void)kane::parameter<0>{};
+#else
+  (void)kane::parameter<1>{};
 #endif
 #ifdef KANE_CASE_unit_index
   (void)kane::unit<N, 4>{};
+#else
+  (void)kane::unit<N, 3>{};
 #endif
 #ifdef KANE_CASE_vec_scalar
   (void)kane::vec<N, int>{};
+#else
+  (void)kane::vec<N, float>{};
 #endif
 #ifdef KANE_CASE_dcm_scalar
   (void)kane::dcm<N, A, int>{};
+#else
+  (void)kane::dcm<N, A, float>{};
 #endif
 #ifdef KANE_CASE_dcm_frames
   (void)kane::dcm<N, int>{};
+#else
+  (void)kane::dcm<N, A>{};
 #endif
 #ifdef KANE_CASE_state_scalar
   (void)kane::state<int, 2>{};
+#else
+  (void)kane::state<float, 2>{};
 #endif
 #ifdef KANE_CASE_frame_orientation
-  struct X : kane::frame<N, int> {};
-  (void)X{};
+  struct X1 : kane::frame<N, int> {};
+  (void)X1{};
+#else
+  struct X1 : kane::frame<N, kane::simple<kane::axis::x, kane::coordinate<2>>> {};
+  (void)X1{};
 #endif
 #ifdef KANE_CASE_point_from
-  struct X : kane::point<int, kane::e<N, 1>> {};
-  (void)X{};
+  struct X2 : kane::point<int, kane::e<N, 1>> {};
+  (void)X2{};
+#else
+  struct X2 : kane::point<O, kane::e<N, 1>> {};
+  (void)X2{};
 #endif
 #ifdef KANE_CASE_point_vector
-  struct X : kane::point<O, kane::q<1>> {};
-  (void)X{};
+  struct X3 : kane::point<O, kane::q<1>> {};
+  (void)X3{};
+#else
+  struct X3 : kane::point<O, kane::q<1> * kane::e<N, 1>> {};
+  (void)X3{};
 #endif
 #ifdef KANE_CASE_speeds_scalar
   (void)kane::speeds<kane::e<N, 1>>::n;
+#else
+  (void)kane::speeds<kane::q<1>>::n;
 #endif
 #ifdef KANE_CASE_speed_beyond_state
   s[kane::u<3>] = 1.0;
+#else
+  s[kane::u<2>] = 1.0;
 #endif
 #ifdef KANE_CASE_parameter_beyond_state
   s[kane::parameter<2>{}] = 1.0;
+#else
+  s[kane::parameter<1>{}] = 1.0;
 #endif
 #ifdef KANE_CASE_second_derivative_of_speed
   s[kane::dt(kane::dt(kane::u<1>))] = 1.0;
+#else
+  s[kane::dt(kane::u<1>)] = 1.0;
 #endif
 #ifdef KANE_CASE_not_a_speed_set
   kane::evaluator<St, kane::frames<A>, kane::level::velocity, int> e2;
   (void)e2;
+#else
+  kane::evaluator<St, kane::frames<A>, kane::level::velocity, kane::qdot_speeds<2>> e2;
+  (void)e2;
 #endif
 #ifdef KANE_CASE_fewer_speeds
-  kane::evaluator<kane::state<double, 2, 1>, kane::frames<A>, kane::level::velocity, kane::qdot_speeds<2>> e2;
-  (void)e2;
+  kane::evaluator<kane::state<double, 2, 1>, kane::frames<A>, kane::level::velocity, kane::qdot_speeds<2>> e3;
+  (void)e3;
+#else
+  kane::evaluator<kane::state<double, 2, 2>, kane::frames<A>, kane::level::velocity, kane::qdot_speeds<2>> e3;
+  (void)e3;
 #endif
 #ifdef KANE_CASE_all_dependent
   (void)kane::nonholonomic<kane::qdot_speeds<1>, kane::dependent<1>, kane::u<1>>::p;
+#else
+  (void)kane::nonholonomic<kane::qdot_speeds<2>, kane::dependent<1>, kane::u<1>>::p;
 #endif
 #ifdef KANE_CASE_acceleration_not_linear
   (void)kane::velocity_remainder<kane::qdot_speeds<2>>(kane::angular_acceleration<N, A>());
+#else
+  (void)kane::velocity_remainder<kane::qdot_speeds<2>>(kane::angular_velocity<N, A>());
 #endif
   return x;
 }

@@ -1,4 +1,5 @@
-// Generalized speeds, partial velocities and constraints keep their counts.
+// Generalized speeds, partial velocities and constraints keep their counts. Each case is a misuse
+// (#ifdef) and its fix (#else).
 // case partial_wrt_coordinate: partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r<kane::coordinate<1(, 0)?(UL)?> ?>
 // case partial_beyond_speeds: kane: u_R is not a generalized speed of this system
 // case constraint_count: kane: m dependent speeds need m constraint equations
@@ -38,28 +39,46 @@ double use() {
   x += kane::residuals<cfg>(ev)[0];
 #ifdef KANE_CASE_partial_wrt_coordinate
   (void)kane::partial_velocity<sp>(w, kane::q<1>);
+#else
+  (void)kane::partial_velocity<sp>(w, kane::u<1>);
 #endif
 #ifdef KANE_CASE_partial_beyond_speeds
   (void)kane::partial_velocity<sp>(w, kane::u<3>);
+#else
+  (void)kane::partial_velocity<sp>(w, kane::u<2>);
 #endif
 #ifdef KANE_CASE_constraint_count
   (void)kane::nonholonomic<sp, kane::dependent<2>, c1, c1>::p;
+#else
+  (void)kane::nonholonomic<sp, kane::dependent<2>, c1>::p;
 #endif
 #ifdef KANE_CASE_dependent_not_a_speed
   (void)kane::nonholonomic<sp, kane::dependent<3>, c1>::p;
+#else
+  (void)kane::nonholonomic<sp, kane::dependent<1>, c1>::p;
 #endif
 #ifdef KANE_CASE_dependent_twice
   (void)kane::nonholonomic<kane::qdot_speeds<3>, kane::dependent<2, 2>, c1, c1>::p;
+#else
+  (void)kane::nonholonomic<kane::qdot_speeds<3>, kane::dependent<2, 3>, c1, c1>::p;
 #endif
 #ifdef KANE_CASE_speed_count
   kane::evaluator<kane::state<double, 3>, kane::frames<B>, kane::level::velocity, sp> ev3;
   (void)ev3;
+#else
+  kane::evaluator<kane::state<double, 2>, kane::frames<B>, kane::level::velocity, sp> ev3;
+  (void)ev3;
 #endif
 #ifdef KANE_CASE_too_many_holonomic
   (void)kane::configuration<0, 0, kane::q<1>>::n;
+#else
+  (void)kane::configuration<1, 0, kane::q<1>>::n;
 #endif
 #ifdef KANE_CASE_constraints_other_speeds
   using nh2 = kane::nonholonomic<kane::qdot_speeds<2>, kane::dependent<2>, c1>;
+  x += kane::solve_constraints<nh2>(ev).A(0, 0);
+#else
+  using nh2 = kane::nonholonomic<sp, kane::dependent<2>, c1>;
   x += kane::solve_constraints<nh2>(ev).A(0, 0);
 #endif
   // q1' in both speeds and q2' in none: Y is singular at every state; the fix is a speed with q2'

@@ -1,4 +1,5 @@
-// Frame trees: no cycles, real parents and axes, joined frames only.
+// Frame trees: no cycles, real parents and axes, joined frames only. Each case is a misuse (#ifdef)
+// and its fix (#else).
 // case cycle: kane: a frame.s parent must be declared .complete. before the frame
 // case not_a_frame: kane: frame<Parent, Orientation> needs a frame as Parent
 // case no_path: frames_of_two_trees_relate_them_through_a_common_root_frame<N, M>
@@ -19,28 +20,39 @@ struct G : kane::frame<M, kane::simple<kane::axis::x, q2>> {};
 struct Y;
 struct X : kane::frame<Y, kane::simple<kane::axis::z, q1>> {};
 struct Y : kane::frame<X, kane::simple<kane::axis::z, q2>> {};
+#else
+struct X : kane::frame<N, kane::simple<kane::axis::z, q1>> {};
+struct Y : kane::frame<X, kane::simple<kane::axis::z, q2>> {};
 #endif
 #ifdef KANE_CASE_not_a_frame
-struct X : kane::frame<int, kane::simple<kane::axis::z, q1>> {};
+struct H : kane::frame<int, kane::simple<kane::axis::z, q1>> {};
+#else
+struct H : kane::frame<N, kane::simple<kane::axis::z, q1>> {};
 #endif
 #ifdef KANE_CASE_zero_axis
-struct X : kane::frame<N, kane::simple<kane::direction<0, 0, 0>, q1>> {};
+struct Z : kane::frame<N, kane::simple<kane::direction<0, 0, 0>, q1>> {};
+#else
+struct Z : kane::frame<N, kane::simple<kane::direction<0, 0, 1>, q1>> {};
 #endif
 #ifdef KANE_CASE_sequence
-struct X : kane::frame<N, kane::body_fixed<3, 3, 1, q1, q2, q1>> {};
+struct S : kane::frame<N, kane::body_fixed<3, 3, 1, q1, q2, q1>> {};
+#else
+struct S : kane::frame<N, kane::body_fixed<3, 2, 1, q1, q2, q1>> {};
 #endif
 
 double use() {
   kane::state<double, 2> s;
+  double x = kane::direction_cosines<N, Y>(s)(0, 0) + kane::direction_cosines<N, H>(s)(0, 0);
+  x += kane::direction_cosines<N, Z>(s)(0, 0) + kane::direction_cosines<N, S>(s)(0, 0);
 #ifdef KANE_CASE_no_path
-  return kane::direction_cosines<A, G>(s)(0, 0);
-#endif
-#if defined(KANE_CASE_zero_axis) || defined(KANE_CASE_sequence)
-  return kane::direction_cosines<N, X>(s)(0, 0);
+  x += kane::direction_cosines<A, G>(s)(0, 0);
+#else
+  x += kane::direction_cosines<A, N>(s)(0, 0) + kane::direction_cosines<G, M>(s)(0, 0);
 #endif
 #ifdef KANE_CASE_vec_of_non_frame
   kane::vec<double> p;
-  return p[0];
+#else
+  kane::vec<A> p;
 #endif
-  return kane::direction_cosines<A, N>(s)(0, 0) + kane::direction_cosines<G, M>(s)(0, 0);
+  return x + p[0];
 }
