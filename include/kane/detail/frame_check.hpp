@@ -44,11 +44,9 @@ template <class P, class Q>
 struct points_not_joined_locate_both_from_one_origin;
 template <class Observer, class P>
 struct no_point_of_the_chain_is_fixed_in_the_observer_locate_the_point_from_one;
-// The two-point theorem (P, Q fixed in B) and the one-point theorem (Q fixed in B).
+// The two-point theorem: P and Q fixed in B.
 template <class Body, class Q, class P>
 struct two_point_theorem_needs_both_points_fixed_in_the_body_use_one_point_velocity;
-template <class Body, class Q>
-struct one_point_theorem_needs_the_reference_point_fixed_in_the_body;
 // dt(v), diff(v, q) of a vector: its derivative depends on the frame.
 template <class Vector>
 struct a_vector_derivative_needs_a_frame_write_dt_A_of_v;
