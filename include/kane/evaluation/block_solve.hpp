@@ -149,12 +149,12 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
       });
     }
   });
-  bool finite = true;  // x - x is 0 for a finite x, NaN otherwise
+  S residue = S(0);  // x - x is 0 for a finite x, NaN otherwise
   static_for<n * k>([&](auto cj) {
     constexpr std::size_t c = cj / k, j = cj % k;
-    if constexpr (Sys::x[c][j] == entry::other) finite = finite & (x[c][j] - x[c][j] == S(0));
+    if constexpr (Sys::x[c][j] == entry::other) residue += x[c][j] - x[c][j];
   });
-  if (status == solve_status::ok && !finite) status = solve_status::not_finite;
+  if (status == solve_status::ok && !(residue == S(0))) status = solve_status::not_finite;
   if (status != solve_status::ok)
     static_for<n * k>([&](auto cj) {
       constexpr std::size_t c = cj / k, j = cj % k;

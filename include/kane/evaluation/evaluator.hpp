@@ -7,10 +7,11 @@
 //   kane::vec<N> v = kane::express<N>(expr, ev);     // ^N components of expr
 //
 // With a speed set, q' and q'' are solved from u and u' (kinematic_equations.hpp).
-// update(s) copies s: every result is of the state of the last update, so a
-// result is never a mix of two states and s may be a temporary. Before the
-// first update the state is NaN (updated() is false, debug builds assert):
-// every result is NaN, never a read of memory not written.
+// update(s) copies what evaluation reads of s (q, p, t and, with a speed set,
+// u and u', else q' and q''): every result is of the state of the last update,
+// never a mix of two states, and s may be a temporary. Before the first update
+// the state is NaN (updated() is false, debug builds assert): every result is
+// NaN, never a read of memory not written.
 // Evaluating allocates nothing and calls no sin or cos of a frame coordinate.
 #pragma once
 
@@ -51,7 +52,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   using speed_set = Speeds;
   using typename pass_type::closure;
 
-  // The outward pass at s; s must outlive the evaluations that follow. With a
+  // The outward pass at a copy of s (later changes of s are not seen). With a
   // speed set, W and X at every level, q' and q'' from s.u and s.ud at the
   // velocity and acceleration levels. status() is ok only if the numbers of s
   // this level reads are finite (q, p, t; then qd or u, then qdd or ud) and,
@@ -62,6 +63,8 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   KANE_INLINE_FLATTEN void update(const St& s) requires(detail::inlined_entry<pass_type>) { pass_at(s); }
   KANE_FLATTEN void update(const St& s) requires(!detail::inlined_entry<pass_type>) { pass_at(s); }
 
+  // The state of the last update as far as evaluation reads it (with a speed set,
+  // q' and q'' stay NaN: coordinate_value gives the solved ones; without, u and u').
   const St& state() const {
     assert(updated_ && "kane: evaluate after update(s)");
     return st_;
@@ -105,13 +108,19 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
 
  private:
   KANE_ALWAYS_INLINE void pass_at(const St& s) {
-    st_ = s, updated_ = true;
+    st_.q = s.q, st_.p = s.p, st_.t = s.t, updated_ = true;
+    if constexpr (solves)
+      st_.u = s.u, st_.ud = s.ud;
+    else
+      st_.qd = s.qd, st_.qdd = s.qdd;
     const auto tr = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
     constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
-    bool finite = detail::all_finite(s.q) && detail::all_finite(s.p) && s.t - s.t == scalar(0);
-    if constexpr (velocity) finite = finite && (solves ? detail::all_finite(s.u) : detail::all_finite(s.qd));
+    scalar residue = detail::nonfinite_residue(s.q) + detail::nonfinite_residue(s.p) + (s.t - s.t);
+    if constexpr (velocity)
+      residue += solves ? detail::nonfinite_residue(s.u) : detail::nonfinite_residue(s.qd);
     if constexpr (acceleration)
-      finite = finite && (solves ? detail::all_finite(s.ud) : detail::all_finite(s.qdd));
+      residue += solves ? detail::nonfinite_residue(s.ud) : detail::nonfinite_residue(s.qdd);
+    const bool finite = residue == scalar(0);
     this->status_ = finite ? solve_status::ok : solve_status::not_finite;
     if constexpr (!solves) {
       this->template pass<true, velocity, acceleration>(tr, *this);  // frame after frame, all levels at once

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <utility>
 
 #if (defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__)) && \
     !defined(KANE_ALLOW_FAST_MATH)
@@ -19,12 +20,18 @@ namespace kane {
 enum class solve_status { ok, singular, not_finite };
 
 namespace detail {
-// Every number of a is finite: x - x is 0 for a finite x, NaN otherwise.
+// 0 if every number of a is finite, NaN otherwise: x - x is 0 for a finite x and
+// NaN for NaN or inf, and a sum of zeros is 0 (no comparison per number).
 template <class S, std::size_t N>
-bool all_finite(const std::array<S, N>& a) {
-  bool finite = true;
-  for (const S& x : a) finite = finite & (x - x == S(0));
-  return finite;
+constexpr S nonfinite_residue(const std::array<S, N>& a) {
+  S sum = S(0);
+  [&]<std::size_t... I>(std::index_sequence<I...>) { ((sum += a[I] - a[I]), ...); }
+  (std::make_index_sequence<N>{});
+  return sum;
+}
+template <class S, std::size_t N>
+constexpr bool all_finite(const std::array<S, N>& a) {
+  return nonfinite_residue(a) == S(0);
 }
 }  // namespace detail
 
