@@ -12,6 +12,7 @@
 
 #include "../examples/models/arm6.hpp"
 #include "../examples/models/disc.hpp"
+#include "../examples/models/fourbar.hpp"
 
 namespace warnings {
 using kane::cross;
@@ -177,6 +178,20 @@ S arm(const kane::state<S, 6>& s) {
          kane::direction_cosines<m::N, m::B6>(s)(0, 0);
 }
 
+// The four-bar: Newton on its loop, then its velocity constraints.
+template <class S>
+S fourbar(const kane::state<S, 6>& s6) {
+  namespace m = models::fourbar;
+  kane::state<S, 3, 3, 4> s;
+  s.q = {s6.q[0], s6.q[1], s6.q[2]};
+  s.u = {s6.q[3], S(0), S(0)};
+  s.p = {S(0.3), S(1), S(0.8), S(1.1)};
+  kane::evaluator<decltype(s), kane::frames<m::A, m::B, m::C>, kane::level::velocity, m::speeds> ev;
+  const kane::newton_result<S> r = kane::solve_configuration<m::loop>(ev, s, {S(1e-5), 10});
+  const auto sol = kane::solve_constraints<m::rates>(ev);
+  return r.residual + S(r.iterations) + sol.A.sum() + S(kane::degrees_of_freedom<decltype(s), m::loop>);
+}
+
 // Printing.
 template <class S>
 std::string printing(const state6<S>& s) {
@@ -191,7 +206,7 @@ std::string printing(const state6<S>& s) {
 
 template <class S>
 S all(const state6<S>& s, const kane::state<S, 6>& s6) {
-  return frames_and_vectors(s) + kinematics(s) + speeds(s) + arm(s6) + S(printing(s).size());
+  return frames_and_vectors(s) + kinematics(s) + speeds(s) + arm(s6) + fourbar(s6) + S(printing(s).size());
 }
 
 template float all<float>(const state6<float>&, const kane::state<float, 6>&);

@@ -2,6 +2,7 @@
 // differential equations), node evaluation and the numeric tables of Kane's method.
 #pragma once
 
+#include "kane/evaluation/configuration.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/evaluator.hpp"
 #include "kane/evaluation/kinematic_equations.hpp"
