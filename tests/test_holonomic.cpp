@@ -127,3 +127,34 @@ TEST_CASE("holonomic: a loop that cannot close, a singular Jacobian, NaN input")
     CHECK(loose.residual <= 1e-3);
   }
 }
+
+TEST_CASE("holonomic: the constraint matrix solved, q' as a vector, parameters by their type") {
+  state s = start(0.9);
+  s[a] = la, s[b] = lb, s[c] = lc, s[d] = ld;  // named parameters address the state
+  CHECK(s.p[0] == la);
+  CHECK(s[d] == ld);
+  evaluator ev;
+  REQUIRE(kane::solve_configuration<loop>(ev, s).status == kane::solve_status::ok);
+  const auto sol = kane::solve_constraints<rates>(ev);
+  REQUIRE(sol.status == kane::solve_status::ok);
+  // C u + c0 = 0 with C = df/dq (the velocity constraints of a scleronomic loop): rows n1, n2.
+  const double q1 = s.q[0], q2 = s.q[1], q3 = s.q[2];
+  CHECK(sol.C(0, 0) == Approx(-la * std::sin(q1)));
+  CHECK(sol.C(0, 1) == Approx(-lb * std::sin(q2)));
+  CHECK(sol.C(0, 2) == Approx(lc * std::sin(q3)));
+  CHECK(sol.C(1, 0) == Approx(la * std::cos(q1)));
+  CHECK(sol.C(1, 1) == Approx(lb * std::cos(q2)));
+  CHECK(sol.C(1, 2) == Approx(-lc * std::cos(q3)));
+  CHECK(sol.c0.norm() == 0);
+  const Eigen::Vector3d u(1.0, sol.A(0, 0), sol.A(1, 0));  // u1 = 1 and the dependent speeds
+  CHECK((sol.C * u + sol.c0).norm() < 1e-14);
+  // q' of the evaluator as one vector: u = q' for qdot_speeds.
+  s.u = {0.5, -0.25, 2.0};
+  ev.update(s);
+  CHECK(ev.coordinate_rates() == s.u);
+  kane::evaluator<state, kane::frames<C>, kane::level::acceleration> plain;  // q', q'' from the state
+  s.qd = {1, 2, 3}, s.qdd = {4, 5, 6};
+  plain.update(s);
+  CHECK(plain.coordinate_rates() == s.qd);
+  CHECK(plain.coordinate_rates<2>() == s.qdd);
+}

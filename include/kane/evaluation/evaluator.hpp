@@ -15,10 +15,12 @@
 // Evaluating allocates nothing and calls no sin or cos of a frame coordinate.
 #pragma once
 
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
@@ -86,6 +88,15 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
       return this->template rate<I, D>();
     } else
       return D == 1 ? st_.qd[I - 1] : st_.qdd[I - 1];
+  }
+
+  // (q_1^(D), ..., q_nq^(D)): q' (D = 1) or q'' (D = 2), as coordinate_value.
+  template <std::size_t D = 1>
+  std::array<scalar, St::nq> coordinate_rates() const {
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+      return std::array<scalar, St::nq>{coordinate_value<I + 1, D>()...};
+    }
+    (std::make_index_sequence<St::nq>{});
   }
 
   // sin q_I and cos q_I: from the cache when a frame turns by q_I.

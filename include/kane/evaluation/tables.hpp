@@ -152,12 +152,15 @@ auto velocity_residuals(const Ev& ev) {
 // is ok and the dependent block was solvable with finite A and B (it is the
 // evaluator's status when that failed, as for NaN in the state; A and B are
 // NaN whenever status is not ok).
+// C and c0 are the constraints solved, C u + c0 = 0 (C: M x (M + P), all speeds).
 template <class S, std::size_t M, std::size_t P, class NH = void>
 struct constraint_solution {
   using constraints = NH;  // the declaration solved: tables of other constraints refuse it
   Eigen::Matrix<S, int(M), int(P)> A;
   Eigen::Matrix<S, int(M), 1> B;
   solve_status status;
+  Eigen::Matrix<S, int(M), int(M + P)> C;
+  Eigen::Matrix<S, int(M), 1> c0;
 };
 
 // u_dep = A u_ind + B at the evaluator's state.
@@ -188,6 +191,19 @@ KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
     }
   });
   constraint_solution<S, m, p, NH> out;
+  detail::static_for<m * m>([&](auto kj) {
+    constexpr std::size_t k = kj / m, j = kj % m;
+    out.C(Eigen::Index(k), Eigen::Index(NH::dependents[j] - 1)) =
+        Sys::m[k][j] == detail::entry::one ? S(1) : dep[k][j];
+  });
+  detail::static_for<m*(p + 1)>([&](auto kj) {
+    constexpr std::size_t k = kj / (p + 1), j = kj % (p + 1);
+    const S c = Sys::r[k][j] == detail::entry::one ? S(1) : right[k][j];
+    if constexpr (j < p)
+      out.C(Eigen::Index(k), Eigen::Index(NH::independents[j] - 1)) = c;
+    else
+      out.c0(Eigen::Index(k)) = c;
+  });
   const solve_status solved = detail::solve_structured<Sys>(dep, right, x);
   out.status = ev.status() != solve_status::ok ? ev.status() : solved;
   for (std::size_t k = 0; k < m; ++k) {
