@@ -7,6 +7,7 @@
 // case dependent_twice: kane: a dependent speed is named twice
 // case speed_count: kane: a speed set defines as many speeds as the state has coordinates
 // case too_many_holonomic: kane: more holonomic constraints than coordinates
+// case configuration_not_scalar: kane: configuration constraints are scalar expressions
 // case constraints_other_speeds: evaluator_and_constraints_use_different_speed_sets<kane::speeds<.*>, kane::qdot_speeds<2(UL)?> ?>
 // case speeds_miss_a_rate: kane: these speeds do not determine q'
 // case dependent_not_in_constraints: kane: the constraints do not determine the dependent speeds
@@ -71,6 +72,11 @@ double use() {
 #endif
 #ifdef KANE_CASE_too_many_holonomic
   (void)kane::configuration<0, 0, kane::q<1>>::n;
+#else
+  (void)kane::configuration<1, 0, kane::q<1>>::n;
+#endif
+#ifdef KANE_CASE_configuration_not_scalar
+  (void)kane::configuration<1, 0, kane::e<N, 1>>::n;
 #else
   (void)kane::configuration<1, 0, kane::q<1>>::n;
 #endif
