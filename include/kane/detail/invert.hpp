@@ -1,6 +1,7 @@
 // The inverse of a small fixed-size matrix by Gauss-Jordan elimination with
 // full pivoting. Rank as Eigen's FullPivLU decides it: a pivot counts if it
 // exceeds eps * n times the largest pivot (the first), or a given threshold.
+// A 2 x 2 matrix is inverted in closed form under the same rule.
 #pragma once
 
 #include <cmath>
@@ -17,6 +18,16 @@ namespace kane::detail {
 template <class S, int N>
 bool invert(const Eigen::Matrix<S, N, N>& m, Eigen::Matrix<S, N, N>& inv, S tol = S(-1)) {
   using std::abs;
+  if constexpr (N == 2) {  // the same rule in closed form: pivots max |m_ij| and det / max |m_ij|
+    const S a = m(0, 0), b = m(0, 1), c = m(1, 0), d = m(1, 1);
+    const S ab = abs(a) > abs(b) ? abs(a) : abs(b), cd = abs(c) > abs(d) ? abs(c) : abs(d);
+    const S best = ab > cd ? ab : cd, det = a * d - b * c;
+    if (tol < S(0)) tol = std::numeric_limits<S>::epsilon() * S(2) * best;
+    if (!(best > tol) || !(abs(det) > tol * best) || !(det - det == S(0))) return false;
+    const S r = S(1) / det;
+    inv << d * r, -b * r, -c * r, a * r;
+    return true;
+  }
   constexpr std::size_t n = static_cast<std::size_t>(N);  // array bounds are sizes
   S g[n][2 * n];
   for (int i = 0; i < N; ++i)
