@@ -16,6 +16,15 @@ enum class entry : unsigned char { zero, one, other };
 template <std::size_t R, std::size_t C>
 using pattern = std::array<std::array<entry, C>, R>;
 
+// No two entries of a equal.
+template <class T, std::size_t N>
+constexpr bool all_distinct(const std::array<T, N>& a) {
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (a[i] == a[j]) return false;
+  return true;
+}
+
 template <std::size_t N>
 struct block_form {
   std::array<std::size_t, N> row{};        // row[c]: the row that determines unknown c

@@ -67,12 +67,7 @@ struct nonholonomic<Sp, dependent<D...>, C...> {
     }
     return r;
   }();
-  static constexpr bool distinct_dependents = [] {
-    for (std::size_t i = 0; i < m; ++i)
-      for (std::size_t j = 0; j < i; ++j)
-        if (dependents[i] == dependents[j]) return false;
-    return true;
-  }();
+  static constexpr bool distinct_dependents = detail::all_distinct(dependents);
   static_assert(distinct_dependents, "kane: a dependent speed is named twice");
   static constexpr std::tuple<decltype(C)...> equations{C...};
 };

@@ -38,12 +38,7 @@ struct holonomic<dependent_coordinates<D...>, F...> {
                 "holonomic<dependent_coordinates<...>, f...> differ");
   static_assert(((D >= 1) && ...), "kane: generalized coordinates are numbered from 1 (q1, q2, ...)");
   static constexpr std::array<std::size_t, m> dependents{D...};
-  static constexpr bool distinct_dependents = [] {
-    for (std::size_t i = 0; i < m; ++i)
-      for (std::size_t j = 0; j < i; ++j)
-        if (dependents[i] == dependents[j]) return false;
-    return true;
-  }();
+  static constexpr bool distinct_dependents = detail::all_distinct(dependents);
   static_assert(distinct_dependents, "kane: a dependent coordinate is named twice");
   static constexpr std::size_t last_dependent = [] {
     std::size_t r = 0;
