@@ -60,8 +60,8 @@ newton_result<typename Ev::scalar> solve_configuration(Ev& ev, typename Ev::stat
       sum += f[k][0] - f[k][0];
     });
     out.iterations = step, out.residual = sum == S(0) ? residual : std::numeric_limits<S>::quiet_NaN();
-    if (ev.status() != solve_status::ok || !(sum == S(0))) {
-      out.status = solve_status::not_finite;
+    if (ev.status() != solve_status::ok || !(sum == S(0))) {  // the evaluator's own status first
+      out.status = ev.status() != solve_status::ok ? ev.status() : solve_status::not_finite;
       return out;
     }
     if (residual <= options.tolerance) {
