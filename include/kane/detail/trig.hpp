@@ -64,6 +64,16 @@ constexpr auto unique_indices() {
   return out;
 }
 
+// The indices Ks... but 0, each once, ascending (0: an edge whose angle is not a bare coordinate).
+template <std::size_t... Ks>
+constexpr auto coordinate_indices() {
+  constexpr auto all = unique_indices<Ks...>();
+  constexpr std::size_t n = all.size() > 0 && all[0] == 0 ? all.size() - 1 : all.size();
+  std::array<std::size_t, n> out{};
+  for (std::size_t i = 0; i < n; ++i) out[i] = all[all.size() - n + i];
+  return out;
+}
+
 // sin/cos of q_k for k in Needed.
 template <auto Needed, class State>
 KANE_ALWAYS_INLINE trig<typename State::scalar, Needed> make_trig(const State& st) {

@@ -2,8 +2,9 @@
 // of the closure (ancestors first) and its root R, the columns e_F1, e_F2,
 // e_F3, ^R w^F and ^R alpha^F in R's components. For an edge P -> F that
 // turns about k by q: e_Fi = R(k, q) e_Pi, ^R w^F = ^R w^P + q' k,
-// ^R alpha^F = ^R alpha^P + q'' k + q' ^R w^P x k. sin and cos of each
-// coordinate once per state; q' and q'' come from the caller (Rates).
+// ^R alpha^F = ^R alpha^P + q'' k + q' ^R w^P x k; for an angle theta
+// (frames/angle.hpp), theta, theta' and theta'' in place of q, q', q''. sin and
+// cos of each coordinate once per state; q' and q'' come from the caller (Rates).
 #pragma once
 
 #include <array>
@@ -16,6 +17,7 @@
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
 #include "kane/detail/v3.hpp"
+#include "kane/evaluation/evaluate.hpp"
 #include "kane/frames/frame.hpp"
 #include "kane/frames/orientation.hpp"
 
@@ -38,17 +40,11 @@ struct step_coordinates<list<F...>> {
     if constexpr (std::is_void_v<typename X::tree_parent>)
       return 0;
     else
-      return X::step::coordinate::index;
+      return X::step::coordinate_index;
   }
-  static constexpr auto value = [] {
-    constexpr auto all = unique_indices<index<F>()...>();
-    // drop the 0 that stands for roots
-    constexpr std::size_t n = all.size() > 0 && all[0] == 0 ? all.size() - 1 : all.size();
-    std::array<std::size_t, n> out{};
-    for (std::size_t i = 0; i < n; ++i) out[i] = all[all.size() - n + i];
-    return out;
-  }();
+  static constexpr auto value = coordinate_indices<index<F>()...>();
 };
+
 template <class S, class Closure, level Level>
 class outward_pass {
  public:
@@ -81,8 +77,7 @@ class outward_pass {
     if constexpr (contains<F, closure>::value || !edge_below_held<F>())
       return load3(w_[index<F>()].data());
     else
-      return load3(w_[index<typename F::tree_parent>()].data()) +
-             rates.template coordinate_value<F::step::coordinate::index, 1>() * edge_axis<F>();
+      return turned<F, 1>(load3(w_[index<typename F::tree_parent>()].data()), rates);
   }
   template <class F, class Rates>
   KANE_ALWAYS_INLINE v3<scalar> alpha_value(const Rates& rates) const {
@@ -91,12 +86,8 @@ class outward_pass {
         "kane: this evaluator computes no angular accelerations; declare it with level::acceleration");
     if constexpr (contains<F, closure>::value || !edge_below_held<F>())
       return load3(a_[index<F>()].data());
-    else {
-      constexpr std::size_t q = F::step::coordinate::index, ip = index<typename F::tree_parent>();
-      const vec3 k = edge_axis<F>();
-      return load3(a_[ip].data()) + rates.template coordinate_value<q, 2>() * k +
-             rates.template coordinate_value<q, 1>() * cross3(load3(w_[ip].data()), k);
-    }
+    else
+      return alpha_below<F>(rates);
   }
 
   template <class F>
@@ -161,7 +152,7 @@ class outward_pass {
   }
   template <bool Pose, bool Velocity, bool Acceleration, class F, class Rates>
   KANE_ALWAYS_INLINE void edge(const trig_type& t, const Rates& rates) {
-    if constexpr (Pose) pose_edge<F>(t);
+    if constexpr (Pose) pose_edge<F>(t, rates);
     if constexpr (Velocity) velocity_edge<F>(rates);
     if constexpr (Acceleration) acceleration_edge<F>(rates);
   }
@@ -191,14 +182,59 @@ class outward_pass {
     }
   }
 
-  template <class F>
-  KANE_ALWAYS_INLINE void pose_edge(const trig_type& t) {
+  // theta^(D) of the edge above F: q^(D) for a bare coordinate, else dt^D(theta) from the rates.
+  template <class F, std::size_t D>
+  static constexpr auto angle_rate() {
+    if constexpr (D == 1)
+      return ddt(F::step::angle);
+    else
+      return ddt(ddt(F::step::angle));
+  }
+  template <class F, std::size_t D>
+  static constexpr bool turns = !std::is_same_v<std::remove_cv_t<decltype(angle_rate<F, D>())>, zero_t>;
+  template <class F, std::size_t D, class Rates>
+  KANE_ALWAYS_INLINE scalar angle_rate_value(const Rates& rates) const {
+    if constexpr (F::step::coordinate_index != 0)
+      return rates.template coordinate_value<F::step::coordinate_index, D>();
+    else
+      return eval_scalar(angle_rate<F, D>(), rates);
+  }
+  // x + theta^(D) k
+  template <class F, std::size_t D, class Rates>
+  KANE_ALWAYS_INLINE vec3 turned(const vec3& x, const Rates& rates) const {
+    if constexpr (turns<F, D>)
+      return x + angle_rate_value<F, D>(rates) * edge_axis<F>();
+    else
+      return x;
+  }
+  // ^R alpha^F = ^R alpha^P + theta'' k + theta' ^R w^P x k
+  template <class F, class Rates>
+  KANE_ALWAYS_INLINE vec3 alpha_below(const Rates& rates) const {
+    constexpr std::size_t ip = index<typename F::tree_parent>();
+    const vec3 ap = load3(a_[ip].data());
+    if constexpr (turns<F, 1>)
+      return turned<F, 2>(ap, rates) +
+             angle_rate_value<F, 1>(rates) * cross3(load3(w_[ip].data()), edge_axis<F>());
+    else
+      return ap;
+  }
+
+  template <class F, class Rates>
+  KANE_ALWAYS_INLINE void pose_edge(const trig_type& t, const Rates& rates) {
     if constexpr (is_edge<F>) {
       using P = typename F::tree_parent;
       using K = typename F::step::axis;
-      constexpr std::size_t q = F::step::coordinate::index;
+      constexpr std::size_t q = F::step::coordinate_index;
       constexpr int p = unit_axis<K>::principal;
-      const scalar c = t.template cos<q>(), s = t.template sin<q>();
+      scalar c, s;
+      if constexpr (q != 0) {
+        c = t.template cos<q>(), s = t.template sin<q>();
+      } else {
+        using std::cos;
+        using std::sin;
+        const scalar a = angle_value<scalar>(F::step::angle, rates.state());
+        c = cos(a), s = sin(a);
+      }
       scalar* cf = c_[index<F>()].data();
       if constexpr (p >= 0) {
         constexpr int a = (p + 1) % 3, b = (p + 2) % 3;  // e_Fa = c e_Pa + s e_Pb, e_Fb = c e_Pb - s e_Pa
@@ -226,23 +262,13 @@ class outward_pass {
 
   template <class F, class Rates>
   KANE_ALWAYS_INLINE void velocity_edge(const Rates& rates) {
-    if constexpr (is_edge<F>) {
-      constexpr std::size_t q = F::step::coordinate::index;
-      const vec3 wp = load3(w_[index<typename F::tree_parent>()].data());
-      store3(w_[index<F>()].data(), wp + rates.template coordinate_value<q, 1>() * edge_axis<F>());
-    }
+    if constexpr (is_edge<F>)
+      store3(w_[index<F>()].data(), turned<F, 1>(load3(w_[index<typename F::tree_parent>()].data()), rates));
   }
 
   template <class F, class Rates>
   KANE_ALWAYS_INLINE void acceleration_edge(const Rates& rates) {
-    if constexpr (is_edge<F>) {
-      constexpr std::size_t q = F::step::coordinate::index;
-      constexpr std::size_t ip = index<typename F::tree_parent>();
-      const vec3 k = edge_axis<F>();
-      const vec3 wp = load3(w_[ip].data()), ap = load3(a_[ip].data());
-      store3(a_[index<F>()].data(), ap + rates.template coordinate_value<q, 2>() * k +
-                                        rates.template coordinate_value<q, 1>() * cross3(wp, k));
-    }
+    if constexpr (is_edge<F>) store3(a_[index<F>()].data(), alpha_below<F>(rates));
   }
 
   trig_type trig_{nan_filled<decltype(trig_type::s)>(), nan_filled<decltype(trig_type::c)>()};

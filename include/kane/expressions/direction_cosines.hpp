@@ -1,7 +1,7 @@
 // Direction cosines the tree decides: e_Ai . e_Bj is 1 or 0 when the two unit
-// vectors are vectors of one frame, and cos q, +-sin q or 0 when they sit on
-// the two sides of one simple rotation about a principal axis by q. A unit
-// vector on the axis of such a rotation is a unit vector of both frames.
+// vectors are vectors of one frame, and cos theta, +-sin theta or 0 when they
+// sit on the two sides of one simple rotation about a principal axis by theta.
+// A unit vector on the axis of such a rotation is a unit vector of both frames.
 #pragma once
 
 #include <type_traits>
@@ -52,19 +52,19 @@ constexpr bool above_edge() {
     return reaches_down<A, I, typename B::tree_parent>();
 }
 
-// e_PI . e_CJ, C turned from its tree parent P about a principal axis p by q: (^P P^C)_JI.
+// e_PI . e_CJ, C turned from its tree parent P about a principal axis p by theta: (^P P^C)_JI.
 template <class C, int I, int J>
 constexpr auto across_edge() {
   constexpr int p = edge_principal<C>(), i = I - 1, j = J - 1;
-  using Q = typename C::step::coordinate;
+  constexpr auto theta = C::step::angle;
   if constexpr (i == p || j == p)
     return std::conditional_t<i == j, one_t, zero_t>{};
   else if constexpr (i == j)
-    return cos(Q{});
+    return cos(theta);
   else if constexpr (j == (p + 1) % 3)
-    return sin(Q{});
+    return sin(theta);
   else
-    return -sin(Q{});
+    return -sin(theta);
 }
 
 struct undecided {};

@@ -21,32 +21,32 @@ struct path_coordinates;
 template <class... Up, class... Down>
 struct path_coordinates<list<Up...>, list<Down...>> {
   static constexpr auto value =
-      unique_indices<Up::step::coordinate::index..., Down::step::coordinate::index...>();
+      coordinate_indices<Up::step::coordinate_index..., Down::step::coordinate_index...>();
 };
 
 // A factor of a chain: ^P P^F of the edge above F, transposed when walking up.
 template <class F, bool Up>
 struct edge {
-  template <class S, class Trig>
-  static Eigen::Matrix<S, 3, 3> matrix(const Trig& t) {
+  template <class S, class Trig, class St>
+  static Eigen::Matrix<S, 3, 3> matrix(const Trig& t, const St& st) {
     if constexpr (Up)
-      return F::step::template matrix<S>(t).transpose();
+      return F::step::template matrix<S>(t, st).transpose();
     else
-      return F::step::template matrix<S>(t);
+      return F::step::template matrix<S>(t, st);
   }
 };
 
 // Product of the factors, the first applied first; the identity when empty.
 // No factor is multiplied by an identity, so a NaN stays in the entries
 // that are computed from it.
-template <class S, class Trig>
-Eigen::Matrix<S, 3, 3> chain(const Trig&, list<>) {
+template <class S, class Trig, class St>
+Eigen::Matrix<S, 3, 3> chain(const Trig&, const St&, list<>) {
   return Eigen::Matrix<S, 3, 3>::Identity();
 }
-template <class S, class Trig, class First, class... Rest>
-Eigen::Matrix<S, 3, 3> chain(const Trig& t, list<First, Rest...>) {
-  Eigen::Matrix<S, 3, 3> m = First::template matrix<S>(t);
-  ((m = Rest::template matrix<S>(t) * m), ...);
+template <class S, class Trig, class St, class First, class... Rest>
+Eigen::Matrix<S, 3, 3> chain(const Trig& t, const St& st, list<First, Rest...>) {
+  Eigen::Matrix<S, 3, 3> m = First::template matrix<S>(t, st);
+  ((m = Rest::template matrix<S>(t, st) * m), ...);
   return m;
 }
 
@@ -60,7 +60,8 @@ struct factors<list<Up...>, list<Down...>> {
 
 }  // namespace detail
 
-// ^A P^B at the state st; sin and cos of each coordinate on the path once.
+// ^A P^B at the state st; sin and cos of each coordinate on the path once
+// (and of each angle that is not a bare coordinate).
 template <Frame A, Frame B, State St>
 dcm<A, B, typename St::scalar> direction_cosines(const St& st) {
   using S = typename St::scalar;
@@ -71,7 +72,7 @@ dcm<A, B, typename St::scalar> direction_cosines(const St& st) {
     constexpr auto needed = detail::path_coordinates<typename p::up, typename p::down>::value;
     const auto tr = detail::make_trig<needed>(st);
     return dcm<A, B, S>(
-        detail::chain<S>(tr, typename detail::factors<typename p::up, typename p::down>::type{}));
+        detail::chain<S>(tr, st, typename detail::factors<typename p::up, typename p::down>::type{}));
   }
 }
 

@@ -3,15 +3,18 @@
 // Convention (seed eq. 5): ^C p = ^P P^C . ^P p, (^P P^C)_ij = e_Ci . e_Pj.
 // A simple rotation about the unit axis k (fixed in P and C) by the angle q
 // turns P into C in the right-handed sense: ^P P^C = R(k, q)^T with R the
-// Rodrigues matrix cos q I + sin q [k]x + (1 - cos q) k k^T.
+// Rodrigues matrix cos q I + sin q [k]x + (1 - cos q) k k^T. The angle may
+// also be an expression of coordinates, parameters and numbers (angle.hpp).
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 #include <Eigen/Core>
 
 #include "kane/detail/list.hpp"
+#include "kane/frames/angle.hpp"
 #include "kane/frames/axis.hpp"
 #include "kane/frames/coordinate.hpp"
 
@@ -51,23 +54,36 @@ constexpr bool valid_sequence() {
 
 }  // namespace detail
 
-// C rotated from P about K (components in P, equal in C) by Q.
-template <Axis K, Coordinate Q>
+// C rotated from P about K (components in P, equal in C) by the angle A.
+template <Axis K, class A>
 struct simple {
+  static_assert(Angle<A>,
+                "kane: simple<Axis, Angle> turns by a coordinate q_i, a parameter, a constant or "
+                "kane::angle<X> with X an expression of coordinates, parameters and numbers");
   using axis = K;
-  using coordinate = Q;
+  static constexpr auto angle = detail::angle_argument<A>::value;
+  // i when the angle is q_i itself (sin and cos cached per state), else 0
+  static constexpr std::size_t coordinate_index = detail::bare_coordinate<std::remove_cv_t<decltype(angle)>>;
   using steps = detail::list<simple>;
   // ^P P^C
-  template <class S, class Trig>
-  static Eigen::Matrix<S, 3, 3> matrix(const Trig& tr) {
-    return detail::elementary<S, K>(tr.template cos<Q::index>(), tr.template sin<Q::index>());
+  template <class S, class Trig, class St>
+  static Eigen::Matrix<S, 3, 3> matrix(const Trig& tr, const St& st) {
+    if constexpr (coordinate_index != 0) {
+      return detail::elementary<S, K>(tr.template cos<coordinate_index>(),
+                                      tr.template sin<coordinate_index>());
+    } else {
+      using std::cos;
+      using std::sin;
+      const S a = detail::angle_value<S>(angle, st);
+      return detail::elementary<S, K>(cos(a), sin(a));
+    }
   }
 };
 
 // Body-fixed I-J-K: about P's axis I by Q1, then the new J by Q2, then the
 // newest K by Q3; three simple rotations through two auxiliary frames, so
 // ^P P^C = E_K(q3) E_J(q2) E_I(q1).
-template <int I, int J, int K, Coordinate Q1, Coordinate Q2, Coordinate Q3>
+template <int I, int J, int K, class Q1, class Q2, class Q3>
 struct body_fixed {
   static_assert(detail::valid_sequence<I, J, K>(),
                 "kane: a rotation sequence takes axes 1, 2, 3 with consecutive axes different "
@@ -78,7 +94,7 @@ struct body_fixed {
 
 // Space-fixed I-J-K: about P's fixed axes I by Q1, J by Q2, K by Q3; equal to
 // body-fixed K-J-I by (Q3, Q2, Q1). ^P P^C = E_I(q1) E_J(q2) E_K(q3).
-template <int I, int J, int K, Coordinate Q1, Coordinate Q2, Coordinate Q3>
+template <int I, int J, int K, class Q1, class Q2, class Q3>
 struct space_fixed : body_fixed<K, J, I, Q3, Q2, Q1> {};
 
 // An orientation is a list of simple rotations (a quaternion or explicit

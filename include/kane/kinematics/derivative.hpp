@@ -26,13 +26,9 @@ namespace kane {
 namespace detail {
 
 template <class X>
-constexpr auto ddt(X x);
-template <class X>
 constexpr auto outer_derivative(X x);
 template <class A, class V>
 constexpr auto ddt_in(V v);
-template <class Leaf, class X>
-constexpr auto partial(X x);
 template <class A, class Leaf, class V>
 constexpr auto partial_in(V v);
 

@@ -20,6 +20,11 @@ namespace kane {
 namespace detail {
 
 template <class X>
+constexpr auto ddt(X x);  // derivative.hpp
+template <class Leaf, class X>
+constexpr auto partial(X x);
+
+template <class X>
 struct power_info : std::false_type {};
 template <class X, int N>
 struct power_info<power<X, N>> : std::true_type {
@@ -124,22 +129,26 @@ constexpr auto root_frame_of() {
 template <class V>
 using root_frame_of_t = std::remove_pointer_t<decltype(root_frame_of<V>())>;
 
-// The axis of the edge above X as a vector in X, if its coordinate is q_R.
+// d(theta')/dq_R' k = d(theta)/dq_R k for the edge above X turning about k by theta, a vector in X.
 template <std::size_t R, class X>
 constexpr auto edge_axis() {
-  if constexpr (X::step::coordinate::index != R)
-    return zero_vector{};
-  else {
-    using K = typename X::step::axis;
+  constexpr auto d = partial<coordinate<R>>(X::step::angle);
+  using K = typename X::step::axis;
+  constexpr auto axis = [] {
     constexpr int p = unit_axis<K>::principal;
+    constexpr auto k = unit_axis<K>::value;
     if constexpr (p >= 0)
       return unit<X, p + 1>{};
-    else {
-      constexpr auto k = unit_axis<K>::value;
+    else
       return fixed<literal(k[0])>{} * unit<X, 1>{} + fixed<literal(k[1])>{} * unit<X, 2>{} +
              fixed<literal(k[2])>{} * unit<X, 3>{};
-    }
-  }
+  }();
+  if constexpr (std::is_same_v<decltype(d), const zero_t>)
+    return zero_vector{};
+  else if constexpr (std::is_same_v<decltype(d), const one_t>)
+    return axis;
+  else
+    return d * axis;
 }
 template <std::size_t R, class... Up, class... Down>
 constexpr auto partial_omega(list<Up...>, list<Down...>) {
@@ -164,18 +173,18 @@ constexpr std::uint64_t leaf_bit(std::size_t i) {
   return i >= 1 && i <= 64 ? std::uint64_t(1) << (i - 1) : ~std::uint64_t(0);
 }
 inline constexpr leaf_set any_leaf{~std::uint64_t(0), ~std::uint64_t(0)};
+template <class X>
+constexpr leaf_set leaves_in();
+template <class X>
+inline constexpr leaf_set leaves_of = leaves_in<X>();  // once per node type
 // The rates of the edges from the root down to F (those of ^R w^F).
 template <class F>
 constexpr std::uint64_t path_rates() {
   if constexpr (std::is_void_v<typename F::tree_parent>)
     return 0;
   else
-    return leaf_bit(F::step::coordinate::index) | path_rates<typename F::tree_parent>();
+    return leaves_of<decltype(ddt(F::step::angle))>.rates | path_rates<typename F::tree_parent>();
 }
-template <class X>
-constexpr leaf_set leaves_in();
-template <class X>
-inline constexpr leaf_set leaves_of = leaves_in<X>();  // once per node type
 template <class X>
 constexpr leaf_set leaves_in() {
   if constexpr (coordinate_info<X>::value)
