@@ -66,6 +66,9 @@ struct evaluator_without_speed_set_reads_no_u_declare_the_speed_set;
 // The evaluator holds (or is one edge above) every frame it is asked for.
 template <class Frame>
 struct evaluator_does_not_hold_the_frame_add_it_to_frames;
+// unit_norm<B> is the held row of B's Euler parameters: B must be oriented by them.
+template <class Frame>
+struct unit_norm_needs_a_frame_oriented_by_euler_parameters;
 }  // namespace error
 
 namespace detail {

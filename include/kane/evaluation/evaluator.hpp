@@ -120,13 +120,15 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
  private:
   KANE_ALWAYS_INLINE void pass_at(const St& s) {
     st_.q = s.q, st_.p = s.p, st_.t = s.t, updated_ = true;
+    const scalar norm_residue = normalise(closure{});  // Euler parameters of unit norm
     if constexpr (solves)
       st_.u = s.u, st_.ud = s.ud;
     else
       st_.qd = s.qd, st_.qdd = s.qdd;
     const auto tr = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
     constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
-    scalar residue = detail::nonfinite_residue(s.q) + detail::nonfinite_residue(s.p) + (s.t - s.t);
+    scalar residue =
+        detail::nonfinite_residue(s.q) + detail::nonfinite_residue(s.p) + (s.t - s.t) + norm_residue;
     if constexpr (velocity)
       residue += solves ? detail::nonfinite_residue(s.u) : detail::nonfinite_residue(s.qd);
     if constexpr (acceleration)
@@ -149,6 +151,26 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
         this->template pass<false, false, true>(tr, *this);
       }
     }
+  }
+
+  // e / |e| for the Euler parameters e of each frame; 0, or NaN for |e| zero or not finite.
+  template <class... F>
+  KANE_ALWAYS_INLINE scalar normalise(detail::list<F...>) {
+    scalar residue = scalar(0);
+    (
+        [&] {
+          if constexpr (detail::euler_edge<F>) {
+            using std::sqrt;
+            constexpr auto c = F::step::coordinates;
+            scalar n2 = scalar(0);
+            for (std::size_t i : c) n2 += st_.q[i - 1] * st_.q[i - 1];
+            const scalar k = scalar(1) / sqrt(n2);
+            for (std::size_t i : c) st_.q[i - 1] *= k;
+            residue += k - k;
+          }
+        }(),
+        ...);
+    return residue;
   }
 
   St st_ = detail::nan_state<St>();

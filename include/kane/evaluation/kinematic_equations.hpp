@@ -33,6 +33,12 @@ class kinematic_equations {
       return true;
   }();
   static constexpr std::size_t nq = St::nq;
+  static constexpr std::size_t nu = [] {  // the speeds; rows nu..nq-1 are held (u = 0 there)
+    if constexpr (solves)
+      return Speeds::n;
+    else
+      return nq;
+  }();
 
  public:
   using scalar = typename St::scalar;
@@ -76,8 +82,10 @@ class kinematic_equations {
     static_assert(!solves || SpeedSet<Speeds>,
                   "kane: the fourth argument of evaluator is a speed set (speeds/generalized_speeds.hpp)");
     if constexpr (solves) {
-      static_assert(Speeds::n == nq, "kane: a speed set defines as many speeds as the state has coordinates");
-      static_assert(St::nu >= nq, "kane: the state holds fewer speeds than the speed set defines");
+      static_assert(Speeds::rows == nq,
+                    "kane: a speed set defines as many speeds as the state has coordinates (held rows, "
+                    "such as kane::unit_norm, included)");
+      static_assert(St::nu >= Speeds::n, "kane: the state holds fewer speeds than the speed set defines");
       if constexpr (!Speeds::identity)
         static_assert(system::form.regular,
                       "kane: these speeds do not determine q' (Y = du/dq' is singular at every state: some "
@@ -134,7 +142,7 @@ class kinematic_equations {
     bool finite = true;  // X = -W Z may overflow where W does not
     static_for<nq>([&](auto c) {
       if constexpr (system::offset[c]) {
-        kde_x_[c] = apply_row<c, false>(z);
+        kde_x_[c] = apply_row<c, false, nq>(z);
         finite = finite & (kde_x_[c] - kde_x_[c] == scalar(0));
       }
     });
@@ -152,17 +160,17 @@ class kinematic_equations {
     if constexpr (direct) {  // u = q'
       for (std::size_t i = 0; i < nq; ++i) qd_[i] = s.u[i];
     } else {
-      qd_ = apply<true>(s.u);
+      qd_ = apply<true, nu>(s.u);
     }
     if (status_ == solve_status::ok && !all_finite(qd_)) status_ = solve_status::not_finite;
     if (status_ != solve_status::ok) qd_.fill(std::numeric_limits<scalar>::quiet_NaN());
   }
-  // (W v)_c (+ X_c), skipping the zeros of W and X.
-  template <std::size_t C, bool Offset, class V>
+  // (W v)_c (+ X_c) for v zero beyond its first Cols entries, skipping the zeros of W and X.
+  template <std::size_t C, bool Offset, std::size_t Cols, class V>
   KANE_ALWAYS_INLINE scalar apply_row(const V& v) const {
     scalar sum = scalar(0);
     if constexpr (Offset && system::offset[C]) sum = kde_x_[C];
-    static_for<nq>([&](auto j) {
+    static_for<Cols>([&](auto j) {
       if constexpr (system::x[C][j] == entry::one)
         sum += v[j];
       else if constexpr (system::x[C][j] == entry::other)
@@ -170,10 +178,10 @@ class kinematic_equations {
     });
     return sum;
   }
-  template <bool Offset, class V>
+  template <bool Offset, std::size_t Cols, class V>
   KANE_ALWAYS_INLINE std::array<scalar, nq> apply(const V& v) const {
     std::array<scalar, nq> out;
-    static_for<nq>([&](auto c) { out[c] = apply_row<c, Offset>(v); });
+    static_for<nq>([&](auto c) { out[c] = apply_row<c, Offset, Cols>(v); });
     return out;
   }
 
@@ -185,7 +193,8 @@ class kinematic_equations {
     } else {
       std::array<scalar, nq> v;
       static_for<nq>([&](auto r) {
-        scalar sum = s.ud[r];
+        scalar sum = scalar(0);  // u' = 0 in held rows
+        if constexpr (r < nu) sum = s.ud[r];
         constexpr auto zd = dt(at_rest(definition<r>()));
         if constexpr (!is_zero_v<std::remove_cv_t<decltype(zd)>>) sum -= eval_scalar(zd, ev);
         static_for<nq>([&](auto c) {
@@ -194,7 +203,7 @@ class kinematic_equations {
         });
         v[r] = sum;
       });
-      qdd_ = apply<false>(v);
+      qdd_ = apply<false, nq>(v);
     }
     if (status_ == solve_status::ok && !all_finite(qdd_)) status_ = solve_status::not_finite;
     if (status_ != solve_status::ok) qdd_.fill(std::numeric_limits<scalar>::quiet_NaN());

@@ -71,10 +71,10 @@ template <class Sp, class X>
 constexpr auto remainder_of(const X& x) {
   if constexpr (foldable<X>) {
     const X y = x;
-    constexpr auto c = remainder_u<Sp>(y, std::make_index_sequence<Sp::n>{});
+    constexpr auto c = remainder_u<Sp>(y, std::make_index_sequence<Sp::rows>{});
     return c;
   } else
-    return remainder_u<Sp>(x, std::make_index_sequence<Sp::n>{});
+    return remainder_u<Sp>(x, std::make_index_sequence<Sp::rows>{});
 }
 
 // x = T u + t in A: the table T = [v_1 ... v_n] (rows 1 for a scalar x, 3 for

@@ -12,13 +12,15 @@
 
 namespace kane::detail {
 
-// The principal axis (0, 1, 2) the edge above F turns about; -1 for a root or another axis.
+// The principal axis (0, 1, 2) the edge above F turns about; -1 for a root, another axis or no axis.
 template <class F>
 constexpr int edge_principal() {
   if constexpr (std::is_void_v<typename F::tree_parent>)
     return -1;
-  else
+  else if constexpr (requires { typename F::step::axis; })
     return unit_axis<typename F::step::axis>::principal;
+  else
+    return -1;
 }
 
 // The highest frame up the tree of which e_FI is a unit vector.

@@ -54,7 +54,7 @@ struct frame : detail::frame_tag {
                 "(a struct derived from kane::root_frame or kane::frame)");
   static_assert(Orientation<O>,
                 "kane: frame<Parent, Orientation> needs an orientation "
-                "(kane::simple, kane::body_fixed, kane::space_fixed)");
+                "(kane::simple, kane::body_fixed, kane::space_fixed, kane::euler_parameters)");
   using parent = Parent;
   using orientation = O;
 
@@ -62,7 +62,7 @@ struct frame : detail::frame_tag {
   static constexpr std::size_t n_ = detail::size<typename O::steps>::value;
 
  public:
-  // The edge of the tree above this frame: its last simple rotation.
+  // The edge of the tree above this frame: its last simple rotation, or its Euler parameters.
   using tree_parent =
       std::conditional_t<n_ == 1, Parent, detail::aux_frame<Parent, typename O::steps, n_ - 1>>;
   using step = typename detail::at<typename O::steps, n_ - 1>::type;

@@ -97,8 +97,46 @@ struct body_fixed {
 template <int I, int J, int K, class Q1, class Q2, class Q3>
 struct space_fixed : body_fixed<K, J, I, Q3, Q2, Q1> {};
 
-// An orientation is a list of simple rotations (a quaternion or explicit
-// dcm orientation would add an edge kind of its own).
+// Euler parameters (SymPy's 'Quaternion' orientation, scalar part first):
+// e = q0 + q1 p1 + q2 p2 + q3 p3 turns P into C, and with n = |e|^2
+//   ^P P^C = 1/n [[q0^2 + q1^2 - q2^2 - q3^2, 2 (q1 q2 + q0 q3), 2 (q1 q3 - q0 q2)],
+//                 [2 (q1 q2 - q0 q3), q0^2 - q1^2 + q2^2 - q3^2, 2 (q2 q3 + q0 q1)],
+//                 [2 (q1 q3 + q0 q2), 2 (q2 q3 - q0 q1), q0^2 - q1^2 - q2^2 + q3^2]].
+// One edge of its own (no axis); its angular velocity is in kinematics/derivative_traits.hpp.
+template <class... Q>
+struct euler_parameters {
+  static_assert(sizeof...(Q) == 4 && (Coordinate<Q> && ...),
+                "kane: euler_parameters<q0, q1, q2, q3> takes four coordinates, the scalar part first");
+  static constexpr std::array<std::size_t, 4> coordinates = [] {
+    if constexpr (sizeof...(Q) == 4 && (Coordinate<Q> && ...))
+      return std::array<std::size_t, 4>{Q::index...};
+    else
+      return std::array<std::size_t, 4>{1, 2, 3, 4};
+  }();
+  static_assert(coordinates[0] != coordinates[1] && coordinates[0] != coordinates[2] &&
+                    coordinates[0] != coordinates[3] && coordinates[1] != coordinates[2] &&
+                    coordinates[1] != coordinates[3] && coordinates[2] != coordinates[3],
+                "kane: the four Euler parameters are four different coordinates");
+  static constexpr std::size_t coordinate_index = 0;
+  using steps = detail::list<euler_parameters>;
+  template <class S, class Trig, class St>
+  static Eigen::Matrix<S, 3, 3> matrix(const Trig&, const St& st) {
+    static_assert(coordinates[0] <= St::nq && coordinates[1] <= St::nq && coordinates[2] <= St::nq &&
+                      coordinates[3] <= St::nq,
+                  "kane: the Euler parameters use a coordinate beyond the state; declare the state with at "
+                  "least that many coordinates");
+    const S a = st.q[coordinates[0] - 1], b = st.q[coordinates[1] - 1], c = st.q[coordinates[2] - 1],
+            d = st.q[coordinates[3] - 1];
+    const S aa = a * a, bb = b * b, cc = c * c, dd = d * d, k = S(1) / (aa + bb + cc + dd), w = 2 * k;
+    Eigen::Matrix<S, 3, 3> m;
+    m << k * (aa + bb - cc - dd), w * (b * c + a * d), w * (b * d - a * c),  //
+        w * (b * c - a * d), k * (aa - bb + cc - dd), w * (c * d + a * b),   //
+        w * (b * d + a * c), w * (c * d - a * b), k * (aa - bb - cc + dd);
+    return m;
+  }
+};
+
+// An orientation is a list of edges: simple rotations, or one edge of Euler parameters.
 template <class O>
 concept Orientation = requires {
   typename O::steps;

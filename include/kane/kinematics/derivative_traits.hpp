@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <tuple>
 #include <type_traits>
 
 #include "kane/detail/frame_check.hpp"
@@ -129,26 +130,52 @@ constexpr auto root_frame_of() {
 template <class V>
 using root_frame_of_t = std::remove_pointer_t<decltype(root_frame_of<V>())>;
 
-// d(theta')/dq_R' k = d(theta)/dq_R k for the edge above X turning about k by theta, a vector in X.
+// The edge above X: ^P w^X = sum_i w_i x_i. For Euler parameters (q0, ..., q3)
+// (SymPy's 'Quaternion' orientation), (w1, w2, w3) = 2 (q0 v' - q0' v - v x v'), v = (q1, q2, q3).
+template <class X>
+inline constexpr bool euler_edge = requires {
+  X::step::coordinates;
+};
+template <class X>
+constexpr auto quaternion_rates() {
+  constexpr auto c = X::step::coordinates;
+  constexpr coordinate<c[0]> a{};
+  constexpr coordinate<c[1]> b{};
+  constexpr coordinate<c[2]> g{};
+  constexpr coordinate<c[3]> h{};
+  constexpr auto da = ddt(a), db = ddt(b), dg = ddt(g), dh = ddt(h);
+  constexpr constant<2> two{};
+  return std::tuple{two * (a * db - b * da - g * dh + h * dg), two * (a * dg + b * dh - g * da - h * db),
+                    two * (a * dh - b * dg + g * db - h * da)};
+}
+
+// d(^P w^X)/dq_R', a vector in X: d(theta)/dq_R k for a simple rotation by theta about k.
 template <std::size_t R, class X>
 constexpr auto edge_axis() {
-  constexpr auto d = partial<coordinate<R>>(X::step::angle);
-  using K = typename X::step::axis;
-  constexpr auto axis = [] {
-    constexpr int p = unit_axis<K>::principal;
-    constexpr auto k = unit_axis<K>::value;
-    if constexpr (p >= 0)
-      return unit<X, p + 1>{};
+  if constexpr (euler_edge<X>) {
+    constexpr auto w = quaternion_rates<X>();
+    using r = coordinate<R, 1>;
+    return partial<r>(std::get<0>(w)) * unit<X, 1>{} + partial<r>(std::get<1>(w)) * unit<X, 2>{} +
+           partial<r>(std::get<2>(w)) * unit<X, 3>{};
+  } else {
+    constexpr auto d = partial<coordinate<R>>(X::step::angle);
+    using K = typename X::step::axis;
+    constexpr auto axis = [] {
+      constexpr int p = unit_axis<K>::principal;
+      constexpr auto k = unit_axis<K>::value;
+      if constexpr (p >= 0)
+        return unit<X, p + 1>{};
+      else
+        return fixed<literal(k[0])>{} * unit<X, 1>{} + fixed<literal(k[1])>{} * unit<X, 2>{} +
+               fixed<literal(k[2])>{} * unit<X, 3>{};
+    }();
+    if constexpr (std::is_same_v<decltype(d), const zero_t>)
+      return zero_vector{};
+    else if constexpr (std::is_same_v<decltype(d), const one_t>)
+      return axis;
     else
-      return fixed<literal(k[0])>{} * unit<X, 1>{} + fixed<literal(k[1])>{} * unit<X, 2>{} +
-             fixed<literal(k[2])>{} * unit<X, 3>{};
-  }();
-  if constexpr (std::is_same_v<decltype(d), const zero_t>)
-    return zero_vector{};
-  else if constexpr (std::is_same_v<decltype(d), const one_t>)
-    return axis;
-  else
-    return d * axis;
+      return d * axis;
+  }
 }
 template <std::size_t R, class... Up, class... Down>
 constexpr auto partial_omega(list<Up...>, list<Down...>) {
@@ -177,13 +204,21 @@ template <class X>
 constexpr leaf_set leaves_in();
 template <class X>
 inline constexpr leaf_set leaves_of = leaves_in<X>();  // once per node type
-// The rates of the edges from the root down to F (those of ^R w^F).
+// The rates of the edge above F, and of the edges from the root down to F (those of ^R w^F).
+template <class F>
+constexpr std::uint64_t edge_rates() {
+  if constexpr (euler_edge<F>) {
+    constexpr auto c = F::step::coordinates;
+    return leaf_bit(c[0]) | leaf_bit(c[1]) | leaf_bit(c[2]) | leaf_bit(c[3]);
+  } else
+    return leaves_of<decltype(ddt(F::step::angle))>.rates;
+}
 template <class F>
 constexpr std::uint64_t path_rates() {
   if constexpr (std::is_void_v<typename F::tree_parent>)
     return 0;
   else
-    return leaves_of<decltype(ddt(F::step::angle))>.rates | path_rates<typename F::tree_parent>();
+    return edge_rates<F>() | path_rates<typename F::tree_parent>();
 }
 template <class X>
 constexpr leaf_set leaves_in() {

@@ -32,18 +32,70 @@ concept SpeedSet = std::derived_from<T, detail::speed_set_tag>;
 // u_r = q_r', r = 1..N.
 template <std::size_t N>
 struct qdot_speeds : detail::speed_set_tag {
-  static constexpr std::size_t n = N;
+  static constexpr std::size_t n = N, rows = N;
   static constexpr bool identity = true;
 };
 
-// u_r = U_r, r = 1..n: expressions in q, q' and t, linear in q'.
+// A kinematic differential equation that defines no speed: X = 0, linear in q'
+// (for instance unit_norm<B> of Euler parameters, so that nq = nu + 1).
+template <ScalarExpr X>
+struct held {
+  [[no_unique_address]] X x;
+  constexpr explicit held(X v) : x(v) {}
+};
+
+namespace detail {
+template <class T>
+inline constexpr bool is_held = false;
+template <class X>
+inline constexpr bool is_held<held<X>> = true;
+template <class X>
+inline constexpr bool is_held<const held<X>> = true;
+template <class T>
+constexpr auto row_of(T x) {
+  if constexpr (is_held<T>)
+    return x.x;
+  else
+    return x;
+}
+template <bool... Held>
+constexpr bool held_last() {
+  bool seen = false, ok = true;
+  for (bool h : {false, Held...}) ok = ok && (h || !seen), seen = seen || h;
+  return ok;
+}
+}  // namespace detail
+
+// u_r = U_r, r = 1..n: expressions in q, q' and t, linear in q'; then the held
+// rows (kinematic equations without a speed): rows = n + held = nq.
 template <auto... U>
 struct speeds : detail::speed_set_tag {
-  static_assert((ScalarExpr<decltype(U)> && ...), "kane: speeds<u1, ..., un> takes scalar expressions");
-  static constexpr std::size_t n = sizeof...(U);
+  static_assert(((ScalarExpr<decltype(U)> || detail::is_held<decltype(U)>)&&...),
+                "kane: speeds<u1, ..., un> takes scalar expressions");
+  static_assert(detail::held_last<detail::is_held<decltype(U)>...>(),
+                "kane: held rows (kane::held, kane::unit_norm) follow the speeds in speeds<...>");
+  static constexpr std::size_t rows = sizeof...(U);
+  static constexpr std::size_t n = rows - (std::size_t(detail::is_held<decltype(U)>) + ... + 0);
   static constexpr bool identity = false;
-  static constexpr std::tuple<decltype(U)...> definitions{U...};
+  static constexpr std::tuple<decltype(detail::row_of(U))...> definitions{detail::row_of(U)...};
 };
+
+// q0 q0' + q1 q1' + q2 q2' + q3 q3' = 0, half the derivative of |e|^2 = 1 for
+// the Euler parameters of B: the held row that completes three speeds of B.
+template <Frame B>
+inline constexpr auto unit_norm = [] {
+  if constexpr (detail::euler_edge<B>) {
+    constexpr auto c = B::step::coordinates;
+    constexpr coordinate<c[0]> a{};
+    constexpr coordinate<c[1]> b{};
+    constexpr coordinate<c[2]> g{};
+    constexpr coordinate<c[3]> h{};
+    return held(a * dt(a) + b * dt(b) + g * dt(g) + h * dt(h));
+  } else {
+    static_assert(detail::check<false, error::unit_norm_needs_a_frame_oriented_by_euler_parameters<B>>);
+    return held(zero_t{});
+  }
+}();
 
 // u_1..u_3 = ^A w^B . f_1..3 (the components of ^A w^B in F), then Extra...
 // (for instance kane::dt(kane::q<4>)).
@@ -127,11 +179,11 @@ constexpr entry entry_of() {
 }
 
 // The kinematic differential equations of a speed set as a structured solve
-// (evaluation/block_solve.hpp): Y = du/dq' (n x n), W = Y^-1 with its pattern x, and
-// the patterns of Z = u at q' = 0 and of X = -W Z.
+// (evaluation/block_solve.hpp): Y = du/dq' (rows x rows, held rows included), W = Y^-1 with its pattern x,
+// and the patterns of Z = u at q' = 0 and of X = -W Z.
 template <class Sp>
 struct kde_system {
-  static constexpr std::size_t n = Sp::n, k = n;
+  static constexpr std::size_t n = Sp::rows, k = n;
   template <std::size_t R, std::size_t C>
   using y_type = decltype(diff(std::get<R>(Sp::definitions), coordinate<C + 1, 1>{}));
   template <std::size_t R>

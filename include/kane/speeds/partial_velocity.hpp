@@ -49,7 +49,7 @@ constexpr auto column(X x) {
   if constexpr (Sp::identity)
     return d<speed<R>>(x) + d<coordinate<R, 1>>(x);
   else
-    return partial_u<Sp, R>(x, std::make_index_sequence<Sp::n>{});
+    return partial_u<Sp, R>(x, std::make_index_sequence<Sp::rows>{});
 }
 
 }  // namespace detail
@@ -58,7 +58,7 @@ constexpr auto column(X x) {
 template <SpeedSet Sp, class X, std::size_t R>
 requires(ScalarExpr<X> || VectorExpr<X>) constexpr auto partial_velocity(X x, speed<R, 0>) {
   static_assert(R >= 1 && R <= Sp::n, "kane: u_R is not a generalized speed of this system (u_1 .. u_n)");
-  return detail::partial_u<Sp, R>(x, std::make_index_sequence<Sp::n>{});
+  return detail::partial_u<Sp, R>(x, std::make_index_sequence<Sp::rows>{});
 }
 template <SpeedSet Sp, class X, class Leaf>
 requires(!Speed<Leaf>) constexpr X partial_velocity(X x, Leaf) {
@@ -70,7 +70,7 @@ requires(!Speed<Leaf>) constexpr X partial_velocity(X x, Leaf) {
 // v_t = v - sum_r v_r u_r.
 template <SpeedSet Sp, class X>
 requires(ScalarExpr<X> || VectorExpr<X>) constexpr auto velocity_remainder(X x) {
-  return detail::remainder_u<Sp>(x, std::make_index_sequence<Sp::n>{});
+  return detail::remainder_u<Sp>(x, std::make_index_sequence<Sp::rows>{});
 }
 
 }  // namespace kane
