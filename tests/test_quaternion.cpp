@@ -137,3 +137,24 @@ TEST_CASE("quaternion: Euler parameters are normalised on update; zero or NaN gi
     CHECK(std::isnan(kane::express<N>(kane::velocity<N, P>(), ev)[0]));
   }
 }
+
+TEST_CASE("quaternion: parent-fixed rates u_i = w . n_i") {
+  using speeds_n = kane::speeds<dot(w, e<N, 1>), dot(w, e<N, 2>), dot(w, e<N, 3>), kane::dt(kane::q<5>),
+                                kane::dt(kane::q<6>), kane::dt(kane::q<7>), kane::unit_norm<B>>;
+  using evaluator_n = kane::evaluator<state, kane::frames<B>, kane::level::acceleration, speeds_n>;
+  for (const auto& c : body) {
+    // the state of the SymPy case with its angular velocity given by its components in N
+    state s = at(c);
+    for (int i = 0; i < 3; ++i) s.u[i] = c.w_N[i];
+    evaluator_n ev;
+    ev.update(s);
+    REQUIRE(ev.status() == kane::solve_status::ok);
+    const auto qd = ev.coordinate_rates();
+    for (int i = 0; i < 7; ++i) CHECK(qd[i] == Approx(c.qd[i]).margin(1e-14));
+    CHECK(max_diff(kane::express<N>(kane::velocity<N, P>(), ev).eigen().transpose(), c.vP_N) < 1e-14);
+    // w_r = n_r: the partial angular velocities in N are the identity
+    const Eigen::MatrixXd W = kane::partial_velocities<N>(w, ev);
+    CHECK((W.leftCols(3) - Eigen::Matrix3d::Identity()).norm() < 1e-14);
+    CHECK(W.rightCols(3).norm() == 0);
+  }
+}

@@ -13,6 +13,7 @@
 #include "../examples/models/arm6.hpp"
 #include "../examples/models/disc.hpp"
 #include "../examples/models/fourbar.hpp"
+#include "../examples/models/free_body.hpp"
 
 namespace warnings {
 using kane::cross;
@@ -192,6 +193,25 @@ S fourbar(const kane::state<S, 6>& s6) {
   return r.residual + S(r.iterations) + sol.A.sum() + S(kane::degrees_of_freedom<decltype(s), m::loop>);
 }
 
+// Euler parameters (nq = 7, nu = 6), and rotations by a parameter, a constant and q + c.
+struct lean : kane::parameter<1> {};
+struct H : kane::frame<models::free_body::B, kane::simple<kane::axis::y, lean>> {};
+struct K : kane::frame<H, kane::simple<kane::axis::x, kane::angle<kane::q<5> + kane::literal(0.5)>>> {};
+template <class S>
+S free_body(const kane::state<S, 6>& s6) {
+  namespace m = models::free_body;
+  kane::state<S, 7, 6, 3> s;
+  s.q = {S(1), s6.q[0], s6.q[1], s6.q[2], s6.q[3], s6.q[4], s6.q[5]};
+  s.u = {s6.q[0], s6.q[1], s6.q[2], S(0), S(0), S(0)};
+  s.ud = {};
+  s.p = {S(0.2), S(0.1), S(0.3)};
+  kane::evaluator<decltype(s), kane::frames<K>, kane::level::acceleration, m::speeds> ev;
+  ev.update(s);
+  return ev.coordinate_rates()[0] + kane::express<m::N>(kane::acceleration<m::N, m::P>(), ev)[0] +
+         kane::express<m::N>(kane::angular_acceleration<m::N, K>(), ev)[1] +
+         kane::direction_cosines<m::N, K>(s)(0, 0);
+}
+
 // Printing.
 template <class S>
 std::string printing(const state6<S>& s) {
@@ -206,7 +226,8 @@ std::string printing(const state6<S>& s) {
 
 template <class S>
 S all(const state6<S>& s, const kane::state<S, 6>& s6) {
-  return frames_and_vectors(s) + kinematics(s) + speeds(s) + arm(s6) + fourbar(s6) + S(printing(s).size());
+  return frames_and_vectors(s) + kinematics(s) + speeds(s) + arm(s6) + fourbar(s6) + free_body(s6) +
+         S(printing(s).size());
 }
 
 template float all<float>(const state6<float>&, const kane::state<float, 6>&);

@@ -4,6 +4,7 @@
 // case repeated_parameter: kane: the four Euler parameters are four different coordinates
 // case unit_norm_of_simple: unit_norm_needs_a_frame_oriented_by_euler_parameters<A>
 // case held_first: kane: held rows .kane::held, kane::unit_norm. follow the speeds in speeds
+// case parameters_beyond_state: kane: the Euler parameters use a coordinate beyond the state
 #include <kane/kane.hpp>
 
 template <std::size_t I>
@@ -36,5 +37,10 @@ double use() {
   s.u = {0.1, 0.2, 0.3, 0.4};
   kane::evaluator<kane::state<double, 5, 4>, kane::frames<A, B>, kane::level::velocity, speeds> ev;
   ev.update(s);
-  return kane::express<N>(w, ev)[0];
+#ifdef KANE_CASE_parameters_beyond_state
+  const kane::state<double, 3> small{};
+#else
+  const kane::state<double, 4> small{};
+#endif
+  return kane::express<N>(w, ev)[0] + kane::direction_cosines<N, B>(small)(0, 0);
 }

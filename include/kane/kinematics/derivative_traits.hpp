@@ -143,7 +143,10 @@ constexpr auto quaternion_rates() {
   constexpr coordinate<c[1]> b{};
   constexpr coordinate<c[2]> g{};
   constexpr coordinate<c[3]> h{};
-  constexpr auto da = ddt(a), db = ddt(b), dg = ddt(g), dh = ddt(h);
+  constexpr auto da = ddt(a);
+  constexpr auto db = ddt(b);
+  constexpr auto dg = ddt(g);
+  constexpr auto dh = ddt(h);
   constexpr constant<2> two{};
   return std::tuple{two * (a * db - b * da - g * dh + h * dg), two * (a * dg + b * dh - g * da - h * db),
                     two * (a * dh - b * dg + g * db - h * da)};
