@@ -5,9 +5,11 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/list.hpp"
 
 namespace kane::detail {
 
@@ -73,6 +75,21 @@ constexpr auto coordinate_indices() {
   for (std::size_t i = 0; i < n; ++i) out[i] = all[all.size() - n + i];
   return out;
 }
+
+// The coordinates whose sin and cos the frames of a closure (list<F...>) read: the bare ones.
+template <class L>
+struct step_coordinates;
+template <class... F>
+struct step_coordinates<list<F...>> {
+  template <class X>
+  static constexpr std::size_t index() {
+    if constexpr (std::is_void_v<typename X::tree_parent>)
+      return 0;
+    else
+      return X::step::coordinate_index;
+  }
+  static constexpr auto value = coordinate_indices<index<F>()...>();
+};
 
 // sin/cos of q_k for k in Needed.
 template <auto Needed, class State>

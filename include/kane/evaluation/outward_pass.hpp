@@ -31,20 +31,6 @@ enum class level { pose, velocity, acceleration };
 
 namespace detail {
 
-template <class L>
-struct step_coordinates;
-template <class... F>
-struct step_coordinates<list<F...>> {
-  template <class X>
-  static constexpr std::size_t index() {
-    if constexpr (std::is_void_v<typename X::tree_parent>)
-      return 0;
-    else
-      return X::step::coordinate_index;
-  }
-  static constexpr auto value = coordinate_indices<index<F>()...>();
-};
-
 template <class S, class Closure, level Level>
 class outward_pass {
  public:
