@@ -3,7 +3,7 @@
 // case three_parameters: kane: euler_parameters<q0, q1, q2, q3> takes four coordinates, the scalar part first
 // case repeated_parameter: kane: the four Euler parameters are four different coordinates
 // case unit_norm_of_simple: unit_norm_needs_a_frame_oriented_by_euler_parameters<A>
-// case held_first: kane: held rows .kane::held, kane::unit_norm. follow the speeds in speeds
+// case held_first: kane: in speeds<...> the speeds that q' define come first, then kane::free_speed, then held rows
 // case parameters_beyond_state: kane: the Euler parameters use a coordinate beyond the state
 #include <kane/kane.hpp>
 

@@ -69,6 +69,13 @@ struct evaluator_does_not_hold_the_frame_add_it_to_frames;
 // unit_norm<B> is the held row of B's Euler parameters: B must be oriented by them.
 template <class Frame>
 struct unit_norm_needs_a_frame_oriented_by_euler_parameters;
+// Of a frame that spins by a free speed (kane::spin) only the spin axis is known: its other
+// axes, and frames below it, need its angle (make it a coordinate: kane::simple).
+template <class Frame>
+struct a_spinning_frame_has_no_known_axes_but_its_spin_axis;
+// spin<K, u<r>>: u_r is a free speed of the evaluator's speed set (kane::free_speed).
+template <class Frame>
+struct a_spinning_frame_turns_at_a_free_speed_of_the_evaluators_speed_set;
 }  // namespace error
 
 namespace detail {

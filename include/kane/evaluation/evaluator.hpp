@@ -36,6 +36,25 @@ namespace kane {
 template <State St, class Frames, level Level = level::acceleration, class Speeds = void>
 class evaluator;
 
+namespace detail {
+// A frame of the closure that spins does so at a free speed of Speeds.
+template <class Speeds, class F>
+constexpr bool spins_freely() {
+  if constexpr (!spin_edge<F>)
+    return true;
+  else if constexpr (std::is_void_v<Speeds>)
+    return false;
+  else
+    return F::step::speed_index > Speeds::defined && F::step::speed_index <= Speeds::n;
+}
+template <class Speeds, class... F>
+constexpr bool spins_checked(list<F...>) {
+  return (check<spins_freely<Speeds, F>(),
+                error::a_spinning_frame_turns_at_a_free_speed_of_the_evaluators_speed_set<F>> &&
+          ...);
+}
+}  // namespace detail
+
 template <State St, Frame... Fs, level Level, class Speeds>
 class evaluator<St, frames<Fs...>, Level, Speeds>
     : public detail::outward_pass<typename St::scalar, typename detail::closure<Fs...>::type, Level>,
@@ -43,6 +62,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   using pass_type = detail::outward_pass<typename St::scalar, typename detail::closure<Fs...>::type, Level>;
   static_assert((detail::one_tree_v<detail::join_trees_t<detail::root_of<Fs>, typename pass_type::root>> &&
                  ...));
+  static_assert(detail::spins_checked<Speeds>(typename pass_type::closure{}));
   using equations = detail::kinematic_equations<St, Speeds>;
   using equations::direct;
   using equations::solves;

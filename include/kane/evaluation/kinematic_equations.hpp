@@ -33,9 +33,9 @@ class kinematic_equations {
       return true;
   }();
   static constexpr std::size_t nq = St::nq;
-  static constexpr std::size_t nu = [] {  // the speeds; rows nu..nq-1 are held (u = 0 there)
+  static constexpr std::size_t nd = [] {  // the speeds q' define; rows nd..nq-1 are held (u = 0 there)
     if constexpr (solves)
-      return Speeds::n;
+      return Speeds::defined;
     else
       return nq;
   }();
@@ -160,7 +160,7 @@ class kinematic_equations {
     if constexpr (direct) {  // u = q'
       for (std::size_t i = 0; i < nq; ++i) qd_[i] = s.u[i];
     } else {
-      qd_ = apply<true, nu>(s.u);
+      qd_ = apply<true, nd>(s.u);
     }
     if (status_ == solve_status::ok && !all_finite(qd_)) status_ = solve_status::not_finite;
     if (status_ != solve_status::ok) qd_.fill(std::numeric_limits<scalar>::quiet_NaN());
@@ -194,7 +194,7 @@ class kinematic_equations {
       std::array<scalar, nq> v;
       static_for<nq>([&](auto r) {
         scalar sum = scalar(0);  // u' = 0 in held rows
-        if constexpr (r < nu) sum = s.ud[r];
+        if constexpr (r < nd) sum = s.ud[r];
         constexpr auto zd = dt(at_rest(definition<r>()));
         if constexpr (!is_zero_v<std::remove_cv_t<decltype(zd)>>) sum -= eval_scalar(zd, ev);
         static_for<nq>([&](auto c) {

@@ -44,6 +44,7 @@ class outward_pass {
   // Columns e_F1, e_F2, e_F3 in the root's components: (^R P^F)^T.
   template <class F>
   Eigen::Map<const matrix3> axes() const {
+    static_assert(check<!spin_edge<F>, error::a_spinning_frame_has_no_known_axes_but_its_spin_axis<F>>);
     return Eigen::Map<const matrix3>(c_[index<F>()].data());
   }
   template <class F>
@@ -148,6 +149,7 @@ class outward_pass {
   using vec3 = v3<scalar>;
   template <class F>
   KANE_ALWAYS_INLINE vec3 column(int j) const {
+    static_assert(check<!spin_edge<F>, error::a_spinning_frame_has_no_known_axes_but_its_spin_axis<F>>);
     return load3(c_[index<F>()].data() + 3 * j);
   }
 
@@ -170,10 +172,13 @@ class outward_pass {
     }
   }
 
-  // theta^(D) of the edge above F: q^(D) for a bare coordinate, else dt^D(theta) from the rates.
+  // theta^(D) of the edge above F: q^(D) for a bare coordinate, else dt^D(theta) from the rates;
+  // u and u' for a spin.
   template <class F, std::size_t D>
   static constexpr auto angle_rate() {
-    if constexpr (D == 1)
+    if constexpr (spin_edge<F>)
+      return speed<F::step::speed_index, D - 1>{};
+    else if constexpr (D == 1)
       return ddt(F::step::angle);
     else
       return ddt(ddt(F::step::angle));
@@ -223,7 +228,9 @@ class outward_pass {
 
   template <class F, class Rates>
   KANE_ALWAYS_INLINE void pose_edge(const trig_type& t, const Rates& rates) {
-    if constexpr (is_edge<F> && euler_edge<F>) {
+    if constexpr (spin_edge<F>) {
+      // axes unknown: they stay NaN, and no expression can read them (axes<F>)
+    } else if constexpr (is_edge<F> && euler_edge<F>) {
       const matrix3 e = F::step::template matrix<scalar>(t, rates.state());
       Eigen::Map<matrix3> m(c_[index<F>()].data());
       if constexpr (!is_edge<typename F::tree_parent>)

@@ -1,6 +1,7 @@
 // Direction cosines the tree decides: e_Ai . e_Bj is 1 or 0 when the two unit
 // vectors are vectors of one frame, and cos theta, +-sin theta or 0 when they
-// sit on the two sides of one simple rotation about a principal axis by theta.
+// sit on the two sides of one simple rotation about a principal axis by theta
+// (undecided across a spin but on its axis).
 // A unit vector on the axis of such a rotation is a unit vector of both frames.
 #pragma once
 
@@ -45,31 +46,30 @@ constexpr bool reaches_down() {
     return false;
 }
 
-// e_AI is a unit vector of the tree parent of B, and B turns about a principal axis.
+// e_AI is a unit vector of the tree parent of B, and B turns about a principal axis by an angle.
 template <class A, int I, class B>
 constexpr bool above_edge() {
-  if constexpr (edge_principal<B>() < 0)
-    return false;
+  if constexpr (edge_principal<B>() < 0 || requires { B::step::speed_index; })
+    return false;  // a spin's angle is not known
   else
     return reaches_down<A, I, typename B::tree_parent>();
 }
+
+struct undecided {};
 
 // e_PI . e_CJ, C turned from its tree parent P about a principal axis p by theta: (^P P^C)_JI.
 template <class C, int I, int J>
 constexpr auto across_edge() {
   constexpr int p = edge_principal<C>(), i = I - 1, j = J - 1;
-  constexpr auto theta = C::step::angle;
   if constexpr (i == p || j == p)
     return std::conditional_t<i == j, one_t, zero_t>{};
   else if constexpr (i == j)
-    return cos(theta);
+    return cos(C::step::angle);
   else if constexpr (j == (p + 1) % 3)
-    return sin(theta);
+    return sin(C::step::angle);
   else
-    return -sin(theta);
+    return -sin(C::step::angle);
 }
-
-struct undecided {};
 
 // e_AI . e_BJ when the tree decides it, undecided otherwise.
 template <class A, int I, class B, int J>

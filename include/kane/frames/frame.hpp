@@ -54,7 +54,7 @@ struct frame : detail::frame_tag {
                 "(a struct derived from kane::root_frame or kane::frame)");
   static_assert(Orientation<O>,
                 "kane: frame<Parent, Orientation> needs an orientation "
-                "(kane::simple, kane::body_fixed, kane::space_fixed, kane::euler_parameters)");
+                "(kane::simple, kane::body_fixed, kane::space_fixed, kane::euler_parameters, kane::spin)");
   using parent = Parent;
   using orientation = O;
 

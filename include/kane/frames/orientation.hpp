@@ -136,6 +136,24 @@ struct euler_parameters {
   }
 };
 
+// C spins relative to P about K (fixed in both) at the generalized speed U:
+// ^P w^C = u k. Its angle is ignorable, no coordinate: of C's axes only k is
+// known (a wheel whose rotation angle enters no equation). U is a free speed
+// of the speed set (kane::free_speed), read from the state.
+template <Axis K, class U>
+struct spin {
+  static_assert(Speed<U>, "kane: spin<Axis, U> turns at a generalized speed U = kane::speed<r>");
+  using axis = K;
+  static constexpr std::size_t speed_index = [] {
+    if constexpr (Speed<U>)
+      return U::index;
+    else
+      return std::size_t(1);
+  }();
+  static constexpr std::size_t coordinate_index = 0;
+  using steps = detail::list<spin>;
+};
+
 // An orientation is a list of edges: simple rotations, or one edge of Euler parameters.
 template <class O>
 concept Orientation = requires {

@@ -163,8 +163,12 @@ constexpr auto partial_in(V v) {
     // d(^R w^F)/dq_s': the axes of the edges from the root to F turned by q_s
     using p = path<root_of<typename V::frame>, typename V::frame>;
     return partial_omega<Leaf::index>(typename p::up{}, typename p::down{});
+  } else if constexpr (is_v<V, omega> && speed_info<Leaf>::value && Leaf::order == 0) {
+    // d(^R w^F)/du_r: the axes of the edges from the root to F spinning by u_r
+    using p = path<root_of<typename V::frame>, typename V::frame>;
+    return partial_omega<Leaf::index, true>(typename p::up{}, typename p::down{});
   } else if constexpr (is_v<V, omega> && !(coordinate_info<Leaf>::value && Leaf::order == 0))
-    return zero_vector{};  // no u, t or q'' in ^R w^F
+    return zero_vector{};  // no t, q'' or u' in ^R w^F
   else if constexpr (is_v<V, angular_velocity_of> && !(coordinate_info<Leaf>::value && Leaf::order == 0))
     return partial_in<A, Leaf>(expand(v));
   else if constexpr (is_v<V, alpha> || is_v<V, angular_acceleration_of>)

@@ -136,6 +136,11 @@ template <class X>
 inline constexpr bool euler_edge = requires {
   X::step::coordinates;
 };
+// ^P w^X = u_r k for X spinning by a free speed (frames/orientation.hpp, spin).
+template <class X>
+inline constexpr bool spin_edge = requires {
+  X::step::speed_index;
+};
 template <class X>
 constexpr auto quaternion_rates() {
   constexpr auto c = X::step::coordinates;
@@ -152,26 +157,32 @@ constexpr auto quaternion_rates() {
                     two * (a * dh - b * dg + g * db - h * da)};
 }
 
+// k of the edge above X, a unit vector of X (components equal in its parent).
+template <class X>
+constexpr auto axis_vector() {
+  using K = typename X::step::axis;
+  constexpr int p = unit_axis<K>::principal;
+  constexpr auto k = unit_axis<K>::value;
+  if constexpr (p >= 0)
+    return unit<X, p + 1>{};
+  else
+    return fixed<literal(k[0])>{} * unit<X, 1>{} + fixed<literal(k[1])>{} * unit<X, 2>{} +
+           fixed<literal(k[2])>{} * unit<X, 3>{};
+}
+
 // d(^P w^X)/dq_R', a vector in X: d(theta)/dq_R k for a simple rotation by theta about k.
 template <std::size_t R, class X>
 constexpr auto edge_axis() {
-  if constexpr (euler_edge<X>) {
+  if constexpr (spin_edge<X>)
+    return zero_vector{};
+  else if constexpr (euler_edge<X>) {
     constexpr auto w = quaternion_rates<X>();
     using r = coordinate<R, 1>;
     return partial<r>(std::get<0>(w)) * unit<X, 1>{} + partial<r>(std::get<1>(w)) * unit<X, 2>{} +
            partial<r>(std::get<2>(w)) * unit<X, 3>{};
   } else {
     constexpr auto d = partial<coordinate<R>>(X::step::angle);
-    using K = typename X::step::axis;
-    constexpr auto axis = [] {
-      constexpr int p = unit_axis<K>::principal;
-      constexpr auto k = unit_axis<K>::value;
-      if constexpr (p >= 0)
-        return unit<X, p + 1>{};
-      else
-        return fixed<literal(k[0])>{} * unit<X, 1>{} + fixed<literal(k[1])>{} * unit<X, 2>{} +
-               fixed<literal(k[2])>{} * unit<X, 3>{};
-    }();
+    constexpr auto axis = axis_vector<X>();
     if constexpr (std::is_same_v<decltype(d), const zero_t>)
       return zero_vector{};
     else if constexpr (std::is_same_v<decltype(d), const one_t>)
@@ -180,9 +191,28 @@ constexpr auto edge_axis() {
       return d * axis;
   }
 }
-template <std::size_t R, class... Up, class... Down>
+// d(^P w^X)/du_R: k if X spins by u_R.
+template <class X>
+constexpr std::size_t spin_speed() {
+  if constexpr (spin_edge<X>)
+    return X::step::speed_index;
+  else
+    return 0;
+}
+template <std::size_t R, class X>
+constexpr auto edge_spin() {
+  if constexpr (spin_speed<X>() == R)
+    return axis_vector<X>();
+  else
+    return zero_vector{};
+}
+// d(^A w^B)/dq_R' (Speed false) or d(^A w^B)/du_R (Speed true) over the path A -> B.
+template <std::size_t R, bool Speed = false, class... Up, class... Down>
 constexpr auto partial_omega(list<Up...>, list<Down...>) {
-  return (zero_vector{} - ... - edge_axis<R, Up>()) + (zero_vector{} + ... + edge_axis<R, Down>());
+  if constexpr (Speed)
+    return (zero_vector{} - ... - edge_spin<R, Up>()) + (zero_vector{} + ... + edge_spin<R, Down>());
+  else
+    return (zero_vector{} - ... - edge_axis<R, Up>()) + (zero_vector{} + ... + edge_axis<R, Down>());
 }
 
 // The rates q_i' and speeds u_i that an expression may hold (bit i - 1; all
@@ -210,18 +240,27 @@ inline constexpr leaf_set leaves_of = leaves_in<X>();  // once per node type
 // The rates of the edge above F, and of the edges from the root down to F (those of ^R w^F).
 template <class F>
 constexpr std::uint64_t edge_rates() {
-  if constexpr (euler_edge<F>) {
+  if constexpr (spin_edge<F>)
+    return 0;
+  else if constexpr (euler_edge<F>) {
     constexpr auto c = F::step::coordinates;
     return leaf_bit(c[0]) | leaf_bit(c[1]) | leaf_bit(c[2]) | leaf_bit(c[3]);
   } else
     return leaves_of<decltype(ddt(F::step::angle))>.rates;
 }
-template <class F>
+// The rates q' (Speeds false) or the speeds u (true) of ^R w^F, R the root.
+template <class F, bool Speeds = false>
 constexpr std::uint64_t path_rates() {
   if constexpr (std::is_void_v<typename F::tree_parent>)
     return 0;
+  else if constexpr (Speeds)
+    return (spin_edge<F> ? leaf_bit(spin_speed<F>()) : 0) | path_rates<typename F::tree_parent, true>();
   else
     return edge_rates<F>() | path_rates<typename F::tree_parent>();
+}
+template <class... F>
+constexpr leaf_set omega_leaves() {
+  return {(path_rates<F>() | ...), (path_rates<F, true>() | ...)};
 }
 template <class X>
 constexpr leaf_set leaves_in() {
@@ -239,9 +278,9 @@ constexpr leaf_set leaves_in() {
   else if constexpr (is_v<X, neg> || is_v<X, unary> || power_info<X>::value || is_v<X, call>)
     return leaves_of<decltype(X::x)>;
   else if constexpr (is_v<X, omega>)
-    return {path_rates<typename X::frame>(), 0};
+    return omega_leaves<typename X::frame>();
   else if constexpr (is_v<X, angular_velocity_of>)
-    return {path_rates<typename X::observer>() | path_rates<typename X::body>(), 0};
+    return omega_leaves<typename X::observer, typename X::body>();
   else if constexpr (is_v<X, vneg> || Quantity<X>)
     return leaves_of<decltype(X::v)>;
   else

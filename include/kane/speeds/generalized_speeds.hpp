@@ -3,6 +3,7 @@
 //   kane::qdot_speeds<6>                       u_r = q_r'
 //   kane::speeds<dot(w, e<L, 1>), ...>         any n expressions linear in q'
 //   kane::angular_velocity_speeds<N, R, L>     u_i = ^N w^R . l_i
+//   kane::speeds<dt(q<1>), kane::free_speed>   u_1 = q_1', u_2 free (a spin rate)
 //
 // Y_rs = du_r/dq_s' and Z_r = u_r at q' = 0 are built at compile time. The
 // evaluator solves the kinematic differential equations at each state:
@@ -32,7 +33,7 @@ concept SpeedSet = std::derived_from<T, detail::speed_set_tag>;
 // u_r = q_r', r = 1..N.
 template <std::size_t N>
 struct qdot_speeds : detail::speed_set_tag {
-  static constexpr std::size_t n = N, rows = N;
+  static constexpr std::size_t n = N, rows = N, defined = N;
   static constexpr bool identity = true;
 };
 
@@ -45,12 +46,25 @@ struct held {
 };
 
 namespace detail {
+struct free_speed_t {};
+}  // namespace detail
+
+// A generalized speed that defines no q': the rate of a frame that spins
+// (kane::spin), listed after the speeds that q' define.
+inline constexpr detail::free_speed_t free_speed{};
+
+namespace detail {
 template <class T>
 inline constexpr bool is_held = false;
 template <class X>
 inline constexpr bool is_held<held<X>> = true;
 template <class X>
 inline constexpr bool is_held<const held<X>> = true;
+// 0 a speed defined by q', 1 a free speed, 2 a held row
+template <class T>
+inline constexpr int speed_kind = is_held<T>                                          ? 2
+                                  : std::is_same_v<std::remove_cv_t<T>, free_speed_t> ? 1
+                                                                                      : 0;
 template <class T>
 constexpr auto row_of(T x) {
   if constexpr (is_held<T>)
@@ -58,26 +72,35 @@ constexpr auto row_of(T x) {
   else
     return x;
 }
-template <bool... Held>
-constexpr bool held_last() {
-  bool seen = false, ok = true;
-  for (bool h : {false, Held...}) ok = ok && (h || !seen), seen = seen || h;
+template <int... Kind>
+constexpr bool kinds_in_order() {
+  int last = 0;
+  bool ok = true;
+  for (int k : {0, Kind...}) ok = ok && k >= last, last = k;
   return ok;
 }
 }  // namespace detail
 
-// u_r = U_r, r = 1..n: expressions in q, q' and t, linear in q'; then the held
-// rows (kinematic equations without a speed): rows = n + held = nq.
+// u_r = U_r, r = 1..defined: expressions in q, q' and t, linear in q'; then
+// free speeds (kane::free_speed), u_r for r = defined + 1..n; then the held
+// rows (kinematic equations without a speed): rows = defined + held = nq.
 template <auto... U>
 struct speeds : detail::speed_set_tag {
-  static_assert(((ScalarExpr<decltype(U)> || detail::is_held<decltype(U)>)&&...),
+  static_assert(((ScalarExpr<decltype(U)> || detail::speed_kind<decltype(U)> != 0) && ...),
                 "kane: speeds<u1, ..., un> takes scalar expressions");
-  static_assert(detail::held_last<detail::is_held<decltype(U)>...>(),
-                "kane: held rows (kane::held, kane::unit_norm) follow the speeds in speeds<...>");
-  static constexpr std::size_t rows = sizeof...(U);
-  static constexpr std::size_t n = rows - (std::size_t(detail::is_held<decltype(U)>) + ... + 0);
+  static_assert(detail::kinds_in_order<detail::speed_kind<decltype(U)>...>(),
+                "kane: in speeds<...> the speeds that q' define come first, then kane::free_speed, then held "
+                "rows (kane::held, kane::unit_norm)");
+  static constexpr std::size_t defined = (std::size_t(detail::speed_kind<decltype(U)> == 0) + ... + 0);
+  static constexpr std::size_t free = (std::size_t(detail::speed_kind<decltype(U)> == 1) + ... + 0);
+  static constexpr std::size_t rows = sizeof...(U) - free;
+  static constexpr std::size_t n = defined + free;
   static constexpr bool identity = false;
-  static constexpr std::tuple<decltype(detail::row_of(U))...> definitions{detail::row_of(U)...};
+  static constexpr auto definitions = []<std::size_t... R>(std::index_sequence<R...>) {
+    constexpr std::tuple<decltype(U)...> all{U...};
+    return std::tuple{detail::row_of(std::get<(R < defined ? R : R + free)>(all))...};
+  }
+  (std::make_index_sequence<rows>{});
 };
 
 // q0 q0' + q1 q1' + q2 q2' + q3 q3' = 0, half the derivative of |e|^2 = 1 for
@@ -213,7 +236,9 @@ struct kde_system {
 // structure of Y decides them, numbers of the evaluator otherwise.
 template <class Sp, std::size_t S, std::size_t R>
 constexpr auto weight() {
-  if constexpr (Sp::identity)
+  if constexpr (R > Sp::defined)  // a free speed
+    return zero_t{};
+  else if constexpr (Sp::identity)
     return std::conditional_t<S == R, one_t, zero_t>{};
   else if constexpr (kde_system<Sp>::x[S - 1][R - 1] == entry::zero)
     return zero_t{};
