@@ -1,0 +1,69 @@
+// The kinematics of the Whipple bicycle (Meijaard et al. 2007), as in SymPy's
+// test_bicycle (sympy/physics/mechanics/tests/test_kane3.py), without fake
+// coordinates: the wheels spin at free speeds, their angles are ignorable.
+//
+// Frames: yaw q3 about n3 (Y), roll q4 about y1 (R), pitch q5 about r2 (P), the
+// head-tube angle lambda about p2, a constant rotation by a parameter (H, the rear
+// frame), steer q6 about h1 (F, the fork); the rear wheel spins about h2 at u7
+// (Wr), the front wheel about f2 at u8 (Wf). n3 points up.
+// Points: the rear contact at q1 n1 + q2 n2, the rear centre rr r3 above it, the
+// steer axis point d h3 further, the front centre c f1 + o f3 from there, the front
+// contact rf (g f2 - y3) / sqrt(1 - g^2) from the front centre, g = f2 . y3.
+// Constraints: the front contact on the ground, f = r^O,Cf . n3 = 0, makes the pitch
+// q5 dependent; rolling of both wheels (their contact points at rest in y1 and y2)
+// and df/dt = 0 make u1, u2 (the rear contact), u3 (yaw), u5 (pitch) and u8 (front
+// wheel) dependent on u4 (roll), u6 (steer) and u7 (rear wheel).
+#pragma once
+
+#include <kane/kane.hpp>
+
+namespace models::bicycle {
+using kane::dot;
+using kane::e;
+template <std::size_t I>
+using q = kane::coordinate<I>;
+struct rf_ : kane::parameter<1> {};      // front wheel radius
+struct rr_ : kane::parameter<2> {};      // rear wheel radius
+struct lambda_ : kane::parameter<3> {};  // head-tube angle from the rear frame's pitch axis
+struct o_ : kane::parameter<4> {};       // fork offset
+struct c_ : kane::parameter<5> {};       // fork length
+struct d_ : kane::parameter<6> {};       // frame length
+inline constexpr rf_ rf;
+inline constexpr rr_ rr;
+inline constexpr lambda_ lambda;
+inline constexpr o_ o;
+inline constexpr c_ c;
+inline constexpr d_ d;
+
+struct N : kane::root_frame {};
+struct Y : kane::frame<N, kane::simple<kane::axis::z, q<3>>> {};
+struct R : kane::frame<Y, kane::simple<kane::axis::x, q<4>>> {};
+struct P : kane::frame<R, kane::simple<kane::axis::y, q<5>>> {};
+struct H : kane::frame<P, kane::simple<kane::axis::y, lambda_>> {};
+struct F : kane::frame<H, kane::simple<kane::axis::x, q<6>>> {};
+struct Wr : kane::frame<H, kane::spin<kane::axis::y, kane::speed<7>>> {};
+struct Wf : kane::frame<F, kane::spin<kane::axis::y, kane::speed<8>>> {};
+
+inline constexpr auto g = dot(e<F, 2>, e<Y, 3>);
+struct O : kane::origin<N> {};
+struct Cr : kane::point<O, kane::q<1> * e<N, 1> + kane::q<2> * e<N, 2>> {};
+struct Dr : kane::point<Cr, rr * e<R, 3>> {};  // the rear wheel's centre
+struct S : kane::point<Dr, d * e<H, 3>> {};
+struct Df : kane::point<S, c * e<F, 1> + o * e<F, 3>> {};  // the front wheel's centre
+struct Cf : kane::point<Df, rf / kane::sqrt(1 - g * g) * (g * e<F, 2> - e<Y, 3>)> {};
+struct Br : kane::point<Dr, -rr * e<R, 3>> {};  // the rear wheel's point at its contact
+struct Bf : kane::point<Df, rf / kane::sqrt(1 - g * g) * (g * e<F, 2> - e<Y, 3>)> {};  // the front's
+
+inline constexpr auto ground = dot(kane::position<O, Cf>(), e<N, 3>);
+using pitch = kane::holonomic<kane::dependent_coordinates<5>, ground>;
+using speeds =
+    kane::speeds<kane::dt(kane::q<1>), kane::dt(kane::q<2>), kane::dt(kane::q<3>), kane::dt(kane::q<4>),
+                 kane::dt(kane::q<5>), kane::dt(kane::q<6>), kane::free_speed, kane::free_speed>;
+inline constexpr auto v_br = kane::body_point_velocity<N, Wr, Dr, Br>();
+inline constexpr auto v_bf = kane::body_point_velocity<N, Wf, Df, Bf>();
+using rolling =
+    kane::nonholonomic<speeds, kane::dependent<1, 2, 3, 5, 8>, dot(v_br, e<Y, 1>), dot(v_br, e<Y, 2>),
+                       dot(v_bf, e<Y, 1>), dot(v_bf, e<Y, 2>), kane::dt(ground)>;
+using state = kane::state<double, 6, 8, 6>;
+using evaluator = kane::evaluator<state, kane::frames<Wr, Wf>, kane::level::velocity, speeds>;
+}  // namespace models::bicycle
