@@ -4,8 +4,8 @@
 // case off_axis: a_spinning_frame_has_no_known_axes_but_its_spin_axis<.*W>
 // case express_in_spin: a_spinning_frame_has_no_known_axes_but_its_spin_axis<.*W>
 // case frame_below_spin: a_spinning_frame_has_no_known_axes_but_its_spin_axis<.*W>
-// case without_speed_set: a_spinning_frame_turns_at_a_free_speed_of_the_evaluators_speed_set<.*W>
-// case speed_not_free: a_spinning_frame_turns_at_a_free_speed_of_the_evaluators_speed_set<.*W>
+// case without_speed_set: a_frame_turns_at_free_speeds_of_the_evaluators_speed_set<.*W>
+// case speed_not_free: a_frame_turns_at_free_speeds_of_the_evaluators_speed_set<.*W>
 // case free_speed_first: kane: in speeds<...> the speeds that q' define come first, then kane::free_speed
 // case spin_by_coordinate: kane: spin<Axis, U> turns at a generalized speed U = kane::speed<r>
 #include <kane/kane.hpp>

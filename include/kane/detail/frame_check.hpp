@@ -73,9 +73,10 @@ struct unit_norm_needs_a_frame_oriented_by_euler_parameters;
 // axes, and frames below it, need its angle (make it a coordinate: kane::simple).
 template <class Frame>
 struct a_spinning_frame_has_no_known_axes_but_its_spin_axis;
-// spin<K, u<r>>: u_r is a free speed of the evaluator's speed set (kane::free_speed).
+// spin<K, u<r>> and attitude<..., body_rates<u...>>: the speeds are free speeds of the
+// evaluator's speed set (kane::free_speed).
 template <class Frame>
-struct a_spinning_frame_turns_at_a_free_speed_of_the_evaluators_speed_set;
+struct a_frame_turns_at_free_speeds_of_the_evaluators_speed_set;
 }  // namespace error
 
 namespace detail {

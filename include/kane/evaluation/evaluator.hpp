@@ -9,7 +9,9 @@
 // With a speed set, q' and q'' are solved from u and u' (kinematic_equations.hpp).
 // update(s) copies what evaluation reads of s (q, p, t and, with a speed set,
 // u and u', else q' and q''): every result is of the state of the last update,
-// never a mix of two states, and s may be a temporary. Before the first update
+// never a mix of two states, and s may be a temporary. An attitude of s that is
+// not a rotation (frames/orientation.hpp, rotation_tolerance) gives status
+// not_a_rotation and NaN for all computed from it. Before the first update
 // the state is NaN (updated() is false, debug builds assert): every result is
 // NaN, never a read of memory not written.
 // Evaluating allocates nothing and calls no sin or cos of a frame coordinate.
@@ -19,6 +21,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 #include <utility>
 
@@ -37,21 +40,24 @@ template <State St, class Frames, level Level = level::acceleration, class Speed
 class evaluator;
 
 namespace detail {
-// A frame of the closure that spins does so at a free speed of Speeds.
+// A frame of the closure that spins or has an attitude turns at free speeds of Speeds.
 template <class Speeds, class F>
-constexpr bool spins_freely() {
-  if constexpr (!spin_edge<F>)
+constexpr bool turns_freely() {
+  if constexpr (!spin_edge<F> && !attitude_edge<F>)
     return true;
   else if constexpr (std::is_void_v<Speeds>)
     return false;
-  else
-    return F::step::speed_index > Speeds::defined && F::step::speed_index <= Speeds::n;
+  else {
+    bool ok = true;
+    for (std::size_t i : free_speeds<F>()) ok = ok && (i == 0 || (i > Speeds::defined && i <= Speeds::n));
+    return ok;
+  }
 }
 template <class Speeds, class... F>
-constexpr bool spins_checked(list<F...>) {
-  return (check<spins_freely<Speeds, F>(),
-                error::a_spinning_frame_turns_at_a_free_speed_of_the_evaluators_speed_set<F>> &&
-          ...);
+constexpr bool free_speeds_checked(list<F...>) {
+  return (
+      check<turns_freely<Speeds, F>(), error::a_frame_turns_at_free_speeds_of_the_evaluators_speed_set<F>> &&
+      ...);
 }
 }  // namespace detail
 
@@ -62,7 +68,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   using pass_type = detail::outward_pass<typename St::scalar, typename detail::closure<Fs...>::type, Level>;
   static_assert((detail::one_tree_v<detail::join_trees_t<detail::root_of<Fs>, typename pass_type::root>> &&
                  ...));
-  static_assert(detail::spins_checked<Speeds>(typename pass_type::closure{}));
+  static_assert(detail::free_speeds_checked<Speeds>(typename pass_type::closure{}));
   using equations = detail::kinematic_equations<St, Speeds>;
   using equations::direct;
   using equations::solves;
@@ -141,6 +147,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   KANE_ALWAYS_INLINE void pass_at(const St& s) {
     st_.q = s.q, st_.p = s.p, st_.t = s.t, updated_ = true;
     const scalar norm_residue = normalise(closure{});  // Euler parameters of unit norm
+    const bool rotations = attitudes(closure{});       // NaN in st_ where not
     if constexpr (solves)
       st_.u = s.u, st_.ud = s.ud;
     else
@@ -154,7 +161,9 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
     if constexpr (acceleration)
       residue += solves ? detail::nonfinite_residue(s.ud) : detail::nonfinite_residue(s.qdd);
     const bool finite = residue == scalar(0);
-    this->status_ = finite ? solve_status::ok : solve_status::not_finite;
+    this->status_ = !finite     ? solve_status::not_finite
+                    : rotations ? solve_status::ok
+                                : solve_status::not_a_rotation;
     if constexpr (!solves) {
       this->template pass<true, velocity, acceleration>(tr, *this);  // frame after frame, all levels at once
       this->store_trig(tr);
@@ -191,6 +200,25 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
         }(),
         ...);
     return residue;
+  }
+
+  // Each attitude of the state is a rotation; where one is not, its numbers in st_ become NaN.
+  template <class... F>
+  KANE_ALWAYS_INLINE bool attitudes(detail::list<F...>) {
+    bool all = true;
+    (
+        [&] {
+          if constexpr (detail::attitude_edge<F>) {
+            using src = typename F::step::source;
+            if (!F::step::rotation(st_)) {
+              for (std::size_t i = 0; i < src::count; ++i)
+                st_.p[src::first - 1 + i] = std::numeric_limits<scalar>::quiet_NaN();
+              all = false;
+            }
+          }
+        }(),
+        ...);
+    return all;
   }
 
   St st_ = detail::nan_state<St>();

@@ -116,8 +116,8 @@ class outward_pass {
   static constexpr bool edge_below_held() {
     if constexpr (std::is_void_v<typename F::tree_parent>)
       return false;
-    else if constexpr (euler_edge<F>)
-      return false;  // its rates are in F's axes
+    else if constexpr (matrix_edge<F>)
+      return false;  // its rates may be in F's axes
     else
       return contains<typename F::tree_parent, closure>::value;
   }
@@ -212,25 +212,33 @@ class outward_pass {
       return ap;
   }
 
-  // ^P w^F = sum_i w_i e_Fi (D = 0), its F-derivative sum_i w_i' e_Fi (D = 1), for Euler parameters.
+  // ^P w^F = sum_i w_i k_i (D = 0) and its F-derivative sum_i w_i' k_i (D = 1) for an edge
+  // with no axis: Euler parameters (k_i = e_Fi), an attitude (body rates e_Fi or parent rates e_Pi).
   template <class F, std::size_t D, class Rates>
-  KANE_ALWAYS_INLINE vec3 quaternion_part(const Rates& rates) const {
-    constexpr auto w = quaternion_rates<F>();
+  KANE_ALWAYS_INLINE vec3 matrix_edge_part(const Rates& rates) const {
     const auto value = [&](auto x) {
       if constexpr (D == 0)
         return eval_scalar(x, rates);
       else
         return eval_scalar(ddt(x), rates);
     };
-    return value(std::get<0>(w)) * column<F>(0) + value(std::get<1>(w)) * column<F>(1) +
-           value(std::get<2>(w)) * column<F>(2);
+    if constexpr (attitude_edge<F>) {
+      constexpr auto s = F::step::rate_speeds;
+      using K = std::conditional_t<F::step::body_rates, F, typename F::tree_parent>;
+      return value(speed<s[0]>{}) * column<K>(0) + value(speed<s[1]>{}) * column<K>(1) +
+             value(speed<s[2]>{}) * column<K>(2);
+    } else {
+      constexpr auto w = quaternion_rates<F>();
+      return value(std::get<0>(w)) * column<F>(0) + value(std::get<1>(w)) * column<F>(1) +
+             value(std::get<2>(w)) * column<F>(2);
+    }
   }
 
   template <class F, class Rates>
   KANE_ALWAYS_INLINE void pose_edge(const trig_type& t, const Rates& rates) {
     if constexpr (spin_edge<F>) {
       // axes unknown: they stay NaN, and no expression can read them (axes<F>)
-    } else if constexpr (is_edge<F> && euler_edge<F>) {
+    } else if constexpr (is_edge<F> && matrix_edge<F>) {
       const matrix3 e = F::step::template matrix<scalar>(t, rates.state());
       Eigen::Map<matrix3> m(c_[index<F>()].data());
       if constexpr (!is_edge<typename F::tree_parent>)
@@ -278,9 +286,9 @@ class outward_pass {
 
   template <class F, class Rates>
   KANE_ALWAYS_INLINE void velocity_edge(const Rates& rates) {
-    if constexpr (is_edge<F> && euler_edge<F>)
+    if constexpr (is_edge<F> && matrix_edge<F>)
       store3(w_[index<F>()].data(),
-             load3(w_[index<typename F::tree_parent>()].data()) + quaternion_part<F, 0>(rates));
+             load3(w_[index<typename F::tree_parent>()].data()) + matrix_edge_part<F, 0>(rates));
     else if constexpr (is_edge<F>)
       store3(w_[index<F>()].data(), turned<F, 1>(load3(w_[index<typename F::tree_parent>()].data()), rates));
   }
@@ -288,10 +296,10 @@ class outward_pass {
   // ^R alpha^F = ^R alpha^P + ^F d(^P w^F)/dt + ^R w^P x ^P w^F
   template <class F, class Rates>
   KANE_ALWAYS_INLINE void acceleration_edge(const Rates& rates) {
-    if constexpr (is_edge<F> && euler_edge<F>) {
+    if constexpr (is_edge<F> && matrix_edge<F>) {
       constexpr std::size_t ip = index<typename F::tree_parent>();
       const vec3 wp = load3(w_[ip].data()), we = load3(w_[index<F>()].data()) - wp;
-      store3(a_[index<F>()].data(), load3(a_[ip].data()) + quaternion_part<F, 1>(rates) + cross3(wp, we));
+      store3(a_[index<F>()].data(), load3(a_[ip].data()) + matrix_edge_part<F, 1>(rates) + cross3(wp, we));
     } else if constexpr (is_edge<F>)
       store3(a_[index<F>()].data(), alpha_below<F>(rates));
   }

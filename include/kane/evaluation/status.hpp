@@ -1,6 +1,7 @@
 // What a numeric solve found: ok, a singular matrix (a pivot at or below the
-// rank threshold), numbers that are not finite (NaN or inf in or out), or an
-// iteration that did not reach its tolerance (configuration.hpp).
+// rank threshold), numbers that are not finite (NaN or inf in or out), an
+// iteration that did not reach its tolerance (configuration.hpp), or an
+// attitude read from the state that is not a rotation (kane::attitude).
 // ok promises finite numbers: the promise rests on IEEE comparisons with NaN,
 // which -ffast-math and -ffinite-math-only let the compiler fold away, so
 // those flags are an error here unless KANE_ALLOW_FAST_MATH is defined (then
@@ -18,7 +19,7 @@
 
 namespace kane {
 
-enum class solve_status { ok, singular, not_finite, not_converged };
+enum class solve_status { ok, singular, not_finite, not_converged, not_a_rotation };
 
 namespace detail {
 // 0 if every number of a is finite, NaN otherwise: x - x is 0 for a finite x and

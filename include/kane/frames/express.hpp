@@ -29,7 +29,11 @@ template <class F, bool Up>
 struct edge {
   template <class S, class Trig, class St>
   static Eigen::Matrix<S, 3, 3> matrix(const Trig& t, const St& st) {
-    if constexpr (Up)
+    static_assert(check<!requires { F::step::speed_index; },
+                        error::a_spinning_frame_has_no_known_axes_but_its_spin_axis<F>>);
+    if constexpr (requires { F::step::speed_index; })
+      return Eigen::Matrix<S, 3, 3>::Identity();
+    else if constexpr (Up)
       return F::step::template matrix<S>(t, st).transpose();
     else
       return F::step::template matrix<S>(t, st);

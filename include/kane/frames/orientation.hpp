@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 #include <Eigen/Core>
 
@@ -50,6 +51,17 @@ using numbered_axis = direction<I == 1, I == 2, I == 3>;
 template <int I, int J, int K>
 constexpr bool valid_sequence() {
   return I >= 1 && I <= 3 && J >= 1 && J <= 3 && K >= 1 && K <= 3 && I != J && J != K;
+}
+
+// ^P P^C of the Euler parameters (a, b, c, d), divided by their squared norm.
+template <class S>
+Eigen::Matrix<S, 3, 3> quaternion_matrix(S a, S b, S c, S d) {
+  const S aa = a * a, bb = b * b, cc = c * c, dd = d * d, k = S(1) / (aa + bb + cc + dd), w = 2 * k;
+  Eigen::Matrix<S, 3, 3> m;
+  m << k * (aa + bb - cc - dd), w * (b * c + a * d), w * (b * d - a * c),  //
+      w * (b * c - a * d), k * (aa - bb + cc - dd), w * (c * d + a * b),   //
+      w * (b * d + a * c), w * (c * d - a * b), k * (aa - bb - cc + dd);
+  return m;
 }
 
 }  // namespace detail
@@ -125,14 +137,8 @@ struct euler_parameters {
                       coordinates[3] <= St::nq,
                   "kane: the Euler parameters use a coordinate beyond the state; declare the state with at "
                   "least that many coordinates");
-    const S a = st.q[coordinates[0] - 1], b = st.q[coordinates[1] - 1], c = st.q[coordinates[2] - 1],
-            d = st.q[coordinates[3] - 1];
-    const S aa = a * a, bb = b * b, cc = c * c, dd = d * d, k = S(1) / (aa + bb + cc + dd), w = 2 * k;
-    Eigen::Matrix<S, 3, 3> m;
-    m << k * (aa + bb - cc - dd), w * (b * c + a * d), w * (b * d - a * c),  //
-        w * (b * c - a * d), k * (aa - bb + cc - dd), w * (c * d + a * b),   //
-        w * (b * d + a * c), w * (c * d - a * b), k * (aa - bb - cc + dd);
-    return m;
+    return detail::quaternion_matrix(st.q[coordinates[0] - 1], st.q[coordinates[1] - 1],
+                                     st.q[coordinates[2] - 1], st.q[coordinates[3] - 1]);
   }
 };
 
@@ -152,6 +158,94 @@ struct spin {
   }();
   static constexpr std::size_t coordinate_index = 0;
   using steps = detail::list<spin>;
+};
+
+// An attitude supplied at run time (by an estimator, a simulator): ^P P^C read
+// from the state's parameters p_K, ... (data of the state, not constants), its
+// angular velocity from three free speeds, ^P w^C = u1 c1 + u2 c2 + u3 c3
+// (body_rates) or u1 p1 + u2 p2 + u3 p3 (parent_rates). The evaluator checks it
+// (evaluation/evaluator.hpp): a rotation within rotation_tolerance, else status
+// not_a_rotation.
+// An attitude is a rotation when |M M^T - I| <= rotation_tolerance entrywise and
+// |det M - 1| <= rotation_tolerance (a matrix, used as it is), or | |q|^2 - 1 | <= rotation_tolerance (a
+// quaternion, then used divided by |q|^2): sqrt(epsilon), 1.5e-8 for double, 3.5e-4 for float.
+template <class S>
+inline constexpr S rotation_tolerance = S(detail::sqrt_newton(double(std::numeric_limits<S>::epsilon())));
+
+template <std::size_t K>
+struct rotation_matrix {  // ^P P^C row after row: p_K .. p_K+8 (row i: c_i in P)
+  static constexpr std::size_t first = K, count = 9;
+};
+template <std::size_t K>
+struct unit_quaternion {  // (q0, q1, q2, q3) as euler_parameters: p_K .. p_K+3
+  static constexpr std::size_t first = K, count = 4;
+};
+template <class U1, class U2, class U3>
+struct body_rates {
+  static_assert(Speed<U1> && Speed<U2> && Speed<U3>, "kane: body_rates<u1, u2, u3> takes three speeds");
+  static constexpr bool in_child = true;
+};
+template <class U1, class U2, class U3>
+struct parent_rates {
+  static_assert(Speed<U1> && Speed<U2> && Speed<U3>, "kane: parent_rates<u1, u2, u3> takes three speeds");
+  static constexpr bool in_child = false;
+};
+
+namespace detail {
+template <class Rates>
+struct rate_speeds {
+  static constexpr std::array<std::size_t, 3> value{1, 2, 3};
+};
+template <template <class, class, class> class R, std::size_t I, std::size_t J, std::size_t K>
+struct rate_speeds<R<speed<I>, speed<J>, speed<K>>> {
+  static constexpr std::array<std::size_t, 3> value{I, J, K};
+};
+}  // namespace detail
+
+template <class Source, class Rates>
+struct attitude {
+  static_assert(
+      requires { Source::first; },
+      "kane: attitude<Source, Rates> reads kane::rotation_matrix<K> or kane::unit_quaternion<K>");
+  static_assert(
+      requires { Rates::in_child; },
+      "kane: attitude<Source, Rates> turns at kane::body_rates<...> or kane::parent_rates<...>");
+  using source = Source;
+  static constexpr std::array<std::size_t, 3> rate_speeds = detail::rate_speeds<Rates>::value;
+  static constexpr bool body_rates = Rates::in_child;
+  static_assert(rate_speeds[0] != rate_speeds[1] && rate_speeds[0] != rate_speeds[2] &&
+                    rate_speeds[1] != rate_speeds[2],
+                "kane: the three rates of an attitude are three different speeds");
+  static constexpr std::size_t coordinate_index = 0;
+  using steps = detail::list<attitude>;
+  // The attitude of st is a rotation (within rotation_tolerance).
+  template <class St>
+  static bool rotation(const St& st) {
+    using S = typename St::scalar;
+    constexpr std::size_t k = Source::first - 1;
+    const S tol = rotation_tolerance<S>;
+    if constexpr (Source::count == 4) {
+      const S n = st.p[k] * st.p[k] + st.p[k + 1] * st.p[k + 1] + st.p[k + 2] * st.p[k + 2] +
+                  st.p[k + 3] * st.p[k + 3];
+      return n - S(1) <= tol && S(1) - n <= tol;  // false for NaN
+    } else {
+      const Eigen::Matrix<S, 3, 3> m = matrix<S>(0, st);
+      const S d = m.determinant() - S(1);
+      return ((m * m.transpose() - Eigen::Matrix<S, 3, 3>::Identity()).cwiseAbs().array() <= tol).all() &&
+             d <= tol && -d <= tol;
+    }
+  }
+  template <class S, class Trig, class St>
+  static Eigen::Matrix<S, 3, 3> matrix(const Trig&, const St& st) {
+    constexpr std::size_t k = Source::first - 1;
+    static_assert(Source::first + Source::count - 1 <= St::np,
+                  "kane: the attitude is read from parameters beyond the state; declare the state with "
+                  "enough parameters");
+    if constexpr (Source::count == 4)
+      return detail::quaternion_matrix(st.p[k], st.p[k + 1], st.p[k + 2], st.p[k + 3]);
+    else
+      return Eigen::Map<const Eigen::Matrix<S, 3, 3, Eigen::RowMajor>>(st.p.data() + k);
+  }
 };
 
 // An orientation is a list of edges: simple rotations, or one edge of Euler parameters.

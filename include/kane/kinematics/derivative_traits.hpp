@@ -4,6 +4,7 @@
 // expression holds (so a derivative by another one is zero without being built).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <tuple>
@@ -141,6 +142,14 @@ template <class X>
 inline constexpr bool spin_edge = requires {
   X::step::speed_index;
 };
+// ^P P^C from the state, ^P w^C from three free speeds (frames/orientation.hpp, attitude).
+template <class X>
+inline constexpr bool attitude_edge = requires {
+  X::step::rate_speeds;
+};
+// An edge with no axis: its matrix read from the state, ^P w^C = sum_i w_i k_i.
+template <class X>
+inline constexpr bool matrix_edge = euler_edge<X> || attitude_edge<X>;
 template <class X>
 constexpr auto quaternion_rates() {
   constexpr auto c = X::step::coordinates;
@@ -173,7 +182,7 @@ constexpr auto axis_vector() {
 // d(^P w^X)/dq_R', a vector in X: d(theta)/dq_R k for a simple rotation by theta about k.
 template <std::size_t R, class X>
 constexpr auto edge_axis() {
-  if constexpr (spin_edge<X>)
+  if constexpr (spin_edge<X> || attitude_edge<X>)
     return zero_vector{};
   else if constexpr (euler_edge<X>) {
     constexpr auto w = quaternion_rates<X>();
@@ -192,19 +201,34 @@ constexpr auto edge_axis() {
   }
 }
 // d(^P w^X)/du_R: k if X spins by u_R.
-template <class X>
-constexpr std::size_t spin_speed() {
-  if constexpr (spin_edge<X>)
-    return X::step::speed_index;
-  else
-    return 0;
-}
+// d(^P w^X)/du_R: k if X spins by u_R; c_i (p_i) if u_R is the i-th body (parent) rate of an attitude.
 template <std::size_t R, class X>
 constexpr auto edge_spin() {
-  if constexpr (spin_speed<X>() == R)
-    return axis_vector<X>();
-  else
+  if constexpr (spin_edge<X>) {
+    if constexpr (X::step::speed_index == R)
+      return axis_vector<X>();
+    else
+      return zero_vector{};
+  } else if constexpr (attitude_edge<X>) {
+    constexpr auto s = X::step::rate_speeds;
+    constexpr int i = s[0] == R ? 1 : s[1] == R ? 2 : s[2] == R ? 3 : 0;
+    using F = std::conditional_t<X::step::body_rates, X, typename X::tree_parent>;
+    if constexpr (i == 0)
+      return zero_vector{};
+    else
+      return unit<F, i>{};
+  } else
     return zero_vector{};
+}
+// The free speeds that turn the edge above X (0: none).
+template <class X>
+constexpr std::array<std::size_t, 3> free_speeds() {
+  if constexpr (spin_edge<X>)
+    return {X::step::speed_index, 0, 0};
+  else if constexpr (attitude_edge<X>)
+    return X::step::rate_speeds;
+  else
+    return {0, 0, 0};
 }
 // d(^A w^B)/dq_R' (Speed false) or d(^A w^B)/du_R (Speed true) over the path A -> B.
 template <std::size_t R, bool Speed = false, class... Up, class... Down>
@@ -240,7 +264,7 @@ inline constexpr leaf_set leaves_of = leaves_in<X>();  // once per node type
 // The rates of the edge above F, and of the edges from the root down to F (those of ^R w^F).
 template <class F>
 constexpr std::uint64_t edge_rates() {
-  if constexpr (spin_edge<F>)
+  if constexpr (spin_edge<F> || attitude_edge<F>)
     return 0;
   else if constexpr (euler_edge<F>) {
     constexpr auto c = F::step::coordinates;
@@ -254,7 +278,12 @@ constexpr std::uint64_t path_rates() {
   if constexpr (std::is_void_v<typename F::tree_parent>)
     return 0;
   else if constexpr (Speeds)
-    return (spin_edge<F> ? leaf_bit(spin_speed<F>()) : 0) | path_rates<typename F::tree_parent, true>();
+    return [] {
+      std::uint64_t bits = 0;
+      for (std::size_t i : free_speeds<F>())
+        if (i != 0) bits |= leaf_bit(i);
+      return bits;
+    }() | path_rates<typename F::tree_parent, true>();
   else
     return edge_rates<F>() | path_rates<typename F::tree_parent>();
 }
