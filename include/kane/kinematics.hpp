@@ -5,4 +5,5 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/derivative_traits.hpp"
+#include "kane/kinematics/edges.hpp"
 #include "kane/kinematics/point.hpp"
