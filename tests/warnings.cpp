@@ -11,6 +11,7 @@
 #include <kane/print.hpp>
 
 #include "../examples/models/arm6.hpp"
+#include "../examples/models/bicycle.hpp"
 #include "../examples/models/disc.hpp"
 #include "../examples/models/fourbar.hpp"
 #include "../examples/models/free_body.hpp"
@@ -212,6 +213,31 @@ S free_body(const kane::state<S, 6>& s6) {
          kane::direction_cosines<m::N, K>(s)(0, 0);
 }
 
+// Wheels that spin at free speeds (the bicycle), and an attitude read from the state.
+struct Att
+    : kane::frame<N, kane::attitude<kane::rotation_matrix<1>,
+                                    kane::parent_rates<kane::speed<1>, kane::speed<2>, kane::speed<3>>>> {};
+template <class S>
+S spins_and_attitudes(const kane::state<S, 6>& s6) {
+  namespace m = models::bicycle;
+  kane::state<S, 6, 8, 6> s;
+  s.q = s6.q;
+  s.p = {S(0.35), S(0.3), S(1.25), S(0.03), S(0.27), S(0.95)};
+  kane::evaluator<decltype(s), kane::frames<m::Wr, m::Wf>, kane::level::acceleration, m::speeds> ev;
+  const auto r = kane::solve_configuration<m::pitch>(ev, s);
+  const auto sol = kane::solve_constraints<m::rolling>(ev);
+  kane::state<S, 0, 3, 9> a;
+  a.p = {S(1), S(0), S(0), S(0), S(1), S(0), S(0), S(0), S(1)};
+  using free3 = kane::speeds<kane::free_speed, kane::free_speed, kane::free_speed>;
+  kane::evaluator<decltype(a), kane::frames<Att>, kane::level::acceleration, free3> ea;
+  ea.update(a);
+  using unit_rates = kane::attitude<kane::unit_quaternion<1>,
+                                    kane::body_rates<kane::speed<1>, kane::speed<2>, kane::speed<3>>>;
+  return r.residual + sol.A.sum() + kane::express<m::N>(kane::angular_acceleration<m::N, m::Wf>(), ev)[0] +
+         kane::express<N>(kane::angular_acceleration<N, Att>(), ea)[2] + kane::rotation_tolerance<S> +
+         S(unit_rates::rotation(a));
+}
+
 // Printing.
 template <class S>
 std::string printing(const state6<S>& s) {
@@ -221,13 +247,14 @@ std::string printing(const state6<S>& s) {
   return os.str() + kane::to_string(scalar_expr) +
          kane::to_string(kane::velocity_remainder<rates>(kane::velocity<N, P3>())) +
          kane::to_string(kane::partial_velocity<disc_speeds>(models::disc::v_below, u<3>)) +
-         kane::to_string(kane::angular_acceleration<N, F>());
+         kane::to_string(kane::angular_acceleration<N, F>()) +
+         kane::to_string(kane::angular_velocity<models::bicycle::N, models::bicycle::Wr>());
 }
 
 template <class S>
 S all(const state6<S>& s, const kane::state<S, 6>& s6) {
   return frames_and_vectors(s) + kinematics(s) + speeds(s) + arm(s6) + fourbar(s6) + free_body(s6) +
-         S(printing(s).size());
+         spins_and_attitudes(s6) + S(printing(s).size());
 }
 
 template float all<float>(const state6<float>&, const kane::state<float, 6>&);

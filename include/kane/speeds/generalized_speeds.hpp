@@ -206,14 +206,14 @@ constexpr entry entry_of() {
 // and the patterns of Z = u at q' = 0 and of X = -W Z.
 template <class Sp>
 struct kde_system {
-  static constexpr std::size_t n = Sp::rows, k = n;
+  static constexpr std::size_t n = Sp::rows, k = n, d = n == 0 ? 1 : n;  // d: no division by 0 for nq = 0
   template <std::size_t R, std::size_t C>
   using y_type = decltype(diff(std::get<R>(Sp::definitions), coordinate<C + 1, 1>{}));
   template <std::size_t R>
   using z_type = decltype(at_rest(std::get<R>(Sp::definitions)));
   static constexpr pattern<n, n> m = []<std::size_t... I>(std::index_sequence<I...>) {
     pattern<n, n> p{};
-    ((p[I / n][I % n] = entry_of<y_type<I / n, I % n>>()), ...);
+    ((p[I / d][I % d] = entry_of<y_type<I / d, I % d>>()), ...);
     return p;
   }
   (std::make_index_sequence<n * n>{});
