@@ -6,6 +6,8 @@
 // case repeated_rate: kane: the three rates of an attitude are three different speeds
 // case source_not_state: kane: attitude<Source, Rates> reads kane::rotation_matrix<K> or kane::unit_quaternion<K>
 // case beyond_parameters: kane: the attitude is read from parameters beyond the state
+// case rates_not_rates: kane: attitude<Source, Rates> turns at kane::body_rates<...> or kane::parent_rates<...>
+// case rates_not_speeds: kane: body_rates<u1, u2, u3> takes three speeds
 #include <kane/kane.hpp>
 
 template <std::size_t I>
@@ -13,6 +15,10 @@ using u = kane::speed<I>;
 struct N : kane::root_frame {};
 #ifdef KANE_CASE_repeated_rate
 using rates = kane::body_rates<u<1>, u<2>, u<1>>;
+#elif defined(KANE_CASE_rates_not_rates)
+using rates = kane::coordinate<1>;
+#elif defined(KANE_CASE_rates_not_speeds)
+using rates = kane::body_rates<u<1>, u<2>, kane::coordinate<3>>;
 #else
 using rates = kane::body_rates<u<1>, u<2>, u<3>>;
 #endif
