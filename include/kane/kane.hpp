@@ -17,4 +17,7 @@
 // the evaluator and the numbers of all of the above
 #include "kane/evaluation.hpp"
 
+// particles, rigid bodies, loads and Kane's dynamical equations
+#include "kane/dynamics.hpp"
+
 // Printing: #include <kane/print.hpp> (kept out of the core).

@@ -1,0 +1,6 @@
+// Dynamics (Kane's dynamical equations): particles, rigid bodies and loads;
+// M(q, t) u' = f(q, u, t) from the partial velocities.
+#pragma once
+
+#include "kane/dynamics/bodies.hpp"
+#include "kane/dynamics/equations.hpp"

@@ -1,0 +1,195 @@
+// What has mass, and what acts on it (the system of Kane's dynamical equations):
+//
+//   kane::particle<P, m>                          a mass m at the point P
+//   kane::inertia<F, Q, I11, I22, I33, I12, I23, I31>   a dyadic by its components in F, about Q
+//   kane::rigid_body<B, Bo, m, I>                 frame B, mass centre Bo, mass m, inertia I about Bo
+//   kane::force<P, R>                             R (a vector expression) applied at P
+//   kane::torque<B, T>                            a couple of torque T on B
+//   kane::gravity<g>                              m g at every particle and mass centre
+//   kane::system<items...>
+//
+// Masses and components are scalar expressions (a parameter, kane::literal(2.0),
+// kane::constant<1, 2>); loads are vector expressions of q, u, t and parameters.
+// The inertia's frame is fixed in the body and its point is the mass centre
+// (kane::parallel_axis moves a dyadic there); a force acts at a particle or at a
+// point fixed in a body, where its partial velocities are those of a mass.
+#pragma once
+
+#include <tuple>
+#include <type_traits>
+
+#include "kane/detail/frame_check.hpp"
+#include "kane/detail/tree.hpp"
+#include "kane/expressions/expr.hpp"
+#include "kane/expressions/vector.hpp"
+#include "kane/kinematics/derivative.hpp"
+#include "kane/kinematics/point.hpp"
+
+namespace kane {
+
+namespace detail {
+struct particle_tag {};
+struct body_tag {};
+struct load_tag {};
+struct inertia_tag {};
+
+// The edges between A and B turn by constant angles: B is fixed in A.
+template <class F>
+constexpr bool constant_edge() {
+  if constexpr (spin_edge<F> || matrix_edge<F>)
+    return false;
+  else
+    return std::is_same_v<std::remove_cv_t<decltype(ddt(F::step::angle))>, zero_t>;
+}
+template <class... F>
+constexpr bool constant_edges(list<F...>) {
+  return (constant_edge<F>() && ...);
+}
+template <class A, class B>
+constexpr bool fixed_frames() {
+  using p = path<A, B>;
+  if constexpr (!p::joined)
+    return false;
+  else
+    return constant_edges(typename p::up{}) && constant_edges(typename p::down{});
+}
+}  // namespace detail
+
+template <Point P, auto Mass>
+struct particle : detail::particle_tag {
+  static_assert(ScalarExpr<decltype(Mass)>, "kane: particle<P, m> takes a scalar expression m");
+  using point = P;
+  static constexpr auto mass = detail::freeze<Mass>();
+};
+
+// (I)_jk = f_j . I . f_k in F; about Q.
+template <Frame F, Point Q, auto I11, auto I22, auto I33, auto I12 = constant<0>{}, auto I23 = constant<0>{},
+          auto I31 = constant<0>{}>
+struct inertia : detail::inertia_tag {
+  static_assert((ScalarExpr<decltype(I11)> && ScalarExpr<decltype(I22)> && ScalarExpr<decltype(I33)> &&
+                 ScalarExpr<decltype(I12)> && ScalarExpr<decltype(I23)> && ScalarExpr<decltype(I31)>),
+                "kane: inertia<F, Q, I11, I22, I33, I12, I23, I31> takes scalar expressions");
+  using frame = F;
+  using about = Q;
+  static constexpr std::tuple components{detail::freeze<I11>(), detail::freeze<I22>(), detail::freeze<I33>(),
+                                         detail::freeze<I12>(), detail::freeze<I23>(), detail::freeze<I31>()};
+};
+
+template <Frame B, Point Bo, auto Mass, class I>
+struct rigid_body : detail::body_tag {
+  static_assert(ScalarExpr<decltype(Mass)>, "kane: rigid_body<B, Bo, m, I> takes a scalar expression m");
+  static_assert(std::derived_from<I, detail::inertia_tag>,
+                "kane: rigid_body<B, Bo, m, I> takes I = kane::inertia<F, Bo, ...>");
+  static_assert(detail::joined_frames<B, typename I::frame>::joined);
+  static_assert(
+      detail::check<detail::fixed_frames<B, typename I::frame>(),
+                    error::inertia_given_in_a_frame_that_turns_relative_to_the_body<typename I::frame, B>>);
+  static_assert(
+      detail::check<
+          std::is_same_v<typename I::about, Bo>,
+          error::inertia_about_another_point_than_the_mass_centre_use_parallel_axis<typename I::about, Bo>>);
+  using frame = B;
+  using centre = Bo;
+  using inertia_type = I;
+  static constexpr auto mass = detail::freeze<Mass>();
+};
+
+template <Point P, auto R>
+struct force : detail::load_tag {
+  static_assert(VectorExpr<decltype(R)>, "kane: force<P, R> takes a vector expression R");
+  using point = P;
+  static constexpr auto vector = detail::freeze<R>();
+};
+template <Frame B, auto T>
+struct torque : detail::load_tag {
+  static_assert(VectorExpr<decltype(T)>, "kane: torque<B, T> takes a vector expression T");
+  using frame = B;
+  static constexpr auto vector = detail::freeze<T>();
+};
+template <auto G>
+struct gravity : detail::load_tag {
+  static_assert(VectorExpr<decltype(G)>, "kane: gravity<g> takes a vector expression g");
+  static constexpr auto vector = detail::freeze<G>();
+};
+
+namespace detail {
+template <class T>
+inline constexpr bool is_particle = std::derived_from<T, particle_tag>;
+template <class T>
+inline constexpr bool is_body = std::derived_from<T, body_tag>;
+template <class T>
+inline constexpr bool is_force = requires {
+  typename T::point;
+}
+&&std::derived_from<T, load_tag>;
+template <class T>
+inline constexpr bool is_torque = requires {
+  typename T::frame;
+}
+&&std::derived_from<T, load_tag>;
+template <class T>
+inline constexpr bool is_gravity = std::derived_from<T, load_tag> && !is_force<T> && !is_torque<T>;
+
+// P is a particle's point, or its position from a mass centre is constant in that body.
+template <class P, class X>
+constexpr bool carries(X*) {
+  if constexpr (is_particle<X>)
+    return std::is_same_v<P, typename X::point>;
+  else if constexpr (is_body<X>) {
+    using cp = typename point_chain<P>::type;
+    using cq = typename point_chain<typename X::centre>::type;
+    if constexpr (std::is_void_v<typename first_common<cp, cq>::type>)
+      return false;
+    else
+      return is_zero_vector_v<decltype(ddt_in<typename X::frame>(position<typename X::centre, P>()))>;
+  } else
+    return false;
+}
+}  // namespace detail
+
+template <class... X>
+struct system {
+  static_assert(((detail::is_particle<X> || detail::is_body<X> ||
+                  std::derived_from<X, detail::load_tag>)&&...),
+                "kane: system<...> takes particles, rigid bodies and loads (force, torque, gravity)");
+  using items = detail::list<X...>;
+};
+
+namespace detail {
+// A force of Sys acts where its partial velocities are those of a mass.
+template <class F, class... X>
+constexpr bool force_applies(list<X...>) {
+  if constexpr (!is_force<F>)
+    return true;
+  else
+    return (carries<typename F::point>(static_cast<X*>(nullptr)) || ...);
+}
+template <class X>
+struct point_of {
+  using type = void;
+};
+template <class X>
+requires is_force<X>
+struct point_of<X> {
+  using type = typename X::point;
+};
+// The point of a particle, the mass centre of a body.
+template <class X>
+struct point_of_mass {
+  using type = typename X::point;
+};
+template <class X>
+requires is_body<X>
+struct point_of_mass<X> {
+  using type = typename X::centre;
+};
+template <class Sys, class... X>
+constexpr bool forces_checked(list<X...>) {
+  return (
+      check<force_applies<X>(typename Sys::items{}),
+            error::force_at_a_point_that_is_no_particle_and_fixed_in_no_body<typename point_of<X>::type>> &&
+      ...);
+}
+}  // namespace detail
+
+}  // namespace kane

@@ -1,0 +1,165 @@
+// Kane's dynamical equations Fr + Fr* = 0 for the speeds of the evaluator, as
+// M(q, t) u' = f(q, u, t), in the root frame N of the evaluator's tree:
+//   M_rs = sum m v_r . v_s + w_r . I . w_s
+//   f_r  = F_r - sum m v_r . a_0 + w_r . (I . alpha_0 + w x I . w)
+//   F_r  = sum v_r . R + w_r . T   (the generalized active forces)
+// over particles and rigid bodies (v of the particle or mass centre, w of the
+// body), with a_0 = a - sum_s v_s u_s' and alpha_0 = alpha - sum_s w_s u_s':
+// a and alpha are linear in u' with the partial velocities as coefficients, so
+// one evaluator pass at level::acceleration, at any u', gives M and f.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <utility>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include "kane/dynamics/bodies.hpp"
+#include "kane/evaluation/evaluate.hpp"
+#include "kane/evaluation/status.hpp"
+#include "kane/evaluation/tables.hpp"
+#include "kane/frames/vec.hpp"
+
+namespace kane {
+
+template <class S, std::size_t N>
+struct equations_of_motion {
+  Eigen::Matrix<S, int(N), int(N)> M;  // symmetric, positive definite for a system with mass in every speed
+  Eigen::Matrix<S, int(N), 1> f;
+  solve_status status;  // the evaluator's, or not_finite
+};
+
+namespace detail {
+template <class R, class X, class Ev>
+Eigen::Matrix<typename Ev::scalar, 3, 1> in_root(const X& x, const Ev& ev) {
+  return express<R>(x, ev).eigen();
+}
+// I in the root's components: C (I)_F C^T, C the columns e_F1, e_F2, e_F3.
+template <class I, class Ev>
+Eigen::Matrix<typename Ev::scalar, 3, 3> inertia_in_root(const Ev& ev) {
+  using S = typename Ev::scalar;
+  const auto& c = I::components;
+  const S i11 = eval_scalar(std::get<0>(c), ev), i22 = eval_scalar(std::get<1>(c), ev),
+          i33 = eval_scalar(std::get<2>(c), ev), i12 = eval_scalar(std::get<3>(c), ev),
+          i23 = eval_scalar(std::get<4>(c), ev), i31 = eval_scalar(std::get<5>(c), ev);
+  Eigen::Matrix<S, 3, 3> i;
+  i << i11, i12, i31, i12, i22, i23, i31, i23, i33;
+  if constexpr (std::is_void_v<typename I::frame::tree_parent>)
+    return i;
+  else {
+    const Eigen::Matrix<S, 3, 3> axes = ev.template axes<typename I::frame>();
+    return axes * i * axes.transpose();
+  }
+}
+template <class Ev>
+auto speed_rates(const Ev& ev) {  // u' of the evaluator's state
+  using S = typename Ev::scalar;
+  constexpr std::size_t n = speeds_of<Ev>::n;
+  Eigen::Matrix<S, int(n), 1> ud;
+  for (std::size_t r = 0; r < n; ++r)
+    ud(Eigen::Index(r)) = std::is_void_v<typename Ev::speed_set> ? ev.state().qdd[r] : ev.state().ud[r];
+  return ud;
+}
+}  // namespace detail
+
+// M and f of the system Sys at the evaluator's state (level::acceleration).
+template <class Sys, class Ev>
+requires detail::is_evaluator<Ev>::value equations_of_motion<typename Ev::scalar, detail::speeds_of<Ev>::n>
+mass_matrix_and_forcing(const Ev& ev) {
+  using S = typename Ev::scalar;
+  using R = typename Ev::root;
+  constexpr std::size_t n = detail::speeds_of<Ev>::n;
+  static_assert(detail::forces_checked<Sys>(typename Sys::items{}));
+  equations_of_motion<S, n> out{Eigen::Matrix<S, int(n), int(n)>::Zero(), Eigen::Matrix<S, int(n), 1>::Zero(),
+                                ev.status()};
+  const auto ud = detail::speed_rates(ev);
+  Eigen::Matrix<S, 3, 1> g = Eigen::Matrix<S, 3, 1>::Zero();
+  [&]<class... X>(detail::list<X...>) {
+    (
+        [&] {
+          if constexpr (detail::is_gravity<X>) g += detail::in_root<R>(X::vector, ev);
+        }(),
+        ...);
+  }(typename Sys::items{});
+  const auto mass = [&](const auto& point_velocity, const auto& point_acceleration, const auto& m) {
+    const auto v = partial_velocities<R>(point_velocity, ev);
+    const Eigen::Matrix<S, 3, 1> a0 = detail::in_root<R>(point_acceleration, ev) - v * ud;
+    const S ms = detail::eval_scalar(m, ev);
+    out.M.noalias() += ms * v.transpose() * v;
+    out.f.noalias() += ms * v.transpose() * (g - a0);
+  };
+  [&]<class... X>(detail::list<X...>) {
+    (
+        [&] {
+          if constexpr (detail::is_particle<X>) {
+            using P = typename X::point;
+            mass(velocity<R, P>(), acceleration<R, P>(), X::mass);
+          } else if constexpr (detail::is_body<X>) {
+            using B = typename X::frame;
+            using P = typename X::centre;
+            mass(velocity<R, P>(), acceleration<R, P>(), X::mass);
+            const auto w = partial_velocities<R>(angular_velocity<R, B>(), ev);
+            const Eigen::Matrix<S, 3, 3> i = detail::inertia_in_root<typename X::inertia_type>(ev);
+            const Eigen::Matrix<S, 3, 1> omega = detail::in_root<R>(angular_velocity<R, B>(), ev);
+            const Eigen::Matrix<S, 3, 1> alpha0 =
+                detail::in_root<R>(angular_acceleration<R, B>(), ev) - w * ud;
+            out.M.noalias() += w.transpose() * i * w;
+            out.f.noalias() -= w.transpose() * (i * alpha0 + omega.cross(i * omega));
+          } else if constexpr (detail::is_force<X>) {
+            const auto v = partial_velocities<R>(velocity<R, typename X::point>(), ev);
+            out.f.noalias() += v.transpose() * detail::in_root<R>(X::vector, ev);
+          } else if constexpr (detail::is_torque<X>) {
+            const auto w = partial_velocities<R>(angular_velocity<R, typename X::frame>(), ev);
+            out.f.noalias() += w.transpose() * detail::in_root<R>(X::vector, ev);
+          }
+        }(),
+        ...);
+  }(typename Sys::items{});
+  if (out.status == solve_status::ok && !(out.M.allFinite() && out.f.allFinite()))
+    out.status = solve_status::not_finite;
+  return out;
+}
+
+// u' = M^-1 f by a Cholesky factorization of fixed size; singular if M is not
+// positive definite (a speed that moves no mass), with NaN.
+template <class S, std::size_t N>
+std::pair<Eigen::Matrix<S, int(N), 1>, solve_status> speed_derivatives(const equations_of_motion<S, N>& e) {
+  Eigen::Matrix<S, int(N), 1> ud = Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN());
+  if (e.status != solve_status::ok) return {ud, e.status};
+  const Eigen::LLT<Eigen::Matrix<S, int(N), int(N)>> llt(e.M);
+  if (llt.info() != Eigen::Success) return {ud, solve_status::singular};
+  ud = llt.solve(e.f);
+  if (!ud.allFinite())
+    return {Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN()),
+            solve_status::not_finite};
+  return {ud, solve_status::ok};
+}
+
+// T = sum m v . v / 2 + w . I . w / 2 at the evaluator's state (level::velocity or higher).
+template <class Sys, class Ev>
+requires detail::is_evaluator<Ev>::value typename Ev::scalar kinetic_energy(const Ev& ev) {
+  using S = typename Ev::scalar;
+  using R = typename Ev::root;
+  S t = S(0);
+  [&]<class... X>(detail::list<X...>) {
+    (
+        [&] {
+          if constexpr (detail::is_particle<X> || detail::is_body<X>) {
+            using P = typename detail::point_of_mass<X>::type;
+            const Eigen::Matrix<S, 3, 1> v = detail::in_root<R>(velocity<R, P>(), ev);
+            t += detail::eval_scalar(X::mass, ev) * v.squaredNorm() / 2;
+          }
+          if constexpr (detail::is_body<X>) {
+            const Eigen::Matrix<S, 3, 1> w = detail::in_root<R>(angular_velocity<R, typename X::frame>(), ev);
+            t += w.dot(detail::inertia_in_root<typename X::inertia_type>(ev) * w) / 2;
+          }
+        }(),
+        ...);
+  }(typename Sys::items{});
+  return t;
+}
+
+}  // namespace kane

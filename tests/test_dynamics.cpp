@@ -1,0 +1,134 @@
+// Kane's dynamical equations (dynamics/): closed forms first, then SymPy's
+// KanesMethod (tests/data/gen_dynamics.py) for a 3D double pendulum of rigid
+// links and for a free rigid body.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include <kane/kane.hpp>
+
+namespace {
+using kane::e;
+template <std::size_t I>
+using q = kane::coordinate<I>;
+struct L_ : kane::parameter<1> {};
+struct m_ : kane::parameter<2> {};
+struct g_ : kane::parameter<3> {};
+constexpr L_ L;
+constexpr m_ m;
+constexpr g_ g;
+
+// a pendulum: a particle at L below O on a rod turning about n1 by q1
+struct N : kane::root_frame {};
+struct A : kane::frame<N, kane::simple<kane::axis::x, q<1>>> {};
+struct O : kane::origin<N> {};
+struct P : kane::point<O, -L * e<A, 3>> {};
+using pendulum = kane::system<kane::particle<P, m>, kane::gravity<-g * e<N, 3>>>;
+using state1 = kane::state<double, 1, 1, 3>;
+using eval1 = kane::evaluator<state1, kane::frames<A>, kane::level::acceleration, kane::qdot_speeds<1>>;
+}  // namespace
+
+TEST_CASE("dynamics: a pendulum, m L^2 q'' = -m g L sin q") {
+  state1 s;
+  s.p = {0.7, 2.0, 9.81};
+  s.q = {0.4};
+  s.u = {1.3};
+  s.ud = {5.0};  // any u': M and f do not depend on it
+  eval1 ev;
+  ev.update(s);
+  const auto eom = kane::mass_matrix_and_forcing<pendulum>(ev);
+  REQUIRE(eom.status == kane::solve_status::ok);
+  CHECK(eom.M(0, 0) == Approx(2.0 * 0.49).epsilon(1e-15));
+  CHECK(eom.f(0) == Approx(-2.0 * 9.81 * 0.7 * std::sin(0.4)).epsilon(1e-14));
+  const auto [ud, st] = kane::speed_derivatives(eom);
+  CHECK(st == kane::solve_status::ok);
+  CHECK(ud(0) == Approx(-9.81 / 0.7 * std::sin(0.4)).epsilon(1e-14));
+  CHECK(kane::kinetic_energy<pendulum>(ev) == Approx(0.5 * 2.0 * 0.49 * 1.3 * 1.3).epsilon(1e-15));
+}
+
+#include "../examples/models/free_body.hpp"
+#include "data/sympy_dynamics.hpp"
+
+namespace {
+// SymPy's 3D double pendulum: A about n1 by q1, B about a2 by q2; rigid links with full
+// inertia about their mass centres, a particle at the tip, a spring and damper at the joint,
+// air drag at the tip. Parameters in the order of sympy_dynamics::pendulum_p.
+namespace pd {
+template <std::size_t I>
+inline constexpr kane::parameter<I> p{};
+struct A : kane::frame<N, kane::simple<kane::axis::x, q<1>>> {};
+struct B : kane::frame<A, kane::simple<kane::axis::y, q<2>>> {};
+struct Ao : kane::point<O, -p<1> * kane::constant<1, 2>{} * e<A, 3>> {};
+struct J : kane::point<O, -p<1> * e<A, 3>> {};
+struct Bo : kane::point<J, -p<2> * kane::constant<1, 2>{} * e<B, 3>> {};
+struct Q : kane::point<J, -p<2> * e<B, 3>> {};
+inline constexpr auto spring = (p<19> * kane::q<2> + p<20> * kane::u<2>)*e<A, 2>;
+using system = kane::system<
+    kane::rigid_body<A, Ao, p<3>, kane::inertia<A, Ao, p<6>, p<7>, p<8>, p<9>, p<10>, p<11>>>,
+    kane::rigid_body<B, Bo, p<4>, kane::inertia<B, Bo, p<12>, p<13>, p<14>, p<15>, p<16>, p<17>>>,
+    kane::particle<Q, p<5>>, kane::gravity<-p<18> * e<N, 3>>, kane::torque<B, -spring>,
+    kane::torque<A, spring>, kane::force<Q, -p<21> * kane::velocity<N, Q>()>>;
+using state = kane::state<double, 2, 2, 21>;
+using evaluator = kane::evaluator<state, kane::frames<B>, kane::level::acceleration, kane::qdot_speeds<2>>;
+}  // namespace pd
+
+// SymPy's free body with body rates u1..u3 and the mass centre's velocity u4..u6, here by
+// Euler parameters (examples/models/free_body.hpp, p1..p3 = a, b, c of the point P where
+// the force acts); m, the inertia about Bo in B, g, the torque in B and the force in N after them.
+namespace fb {
+namespace m = models::free_body;
+template <std::size_t I>
+inline constexpr kane::parameter<I> p{};
+using system = kane::system<
+    kane::rigid_body<m::B, m::Bo, p<4>, kane::inertia<m::B, m::Bo, p<5>, p<6>, p<7>, p<8>, p<9>, p<10>>>,
+    kane::gravity<-p<11> * e<m::N, 3>>,
+    kane::torque<m::B, p<12> * e<m::B, 1> + p<13> * e<m::B, 2> + p<14> * e<m::B, 3>>,
+    kane::force<m::P, p<15> * e<m::N, 1> + p<16> * e<m::N, 2> + p<17> * e<m::N, 3>>>;
+using state = kane::state<double, 7, 6, 17>;
+using evaluator = kane::evaluator<state, kane::frames<m::B>, kane::level::acceleration, m::speeds>;
+using B = m::B;
+}  // namespace fb
+}  // namespace
+
+TEST_CASE("dynamics: a 3D double pendulum with springs, dampers and drag against SymPy's KanesMethod") {
+  for (const auto& x : sympy_dynamics::pendulum) {
+    pd::state s;
+    for (int i = 0; i < 21; ++i) s.p[i] = sympy_dynamics::pendulum_p[i];
+    s.q = {x.q[0], x.q[1]};
+    s.u = {x.u[0], x.u[1]};
+    s.ud = {0.3, -7.0};
+    pd::evaluator ev;
+    ev.update(s);
+    const auto eom = kane::mass_matrix_and_forcing<pd::system>(ev);
+    REQUIRE(eom.status == kane::solve_status::ok);
+    for (int i = 0; i < 4; ++i) CHECK(eom.M(i / 2, i % 2) == Approx(x.M[i]).epsilon(1e-13));
+    for (int i = 0; i < 2; ++i) CHECK(eom.f(i) == Approx(x.f[i]).epsilon(1e-13));
+    const auto [ud, st] = kane::speed_derivatives(eom);
+    REQUIRE(st == kane::solve_status::ok);
+    for (int i = 0; i < 2; ++i) CHECK(ud(i) == Approx(x.ud[i]).epsilon(1e-13));
+    CHECK(kane::kinetic_energy<pd::system>(ev) == Approx(x.T).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("dynamics: a free body with Euler parameters, a torque and a force against SymPy's KanesMethod") {
+  for (const auto& x : sympy_dynamics::body) {
+    fb::state s;
+    // the Euler parameters of the attitude: ^N P^B = dcm, the rotation that maps B's components to N's is its
+    // transpose
+    const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> c(x.dcm);
+    const Eigen::Quaterniond e(Eigen::Matrix3d(c.transpose()));
+    s.q = {e.w(), e.x(), e.y(), e.z(), x.q[3], x.q[4], x.q[5]};
+    for (int i = 0; i < 6; ++i) s.u[i] = x.u[i];
+    const auto& bp = sympy_dynamics::body_p;  // m, I.., g, t.. (p4..p14); a, b, c (p1..p3); f.. (p15..p17)
+    for (int i = 0; i < 17; ++i) s.p[i] = i < 3 ? bp[11 + i] : i < 14 ? bp[i - 3] : bp[i];
+    fb::evaluator ev;
+    ev.update(s);
+    REQUIRE((ev.axes<fb::B>().transpose() - c).norm() < 1e-14);
+    const auto eom = kane::mass_matrix_and_forcing<fb::system>(ev);
+    REQUIRE(eom.status == kane::solve_status::ok);
+    for (int i = 0; i < 36; ++i) CHECK(eom.M(i / 6, i % 6) == Approx(x.M[i]).margin(1e-14));
+    for (int i = 0; i < 6; ++i) CHECK(eom.f(i) == Approx(x.f[i]).margin(1e-13));
+    const auto [ud, st] = kane::speed_derivatives(eom);
+    for (int i = 0; i < 6; ++i) CHECK(ud(i) == Approx(x.ud[i]).margin(1e-13));
+    CHECK(kane::kinetic_energy<fb::system>(ev) == Approx(x.T).epsilon(1e-14));
+  }
+}
