@@ -46,30 +46,13 @@ TEST_CASE("dynamics: a pendulum, m L^2 q'' = -m g L sin q") {
 }
 
 #include "../examples/models/free_body.hpp"
+#include "../examples/models/pendulum3d.hpp"
 #include "data/sympy_dynamics.hpp"
 
 namespace {
-// SymPy's 3D double pendulum: A about n1 by q1, B about a2 by q2; rigid links with full
-// inertia about their mass centres, a particle at the tip, a spring and damper at the joint,
-// air drag at the tip. Parameters in the order of sympy_dynamics::pendulum_p.
-namespace pd {
-template <std::size_t I>
-inline constexpr kane::parameter<I> p{};
-struct A : kane::frame<N, kane::simple<kane::axis::x, q<1>>> {};
-struct B : kane::frame<A, kane::simple<kane::axis::y, q<2>>> {};
-struct Ao : kane::point<O, -p<1> * kane::constant<1, 2>{} * e<A, 3>> {};
-struct J : kane::point<O, -p<1> * e<A, 3>> {};
-struct Bo : kane::point<J, -p<2> * kane::constant<1, 2>{} * e<B, 3>> {};
-struct Q : kane::point<J, -p<2> * e<B, 3>> {};
-inline constexpr auto spring = (p<19> * kane::q<2> + p<20> * kane::u<2>)*e<A, 2>;
-using system = kane::system<
-    kane::rigid_body<A, Ao, p<3>, kane::inertia<A, Ao, p<6>, p<7>, p<8>, p<9>, p<10>, p<11>>>,
-    kane::rigid_body<B, Bo, p<4>, kane::inertia<B, Bo, p<12>, p<13>, p<14>, p<15>, p<16>, p<17>>>,
-    kane::particle<Q, p<5>>, kane::gravity<-p<18> * e<N, 3>>, kane::torque<B, -spring>,
-    kane::torque<A, spring>, kane::force<Q, -p<21> * kane::velocity<N, Q>()>>;
-using state = kane::state<double, 2, 2, 21>;
-using evaluator = kane::evaluator<state, kane::frames<B>, kane::level::acceleration, kane::qdot_speeds<2>>;
-}  // namespace pd
+// SymPy's 3D double pendulum (examples/models/pendulum3d.hpp), parameters in the order of
+// sympy_dynamics::pendulum_p.
+namespace pd = models::pendulum3d;
 
 // SymPy's free body with body rates u1..u3 and the mass centre's velocity u4..u6, here by
 // Euler parameters (examples/models/free_body.hpp, p1..p3 = a, b, c of the point P where
@@ -106,6 +89,7 @@ TEST_CASE("dynamics: a 3D double pendulum with springs, dampers and drag against
     REQUIRE(st == kane::solve_status::ok);
     for (int i = 0; i < 2; ++i) CHECK(ud(i) == Approx(x.ud[i]).epsilon(1e-13));
     CHECK(kane::kinetic_energy<pd::system>(ev) == Approx(x.T).epsilon(1e-14));
+    CHECK(kane::evaluate(pd::potential, ev) == Approx(x.V).epsilon(1e-14));
   }
 }
 

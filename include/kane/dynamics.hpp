@@ -4,3 +4,4 @@
 
 #include "kane/dynamics/bodies.hpp"
 #include "kane/dynamics/equations.hpp"
+#include "kane/dynamics/motion.hpp"

@@ -1,0 +1,53 @@
+// The equations of motion as a right-hand side for any integrator: x = (q, u),
+// dx/dt = (q', u') with q' = W u + X (the kinematic equations of the speeds,
+// nq != nu where orientations need it) and u' = M^-1 f.
+//
+//   kane::motion<System, Evaluator> rhs(s);   // parameters (and all else) from the state s
+//   rhs(x, dxdt, t);                           // Boost.Odeint's signature; x: nq + nu numbers
+//
+// x and dxdt are any containers with operator[] and nq + nu entries
+// (std::array, Eigen vectors or maps, plain arrays); no allocation. status()
+// is that of the last call: when it is not ok, dxdt is NaN.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+
+#include "kane/dynamics/equations.hpp"
+
+namespace kane {
+
+template <class Sys, class Ev>
+class motion {
+ public:
+  using state_type = typename Ev::state_type;
+  using scalar = typename Ev::scalar;
+  static constexpr std::size_t nq = state_type::nq, nu = detail::speeds_of<Ev>::n, size = nq + nu;
+
+  explicit motion(const state_type& s) : s_(s) { s_.ud = {}; }
+
+  template <class X, class DX>
+  void operator()(const X& x, DX& dxdt, scalar t) {
+    for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
+    for (std::size_t i = 0; i < nu; ++i) s_.u[i] = x[nq + i];
+    s_.t = t;
+    ev_.update(s_);
+    const auto [ud, status] = speed_derivatives(mass_matrix_and_forcing<Sys>(ev_));
+    const auto qd = ev_.coordinate_rates();
+    status_ = status;
+    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
+    for (std::size_t i = 0; i < nq; ++i) dxdt[i] = status == solve_status::ok ? qd[i] : nan;
+    for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = ud(Eigen::Index(i));
+  }
+
+  solve_status status() const { return status_; }
+  // The evaluator at the last call's state (energies, positions, ...).
+  const Ev& evaluator() const { return ev_; }
+
+ private:
+  state_type s_;
+  Ev ev_;
+  solve_status status_ = solve_status::ok;
+};
+
+}  // namespace kane

@@ -1,0 +1,53 @@
+// Systems of Kane's dynamical equations: an inertia in a frame fixed in its body, about
+// its mass centre; forces at particles or at points fixed in bodies.
+// Each case is a misuse (#ifdef) and its fix (#else).
+// case inertia_in_turning_frame: inertia_given_in_a_frame_that_turns_relative_to_the_body<.*A, .*B>
+// case inertia_about_other_point: inertia_about_another_point_than_the_mass_centre_use_parallel_axis<.*J, .*Bo>
+// case force_at_massless_point: force_at_a_point_that_is_no_particle_and_fixed_in_no_body<.*S>
+// case particle_mass_not_scalar: kane: particle<P, m> takes a scalar expression m
+// case inertia_not_inertia: kane: rigid_body<B, Bo, m, I> takes I = kane::inertia<F, Bo, ...>
+#include <kane/kane.hpp>
+
+template <std::size_t I>
+using q = kane::coordinate<I>;
+template <std::size_t I>
+inline constexpr kane::parameter<I> p{};
+using kane::e;
+struct N : kane::root_frame {};
+struct A : kane::frame<N, kane::simple<kane::axis::x, q<1>>> {};
+struct B : kane::frame<A, kane::simple<kane::axis::y, q<2>>> {};
+struct T : kane::frame<B, kane::simple<kane::axis::z, kane::constant<1, 3>>> {};  // fixed in B
+struct O : kane::origin<N> {};
+struct J : kane::point<O, -p<1> * e<A, 3>> {};
+struct Bo : kane::point<J, -p<2> * e<B, 3>> {};
+struct S : kane::point<O, p<2> * e<A, 1> + kane::q<2> * e<N, 2>> {};  // on no body
+#ifdef KANE_CASE_inertia_in_turning_frame
+using inertia = kane::inertia<A, Bo, p<4>, p<4>, p<5>>;
+#elif defined(KANE_CASE_inertia_about_other_point)
+using inertia = kane::inertia<T, J, p<4>, p<4>, p<5>>;
+#else
+using inertia = kane::inertia<T, Bo, p<4>, p<4>, p<5>>;
+#endif
+#ifdef KANE_CASE_inertia_not_inertia
+using body = kane::rigid_body<B, Bo, p<3>, T>;
+#else
+using body = kane::rigid_body<B, Bo, p<3>, inertia>;
+#endif
+#ifdef KANE_CASE_particle_mass_not_scalar
+using tip = kane::particle<J, e<N, 1>>;
+#else
+using tip = kane::particle<J, p<6>>;
+#endif
+#ifdef KANE_CASE_force_at_massless_point
+using push = kane::force<S, p<7> * e<N, 1>>;
+#else
+using push = kane::force<Bo, p<7> * e<N, 1>>;
+#endif
+using sys = kane::system<body, tip, push, kane::gravity<-p<8> * e<N, 3>>>;
+
+double use() {
+  kane::state<double, 2, 2, 8> s;
+  kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, kane::qdot_speeds<2>> ev;
+  ev.update(s);
+  return kane::mass_matrix_and_forcing<sys>(ev).M(0, 0);
+}
