@@ -15,6 +15,7 @@
 #include "../examples/models/disc.hpp"
 #include "../examples/models/fourbar.hpp"
 #include "../examples/models/free_body.hpp"
+#include "../examples/models/pendulum3d.hpp"
 
 namespace warnings {
 using kane::cross;
@@ -238,6 +239,23 @@ S spins_and_attitudes(const kane::state<S, 6>& s6) {
          S(unit_rates::rotation(a));
 }
 
+// Kane's dynamical equations and the right-hand side for integrators.
+template <class S>
+S dynamics(const kane::state<S, 6>& s6) {
+  namespace m = models::pendulum3d;
+  kane::state<S, 2, 2, 21> s;
+  s.q = {s6.q[0], s6.q[1]};
+  s.p.fill(S(1));
+  kane::evaluator<decltype(s), kane::frames<m::B>, kane::level::acceleration, kane::qdot_speeds<2>> ev;
+  ev.update(s);
+  const auto eom = kane::mass_matrix_and_forcing<m::system>(ev);
+  const auto ud = kane::speed_derivatives(eom).first;
+  kane::motion<m::system, decltype(ev)> rhs(s);
+  std::array<S, 4> x{}, dx{};
+  rhs(x, dx, S(0));
+  return eom.M.sum() + ud.sum() + kane::kinetic_energy<m::system>(ev) + dx[3];
+}
+
 // Printing.
 template <class S>
 std::string printing(const state6<S>& s) {
@@ -254,7 +272,7 @@ std::string printing(const state6<S>& s) {
 template <class S>
 S all(const state6<S>& s, const kane::state<S, 6>& s6) {
   return frames_and_vectors(s) + kinematics(s) + speeds(s) + arm(s6) + fourbar(s6) + free_body(s6) +
-         spins_and_attitudes(s6) + S(printing(s).size());
+         spins_and_attitudes(s6) + dynamics(s6) + S(printing(s).size());
 }
 
 template float all<float>(const state6<float>&, const kane::state<float, 6>&);

@@ -143,23 +143,23 @@ template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value typename Ev::scalar kinetic_energy(const Ev& ev) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
-  S t = S(0);
+  S energy = S(0);
   [&]<class... X>(detail::list<X...>) {
     (
         [&] {
           if constexpr (detail::is_particle<X> || detail::is_body<X>) {
             using P = typename detail::point_of_mass<X>::type;
             const Eigen::Matrix<S, 3, 1> v = detail::in_root<R>(velocity<R, P>(), ev);
-            t += detail::eval_scalar(X::mass, ev) * v.squaredNorm() / 2;
+            energy += detail::eval_scalar(X::mass, ev) * v.squaredNorm() / 2;
           }
           if constexpr (detail::is_body<X>) {
             const Eigen::Matrix<S, 3, 1> w = detail::in_root<R>(angular_velocity<R, typename X::frame>(), ev);
-            t += w.dot(detail::inertia_in_root<typename X::inertia_type>(ev) * w) / 2;
+            energy += w.dot(detail::inertia_in_root<typename X::inertia_type>(ev) * w) / 2;
           }
         }(),
         ...);
   }(typename Sys::items{});
-  return t;
+  return energy;
 }
 
 }  // namespace kane

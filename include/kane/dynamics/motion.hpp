@@ -27,10 +27,10 @@ class motion {
   explicit motion(const state_type& s) : s_(s) { s_.ud = {}; }
 
   template <class X, class DX>
-  void operator()(const X& x, DX& dxdt, scalar t) {
+  void operator()(const X& x, DX& dxdt, scalar time) {
     for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
     for (std::size_t i = 0; i < nu; ++i) s_.u[i] = x[nq + i];
-    s_.t = t;
+    s_.t = time;
     ev_.update(s_);
     const auto [ud, status] = speed_derivatives(mass_matrix_and_forcing<Sys>(ev_));
     const auto qd = ev_.coordinate_rates();
