@@ -1,8 +1,9 @@
-// The rolling disc and the 6-revolute arm as two C functions: compiled for a
-// Cortex-M4 with arm-none-eabi-g++ -fno-exceptions -fno-rtti -Os, in float
+// The rolling disc, the 6-revolute arm and the 3D double pendulum's equations of motion as C functions:
+// compiled for a Cortex-M4 with arm-none-eabi-g++ -fno-exceptions -fno-rtti -Os, in float
 // (KANE_EMBEDDED_SCALAR=float) or double, and run by the zero-allocation test.
 #include "../examples/models/arm6.hpp"
 #include "../examples/models/disc.hpp"
+#include "../examples/models/pendulum3d.hpp"
 
 #ifndef KANE_EMBEDDED_SCALAR
 #define KANE_EMBEDDED_SCALAR double
@@ -50,4 +51,17 @@ extern "C" int disc_step(const real* q, const real* u, real radius, real* out) {
       kane::nonholonomic_remainder<disc::N, disc::rolling>(kane::velocity<disc::N, disc::Centre5>(), ev, sol);
   for (int i = 0; i < 3; ++i) out[15 + i] = t(i);
   return sol.status == kane::solve_status::ok ? 0 : 1;
+}
+
+// Kane's equations of the 3D double pendulum as a right-hand side: x = (q, u) -> (q', u') (4 each).
+extern "C" int pendulum_step(const real* x, const real* p, real* dxdt) {
+  namespace m = models::pendulum3d;
+  using state = kane::state<real, 2, 2, 21>;
+  using evaluator =
+      kane::evaluator<state, kane::frames<m::B>, kane::level::acceleration, kane::qdot_speeds<2>>;
+  state s;
+  for (int i = 0; i < 21; ++i) s.p[i] = p[i];
+  kane::motion<m::system, evaluator> rhs(s);
+  rhs(x, dxdt, real(0));
+  return rhs.status() == kane::solve_status::ok ? 0 : 1;
 }

@@ -1,7 +1,8 @@
 // Evaluating kinematics allocates nothing: the global allocation functions
 // are replaced by counting ones, and the kernels of benchmarks/embedded.cpp
 // (everything of the 6-revolute arm; the rolling disc's constraints and
-// nonholonomic partial velocities) run between two readings of the counter.
+// nonholonomic partial velocities; M, f and u' of the 3D double pendulum through
+// kane::motion) run between two readings of the counter.
 // A plain program (no test framework allocating in between).
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 
 extern "C" void arm_step(const double* q, const double* qd, const double* qdd, double* out);
 extern "C" int disc_step(const double* q, const double* u, double radius, double* out);
+extern "C" int pendulum_step(const double* x, const double* p, double* dxdt);
 
 namespace {
 long allocations = 0;
@@ -29,16 +31,20 @@ int main() {
   const double q[6] = {0.1, -0.4, 0.8, 0.3, -1.2, 0.6}, qd[6] = {0.5, 0.2, -0.3, 1.0, 0.4, -0.7},
                qdd[6] = {0.1, -0.2, 0.3, -0.1, 0.2, 0.05};
   const double dq[5] = {0.3, 0.2, 1.0, 2.0, -1.0}, du[5] = {0.5, -1.5, 0.8, 0, 0};
-  double arm[42], disc[18];
+  double arm[42], disc[18], dx[4];
+  const double x[4] = {1.2, -0.7, 0.5, 2.0},
+               p[21] = {1.5,  1.4, 0.9, 1.0,  1.2,   0.7,   0.8,  0.9, 0.07, -0.06, 0.07,
+                        0.66, 1.2, 1.0, 0.02, -0.03, -0.03, 9.81, 1.5, 0.2,  0.1};
 
   const long before = allocations;
   arm_step(q, qd, qdd, arm);
-  const int status = disc_step(dq, du, 0.25, disc);
+  const int status = disc_step(dq, du, 0.25, disc) + pendulum_step(x, p, dx);
   const long counted = allocations - before;
 
   double sink = 0;
   for (double x : arm) sink += x;
   for (double x : disc) sink += x;
+  for (double v : dx) sink += v;
   std::printf("allocations during evaluation: %ld (checksum %.6f)\n", counted, sink);
   return counted == 0 && status == 0 ? 0 : 1;
 }
