@@ -5,7 +5,7 @@
 // zero, so the centre moves with ^N w^R x r l3.
 // Five coordinates: the contact point at q4 n1 + q5 n2, u4 = q4', u5 = q5';
 // two nonholonomic constraints (the disc's contact point is at rest in N)
-// make u4, u5 dependent.
+// make u4, u5 dependent. The dynamics: a uniform thin disc of mass m under gravity g.
 #pragma once
 
 #include <kane/kane.hpp>
@@ -16,7 +16,11 @@ using kane::e;
 template <std::size_t I>
 using q = kane::coordinate<I>;
 struct r_ : kane::parameter<1> {};
+struct m_ : kane::parameter<2> {};
+struct g_ : kane::parameter<3> {};
 inline constexpr r_ r;
+inline constexpr m_ m;
+inline constexpr g_ g;
 
 struct N : kane::root_frame {};
 struct Y : kane::frame<N, kane::simple<kane::axis::z, q<1>>> {};  // yaw
@@ -38,4 +42,10 @@ using speeds5 = kane::angular_velocity_speeds<N, R, L, kane::dt(kane::q<4>), kan
 inline constexpr auto v_below = kane::body_point_velocity<N, R, Centre5, Below>();
 using rolling =
     kane::nonholonomic<speeds5, kane::dependent<4, 5>, dot(v_below, e<N, 1>), dot(v_below, e<N, 2>)>;
+// The disc's dynamics: mass m (p2), inertia m r^2/4 about r1, r3 and m r^2/2 about r2, gravity g (p3).
+inline constexpr auto diametral = kane::constant<1, 4>{} * m * r * r;
+using system = kane::system<
+    kane::rigid_body<R, Centre5, m, kane::inertia<R, Centre5, diametral, 2 * diametral, diametral>>,
+    kane::gravity<-g * e<N, 3>>>;
+inline constexpr auto height = dot(kane::position<O, Centre5>(), e<N, 3>);  // V = m g height
 }  // namespace models::disc

@@ -16,6 +16,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <Eigen/LU>
 
 #include "kane/dynamics/bodies.hpp"
 #include "kane/evaluation/evaluate.hpp"
@@ -120,6 +121,53 @@ mass_matrix_and_forcing(const Ev& ev) {
   }(typename Sys::items{});
   if (out.status == solve_status::ok && !(out.M.allFinite() && out.f.allFinite()))
     out.status = solve_status::not_finite;
+  return out;
+}
+
+// Kane's equations of a nonholonomic system (seed eq. 22) for its p independent
+// speeds: with u_dep = A u_ind + B (sol, of the constraints NH at ev's state),
+// u' = T u_ind' + b, T = [1; A] (rows in speed order) and b = u_dep' at u_ind' = 0
+// from the differentiated constraints, C u' + (C' u + c0') = 0; then
+// M~ = T^T M T and f~ = T^T (f - M b): the equations along the nonholonomic partial
+// velocities v~_r (the constraint forces do no work there). u_dep' = A u_ind' + b_dep.
+template <class S, std::size_t N, std::size_t P>
+struct reduced_equations {
+  equations_of_motion<S, P> reduced;   // M~ u_ind' = f~
+  Eigen::Matrix<S, int(N), int(P)> T;  // u' = T u_ind' + b
+  Eigen::Matrix<S, int(N), 1> b;
+};
+template <class Sys, class NH, class Ev, class Sol>
+requires detail::is_evaluator<Ev>::value reduced_equations<typename Ev::scalar, NH::n, NH::p>
+reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
+  using S = typename Ev::scalar;
+  constexpr std::size_t n = NH::n, p = NH::p, m = NH::m;
+  static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
+  const auto full = mass_matrix_and_forcing<Sys>(ev);
+  const auto ud = detail::speed_rates(ev);
+  reduced_equations<S, n, p> out;
+  out.T.setZero();
+  out.b.setZero();
+  for (std::size_t k = 0; k < p; ++k) out.T(Eigen::Index(NH::independents[k] - 1), Eigen::Index(k)) = S(1);
+  Eigen::Matrix<S, int(m), 1> rest;  // C' u + c0' = dt(c) - C u'
+  detail::static_for<m>([&](auto k) {
+    constexpr auto dc = dt(std::get<k>(NH::equations));
+    rest(Eigen::Index(k)) = detail::eval_scalar(dc, ev);
+  });
+  rest -= sol.C * ud;
+  Eigen::Matrix<S, int(m), int(m)> dep;
+  for (std::size_t j = 0; j < m; ++j)
+    dep.col(Eigen::Index(j)) = sol.C.col(Eigen::Index(NH::dependents[j] - 1));
+  const Eigen::Matrix<S, int(m), 1> bd = -dep.partialPivLu().solve(rest);
+  for (std::size_t j = 0; j < m; ++j) {
+    const auto row = Eigen::Index(NH::dependents[j] - 1);
+    out.T.row(row) = sol.A.row(Eigen::Index(j));
+    out.b(row) = bd(Eigen::Index(j));
+  }
+  out.reduced.M.noalias() = out.T.transpose() * full.M * out.T;
+  out.reduced.f.noalias() = out.T.transpose() * (full.f - full.M * out.b);
+  out.reduced.status = full.status != solve_status::ok ? full.status : sol.status;
+  if (out.reduced.status == solve_status::ok && !(out.reduced.M.allFinite() && out.reduced.f.allFinite()))
+    out.reduced.status = solve_status::not_finite;
   return out;
 }
 

@@ -4,6 +4,7 @@
 //
 //   kane::motion<System, Evaluator> rhs(s);   // parameters (and all else) from the state s
 //   rhs(x, dxdt, t);                           // Boost.Odeint's signature; x: nq + nu numbers
+//   kane::constrained_motion<System, NH, Evaluator>  // nonholonomic: x = (q, u_ind)
 //
 // x and dxdt are any containers with operator[] and nq + nu entries
 // (std::array, Eigen vectors or maps, plain arrays); no allocation. status()
@@ -43,6 +44,50 @@ class motion {
   solve_status status() const { return status_; }
   // The evaluator at the last call's state (energies, positions, ...).
   const Ev& evaluator() const { return ev_; }
+
+ private:
+  state_type s_;
+  Ev ev_;
+  solve_status status_ = solve_status::ok;
+};
+
+// A nonholonomic system (constraints NH): x = (q, u_ind), p independent speeds;
+// at each call u_dep = A u_ind + B, then u_ind' from Kane's reduced equations.
+template <class Sys, class NH, class Ev>
+class constrained_motion {
+ public:
+  using state_type = typename Ev::state_type;
+  using scalar = typename Ev::scalar;
+  static constexpr std::size_t nq = state_type::nq, p = NH::p, size = nq + p;
+
+  explicit constrained_motion(const state_type& s) : s_(s) { s_.ud = {}; }
+
+  template <class X, class DX>
+  void operator()(const X& x, DX& dxdt, scalar time) {
+    for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
+    for (std::size_t k = 0; k < p; ++k) s_.u[NH::independents[k] - 1] = x[nq + k];
+    for (std::size_t j = 0; j < NH::m; ++j) s_.u[NH::dependents[j] - 1] = scalar(0);
+    s_.t = time;
+    ev_.update(s_);  // A and B depend on q and t alone
+    const auto sol = solve_constraints<NH>(ev_);
+    for (std::size_t j = 0; j < NH::m; ++j) {
+      scalar u = sol.B(Eigen::Index(j));
+      for (std::size_t k = 0; k < p; ++k) u += sol.A(Eigen::Index(j), Eigen::Index(k)) * x[nq + k];
+      s_.u[NH::dependents[j] - 1] = u;
+    }
+    ev_.update(s_);
+    const auto [ud, status] = speed_derivatives(reduced_mass_matrix_and_forcing<Sys, NH>(ev_, sol).reduced);
+    const auto qd = ev_.coordinate_rates();
+    status_ = status;
+    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
+    for (std::size_t i = 0; i < nq; ++i) dxdt[i] = status == solve_status::ok ? qd[i] : nan;
+    for (std::size_t k = 0; k < p; ++k) dxdt[nq + k] = ud(Eigen::Index(k));
+  }
+
+  solve_status status() const { return status_; }
+  const Ev& evaluator() const { return ev_; }
+  // The state of the last call, its dependent speeds solved.
+  const state_type& state() const { return s_; }
 
  private:
   state_type s_;
