@@ -165,3 +165,29 @@ TEST_CASE("dynamics: the disc turns steadily where the closed form says so") {
     for (int i = 3; i < 5; ++i) CHECK(ud(i) == Approx(x.ud[i]).epsilon(1e-12));
   }
 }
+
+TEST_CASE("dynamics: the free body obeys Newton's and Euler's equations") {
+  for (const auto& x : sympy_dynamics::body) {
+    fb::state s;
+    const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> c(x.dcm);
+    const Eigen::Quaterniond e(Eigen::Matrix3d(c.transpose()));
+    s.q = {e.w(), e.x(), e.y(), e.z(), 0.1, 0.2, 0.3};
+    for (int i = 0; i < 6; ++i) s.u[i] = x.u[i];
+    s.p = {0.3, -0.2, 0.5, 1.7, 0.8, 0.9, 1.1, 0.05, -0.03, 0.07, 9.81, 0.4, -0.6, 0.2, 1.5, -0.5, 2.5};
+    fb::evaluator ev;
+    ev.update(s);
+    const auto [ud, st] = kane::speed_derivatives(kane::mass_matrix_and_forcing<fb::system>(ev));
+    REQUIRE(st == kane::solve_status::ok);
+    // I w' + w x I w = t + r x F (in B), m a = F + m g (in N)
+    Eigen::Matrix3d i;
+    i << 0.8, 0.05, 0.07, 0.05, 0.9, -0.03, 0.07, -0.03, 1.1;
+    const Eigen::Vector3d w(s.u[0], s.u[1], s.u[2]), r(0.3, -0.2, 0.5), f_n(1.5, -0.5, 2.5),
+        f_b = c * f_n, t(0.4, -0.6, 0.2);
+    const Eigen::Vector3d wd = i.inverse() * (t + r.cross(f_b) - w.cross(i * w));
+    const Eigen::Vector3d a = f_n / 1.7 - Eigen::Vector3d(0, 0, 9.81);
+    for (int k = 0; k < 3; ++k) {
+      CHECK(ud(k) == Approx(wd(k)).margin(1e-13));
+      CHECK(ud(3 + k) == Approx(a(k)).margin(1e-13));
+    }
+  }
+}
