@@ -16,6 +16,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include "kane/dynamics/bodies.hpp"
