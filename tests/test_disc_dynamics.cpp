@@ -1,0 +1,54 @@
+// Kane's equations of a nonholonomic system (dynamics/equations.hpp, reduced): the rolling
+// disc of examples/models/disc.hpp against SymPy's KanesMethod (tests/data/gen_disc_dynamics.py)
+// and the closed-form condition of steady turning.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "../examples/models/disc.hpp"
+#include "data/sympy_disc_dynamics.hpp"
+
+namespace {
+namespace dd = models::disc;
+using disc_state = kane::state<double, 5, 5, 3>;
+using disc_evaluator =
+    kane::evaluator<disc_state, kane::frames<dd::R>, kane::level::acceleration, dd::speeds5>;
+
+// u' of all five speeds by Kane's reduced equations at (q, u).
+Eigen::Matrix<double, 5, 1> disc_rates(const double (&q)[5], const double (&u)[5], double* t = nullptr,
+                                       double* v = nullptr) {
+  disc_state s;
+  for (int i = 0; i < 5; ++i) s.q[i] = q[i], s.u[i] = u[i];
+  for (int i = 0; i < 3; ++i) s.p[i] = sympy_disc_dynamics::p[i];
+  disc_evaluator ev;
+  ev.update(s);
+  const auto sol = kane::solve_constraints<dd::rolling>(ev);
+  REQUIRE(sol.status == kane::solve_status::ok);
+  CHECK((sol.A * Eigen::Vector3d(u[0], u[1], u[2]) + sol.B - Eigen::Vector2d(u[3], u[4])).norm() < 1e-14);
+  const auto eq = kane::reduced_mass_matrix_and_forcing<dd::system, dd::rolling>(ev, sol);
+  const auto [ui, st] = kane::speed_derivatives(eq.reduced);
+  REQUIRE(st == kane::solve_status::ok);
+  if (t) *t = kane::kinetic_energy<dd::system>(ev);
+  if (v) *v = s.p[1] * s.p[2] * kane::evaluate(dd::height, ev);
+  return eq.T * ui + eq.b;
+}
+}  // namespace
+
+TEST_CASE("dynamics: the rolling disc's reduced equations against SymPy's KanesMethod") {
+  for (const auto& x : sympy_disc_dynamics::disc) {
+    double t = 0, v = 0;
+    const auto ud = disc_rates(x.q, x.u, &t, &v);
+    for (int i = 0; i < 5; ++i) CHECK(ud(i) == Approx(x.ud[i]).epsilon(1e-12).margin(1e-13));
+    CHECK(t == Approx(x.T).epsilon(1e-14));
+    CHECK(v == Approx(x.V).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("dynamics: the disc turns steadily where the closed form says so") {
+  for (const auto& x : sympy_disc_dynamics::steady) {
+    const auto ud = disc_rates(x.q, x.u);
+    CHECK(std::abs(ud(0)) < 1e-13);  // u2 = sin(theta) (W^2 r cos(theta) - 4 g) / (6 W r cos(theta))
+    CHECK(std::abs(ud(1)) < 1e-13);
+    CHECK(std::abs(ud(2)) < 1e-13);
+    for (int i = 3; i < 5; ++i) CHECK(ud(i) == Approx(x.ud[i]).epsilon(1e-12));
+  }
+}
