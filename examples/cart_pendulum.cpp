@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "models/cart_pendulum.hpp"
+#include "rk4.hpp"
 
 namespace m = models::cart_pendulum;
 using rhs = kane::motion<m::system, m::evaluator>;
@@ -15,7 +16,7 @@ int main(int argc, char** argv) {
   m::state s;
   s.p = {0.5, 0.4, 1.5, 9.81};  // l, m, mc, g
   rhs f(s);
-  vector x = {0.0, 0.6, 0.9, -0.4, 0.3, 0.0, 0.5, -1.0}, k1, k2, k3, k4, y;
+  vector x = {0.0, 0.6, 0.9, -0.4, 0.3, 0.0, 0.5, -1.0}, k1;
   const auto energy = [&] {
     return kane::kinetic_energy<m::system>(f.evaluator()) + kane::evaluate(m::potential, f.evaluator());
   };
@@ -35,15 +36,7 @@ int main(int argc, char** argv) {
   bool ok = f.status() == kane::solve_status::ok;
   for (int step = 0; step < 10000 && ok; ++step) {
     const double t = step * dt;
-    const auto at = [&](const vector& k, double h) {
-      for (std::size_t i = 0; i < x.size(); ++i) y[i] = x[i] + h * k[i];
-      return y;
-    };
-    f(x, k1, t);
-    f(at(k1, dt / 2), k2, t + dt / 2);
-    f(at(k2, dt / 2), k3, t + dt / 2);
-    f(at(k3, dt), k4, t + dt);
-    for (std::size_t i = 0; i < x.size(); ++i) x[i] += dt / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+    rk4_step(f, x, t, dt);
     f(x, k1, t + dt);
     ok = f.status() == kane::solve_status::ok;
     drift = std::fmax(drift, std::abs(energy() - e0) / std::abs(e0));

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "models/pendulum3d.hpp"
+#include "rk4.hpp"
 
 namespace m = models::pendulum3d;
 using rhs = kane::motion<m::system, m::evaluator>;
@@ -23,7 +24,7 @@ int main(int argc, char** argv) {
   s.p = {1.5,  1.4, 0.9, 1.0,  1.2,   0.7,   0.8,  0.9, 0.07, -0.06, 0.07,
          0.66, 1.2, 1.0, 0.02, -0.03, -0.03, 9.81, 1.5, 0,    0};
   rhs f(s);
-  vector x = {1.2, -0.7, 0.5, 2.0}, k1, k2, k3, k4, y;
+  vector x = {1.2, -0.7, 0.5, 2.0}, k1;
   FILE* csv = argc > 1 ? std::fopen(argv[1], "w") : nullptr;
   if (csv) std::fprintf(csv, "t,q1,q2,u1,u2,E\n");
   const double dt = 1e-3;
@@ -33,15 +34,7 @@ int main(int argc, char** argv) {
   bool ok = f.status() == kane::solve_status::ok;
   for (int step = 0; step < 10000 && ok; ++step) {
     const double t = step * dt;
-    const auto at = [&](const vector& k, double h) {
-      for (std::size_t i = 0; i < x.size(); ++i) y[i] = x[i] + h * k[i];
-      return y;
-    };
-    f(x, k1, t);
-    f(at(k1, dt / 2), k2, t + dt / 2);
-    f(at(k2, dt / 2), k3, t + dt / 2);
-    f(at(k3, dt), k4, t + dt);
-    for (std::size_t i = 0; i < x.size(); ++i) x[i] += dt / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+    rk4_step(f, x, t, dt);
     f(x, k1, t + dt);  // the evaluator at the new state
     ok = f.status() == kane::solve_status::ok;
     const double e = energy(f);

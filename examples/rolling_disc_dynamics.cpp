@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "models/disc.hpp"
+#include "rk4.hpp"
 
 namespace d = models::disc;
 using state = kane::state<double, 5, 5, 3>;
@@ -20,7 +21,7 @@ int main(int argc, char** argv) {
   s.p = {0.3, 1.2, 9.81};  // r, m, g
   rhs f(s);
   // yaw, lean, spin angle, contact x, y; then u1, u2, u3 (lean rate, spin rate, about l3)
-  vector x = {0.0, 0.25, 0.0, 0.0, 0.0, 0.4, -8.0, 1.5}, k1, k2, k3, k4, y;
+  vector x = {0.0, 0.25, 0.0, 0.0, 0.0, 0.4, -8.0, 1.5}, k1;
   const auto energy = [&] {
     const auto& ev = f.evaluator();
     return kane::kinetic_energy<d::system>(ev) + 1.2 * 9.81 * kane::evaluate(d::height, ev);
@@ -34,15 +35,7 @@ int main(int argc, char** argv) {
   bool ok = f.status() == kane::solve_status::ok;
   for (int step = 0; step < 10000 && ok; ++step) {
     const double t = step * dt;
-    const auto at = [&](const vector& k, double h) {
-      for (std::size_t i = 0; i < x.size(); ++i) y[i] = x[i] + h * k[i];
-      return y;
-    };
-    f(x, k1, t);
-    f(at(k1, dt / 2), k2, t + dt / 2);
-    f(at(k2, dt / 2), k3, t + dt / 2);
-    f(at(k3, dt), k4, t + dt);
-    for (std::size_t i = 0; i < x.size(); ++i) x[i] += dt / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+    rk4_step(f, x, t, dt);
     f(x, k1, t + dt);
     ok = f.status() == kane::solve_status::ok;
     drift = std::fmax(drift, std::abs(energy() - e0) / std::abs(e0));

@@ -10,6 +10,7 @@
 
 #include "../examples/models/free_body.hpp"
 #include "../examples/models/pendulum3d.hpp"
+#include "../examples/rk4.hpp"
 
 namespace {
 namespace pd = models::pendulum3d;
@@ -31,22 +32,11 @@ TEST_CASE("odeint: runge_kutta4 over kane::motion is kane's RK4") {
          0.66, 1.2, 1.0, 0.02, -0.03, -0.03, 9.81, 1.5, 0.2,  0.1};
   using rhs = kane::motion<pd::system, pd::evaluator>;
   using vector = std::array<double, rhs::size>;
-  vector x = {1.2, -0.7, 0.5, 2.0}, y = x, k1, k2, k3, k4, z;
+  vector x = {1.2, -0.7, 0.5, 2.0}, y = x;
   boost::numeric::odeint::integrate_const(boost::numeric::odeint::runge_kutta4<vector>(), rhs(s), x, 0.0, 1.0,
                                           1e-3);
   rhs f(s);
-  for (int step = 0; step < 1000; ++step) {
-    const double t = step * 1e-3, h = 1e-3;
-    const auto at = [&](const vector& k, double a) {
-      for (std::size_t i = 0; i < y.size(); ++i) z[i] = y[i] + a * k[i];
-      return z;
-    };
-    f(y, k1, t);
-    f(at(k1, h / 2), k2, t + h / 2);
-    f(at(k2, h / 2), k3, t + h / 2);
-    f(at(k3, h), k4, t + h);
-    for (std::size_t i = 0; i < y.size(); ++i) y[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
-  }
+  for (int step = 0; step < 1000; ++step) rk4_step(f, y, step * 1e-3, 1e-3);
   for (std::size_t i = 0; i < x.size(); ++i) CHECK(x[i] == Approx(y[i]).margin(1e-12));
 }
 
