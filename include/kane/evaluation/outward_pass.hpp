@@ -39,20 +39,12 @@ class outward_pass {
   using root = typename at<closure, 0>::type;
   static constexpr std::size_t size = detail::size<closure>::value;
   using matrix3 = Eigen::Matrix<scalar, 3, 3>;
-  using vector3 = Eigen::Matrix<scalar, 3, 1>;
 
   // Columns e_F1, e_F2, e_F3 in the root's components: (^R P^F)^T.
   template <class F>
   Eigen::Map<const matrix3> axes() const {
     static_assert(check<!spin_edge<F>, error::a_spinning_frame_has_no_known_axes_but_its_spin_axis<F>>);
     return Eigen::Map<const matrix3>(c_[index<F>()].data());
-  }
-  template <class F>
-  Eigen::Map<const vector3> omega() const {
-    static_assert(
-        Level >= level::velocity,
-        "kane: this evaluator computes no angular velocities; declare it with level::velocity or higher");
-    return Eigen::Map<const vector3>(w_[index<F>()].data());
   }
   // ^R w^F and ^R alpha^F as values, for F held or one edge below a held frame
   // (from the parent's and the edge's rates: F's own axes are not needed).
@@ -75,14 +67,6 @@ class outward_pass {
       return load3(a_[index<F>()].data());
     else
       return alpha_below<F>(rates);
-  }
-
-  template <class F>
-  Eigen::Map<const vector3> alpha() const {
-    static_assert(
-        Level >= level::acceleration,
-        "kane: this evaluator computes no angular accelerations; declare it with level::acceleration");
-    return Eigen::Map<const vector3>(a_[index<F>()].data());
   }
 
  protected:
