@@ -20,4 +20,7 @@
 // particles, rigid bodies, loads and Kane's dynamical equations
 #include "kane/dynamics.hpp"
 
+// linearization about a state by exact (forward-mode) derivatives
+#include "kane/linearization.hpp"
+
 // Printing: #include <kane/print.hpp> (kept out of the core).

@@ -1,0 +1,6 @@
+// Linearization: exact first derivatives by jets through the evaluator; A, B of
+// x' = f(x, r) and the second-order form M u' + C u + K q = B r.
+#pragma once
+
+#include "kane/linearization/jet.hpp"
+#include "kane/linearization/linearize.hpp"

@@ -1,0 +1,208 @@
+// Linearization of Kane's equations about a state, exact (forward-mode jets
+// through the same evaluator; no differences):
+//
+//   auto lin = kane::linearize<Sys, Ev>(s);                 // x = (q, u)
+//   auto lin = kane::linearize<Sys, Ev, kane::inputs<k>>(s);  // k: a parameter
+//   auto lin = kane::linearize_constrained<Sys, NH, Ev, H>(s);  // x = (q_ind, u_ind)
+//   dx' = lin.A dx + lin.B dr,  lin.rate = x' at s
+//
+// Inputs r are parameter slots (a specified torque's magnitude, say). For a
+// nonholonomic system NH the state is (q_ind, u_ind): the dependent speeds are
+// A u_ind + B of the constraints at every perturbed state, and the dependent
+// coordinates of H (void: none) follow q_ind through the constraints' Jacobian
+// (the implicit function theorem, one Newton step on jets); s must close H.
+//
+// linearize_equations gives the second-order form of the reduced equations
+// M u' + C u + K q_ind = B r about s with u' fixed at its value there:
+// M = M~, C = d(M~ u' - f~)/du_ind, K = d(M~ u' - f~)/dq_ind, B = -d(..)/dr.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+#include <Eigen/Core>
+
+#include "kane/dynamics/motion.hpp"
+#include "kane/evaluation/configuration.hpp"
+#include "kane/linearization/jet.hpp"
+
+namespace kane {
+
+template <auto... P>
+struct inputs {
+  static constexpr std::size_t n = sizeof...(P);
+  static constexpr std::array<std::size_t, n> slots{std::remove_cvref_t<decltype(P)>::index...};
+};
+
+template <class S, std::size_t NX, std::size_t NR>
+struct linear_model {
+  Eigen::Matrix<S, int(NX), int(NX)> A;
+  Eigen::Matrix<S, int(NX), int(NR)> B;
+  Eigen::Matrix<S, int(NX), 1> rate;  // x' at the state
+  solve_status status;
+};
+
+template <class S, std::size_t P, std::size_t NQ, std::size_t NR>
+struct linear_equations {
+  Eigen::Matrix<S, int(P), int(P)> M, C;
+  Eigen::Matrix<S, int(P), int(NQ)> K;
+  Eigen::Matrix<S, int(P), int(NR)> B;
+  solve_status status;
+};
+
+namespace detail {
+template <class St, class T>
+struct rebind_state;
+template <class S, std::size_t NQ, std::size_t NU, std::size_t NP, class T>
+struct rebind_state<state<S, NQ, NU, NP>, T> {
+  using type = state<T, NQ, NU, NP>;
+};
+template <class Ev, class T>
+struct rebind_evaluator;
+template <class St, class Fr, level L, class Sp, class T>
+struct rebind_evaluator<evaluator<St, Fr, L, Sp>, T> {
+  using type = evaluator<typename rebind_state<St, T>::type, Fr, L, Sp>;
+};
+// The state s in jets of N directions, every number constant.
+template <std::size_t N, class St>
+auto lift(const St& s) {
+  using J = jet<typename St::scalar, N>;
+  typename rebind_state<St, J>::type out;
+  const auto copy = [](auto& to, const auto& from) {
+    for (std::size_t i = 0; i < from.size(); ++i) to[i] = J(from[i]);
+  };
+  copy(out.q, s.q), copy(out.qd, s.qd), copy(out.qdd, s.qdd), copy(out.u, s.u), copy(out.ud, s.ud);
+  copy(out.p, s.p);
+  out.t = J(s.t);
+  return out;
+}
+template <class In, class J, class St>
+void seed_inputs(St& s, std::size_t first) {
+  for (std::size_t k = 0; k < In::n; ++k)
+    s.p[In::slots[k] - 1] = J::variable(s.p[In::slots[k] - 1].v, first + k);
+}
+template <class H>
+struct dependents_of {
+  static constexpr std::size_t m = 0;
+  static constexpr std::array<std::size_t, 0> dependents{};
+};
+template <class H>
+requires(!std::is_void_v<H>) struct dependents_of<H> : H {
+};
+template <class H, std::size_t NQ>
+constexpr auto independent_coordinates() {
+  std::array<std::size_t, NQ - dependents_of<H>::m> out{};
+  std::size_t k = 0;
+  for (std::size_t i = 1; i <= NQ; ++i) {
+    bool dep = false;
+    for (std::size_t d : dependents_of<H>::dependents) dep = dep || d == i;
+    if (!dep) out[k++] = i;
+  }
+  return out;
+}
+// The jet state of x = (q_ind, u_ind) and the inputs at s: q_dep by one Newton step.
+template <class Sys, class NH, class Ev, class H, class In>
+auto constrained_point(const typename Ev::state_type& s, solve_status& status) {
+  constexpr std::size_t nq = Ev::state_type::nq;
+  constexpr auto qi = independent_coordinates<H, nq>();
+  constexpr std::size_t nx = qi.size() + NH::p, n = nx + In::n;
+  using J = jet<typename Ev::scalar, n>;
+  using JEv = typename rebind_evaluator<Ev, J>::type;
+  auto js = lift<n>(s);
+  for (std::size_t k = 0; k < qi.size(); ++k) js.q[qi[k] - 1] = J::variable(s.q[qi[k] - 1], k);
+  seed_inputs<In, J>(js, nx);
+  JEv ev;
+  status = solve_status::ok;
+  if constexpr (!std::is_void_v<H>) {  // q_dep -= J^-1 f: at a root, dq_dep = -J^-1 df/dq_ind dq_ind
+    const auto r = solve_configuration<H>(ev, js, {J(-1), 1});
+    if (r.status != solve_status::not_converged) status = r.status;
+  }
+  std::array<J, nq + NH::p> x{};
+  for (std::size_t i = 0; i < nq; ++i) x[i] = js.q[i];
+  for (std::size_t k = 0; k < NH::p; ++k)
+    x[nq + k] = J::variable(s.u[NH::independents[k] - 1], qi.size() + k);
+  return std::pair{js, x};
+}
+}  // namespace detail
+
+// x = (q, u) of an unconstrained system; the derivatives of x' = (W u + X, M^-1 f).
+template <class Sys, class Ev, class In = inputs<>>
+auto linearize(const typename Ev::state_type& s) {
+  using S = typename Ev::scalar;
+  constexpr std::size_t nq = Ev::state_type::nq, nu = detail::speeds_of<Ev>::n, nx = nq + nu, n = nx + In::n;
+  using J = jet<S, n>;
+  auto js = detail::lift<n>(s);
+  detail::seed_inputs<In, J>(js, nx);
+  motion<Sys, typename detail::rebind_evaluator<Ev, J>::type> rhs(js);
+  std::array<J, nx> x, dx;
+  for (std::size_t i = 0; i < nq; ++i) x[i] = J::variable(s.q[i], i);
+  for (std::size_t i = 0; i < nu; ++i) x[nq + i] = J::variable(s.u[i], nq + i);
+  rhs(x, dx, js.t);
+  linear_model<S, nx, In::n> out;
+  for (std::size_t i = 0; i < nx; ++i) {
+    out.rate(Eigen::Index(i)) = dx[i].v;
+    for (std::size_t j = 0; j < nx; ++j) out.A(Eigen::Index(i), Eigen::Index(j)) = dx[i].d[j];
+    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(i), Eigen::Index(k)) = dx[i].d[nx + k];
+  }
+  out.status = rhs.status();
+  return out;
+}
+
+// x = (q_ind, u_ind) of a nonholonomic system NH with holonomic constraints H.
+template <class Sys, class NH, class Ev, class H = void, class In = inputs<>>
+auto linearize_constrained(const typename Ev::state_type& s) {
+  using S = typename Ev::scalar;
+  constexpr std::size_t nq = Ev::state_type::nq;
+  constexpr auto qi = detail::independent_coordinates<H, nq>();
+  constexpr std::size_t nx = qi.size() + NH::p, n = nx + In::n;
+  using J = jet<S, n>;
+  solve_status status;
+  auto [js, x] = detail::constrained_point<Sys, NH, Ev, H, In>(s, status);
+  constrained_motion<Sys, NH, typename detail::rebind_evaluator<Ev, J>::type> rhs(js);
+  std::array<J, nq + NH::p> dx;
+  rhs(x, dx, js.t);
+  linear_model<S, nx, In::n> out;
+  for (std::size_t i = 0; i < nx; ++i) {
+    const J& r = i < qi.size() ? dx[qi[i] - 1] : dx[nq + i - qi.size()];
+    out.rate(Eigen::Index(i)) = r.v;
+    for (std::size_t j = 0; j < nx; ++j) out.A(Eigen::Index(i), Eigen::Index(j)) = r.d[j];
+    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(i), Eigen::Index(k)) = r.d[nx + k];
+  }
+  out.status = status != solve_status::ok ? status : rhs.status();
+  return out;
+}
+
+// M u' + C u + K q_ind = B r: Kane's reduced equations linearized about s, u' held.
+template <class Sys, class NH, class Ev, class H = void, class In = inputs<>>
+auto linearize_equations(const typename Ev::state_type& s) {
+  using S = typename Ev::scalar;
+  constexpr std::size_t nq = Ev::state_type::nq, p = NH::p;
+  constexpr auto qi = detail::independent_coordinates<H, nq>();
+  constexpr std::size_t nx = qi.size() + p, n = nx + In::n;
+  using J = jet<S, n>;
+  solve_status status;
+  auto [js, x] = detail::constrained_point<Sys, NH, Ev, H, In>(s, status);
+  constrained_motion<Sys, NH, typename detail::rebind_evaluator<Ev, J>::type> rhs(js);
+  std::array<J, nq + p> dx;
+  rhs(x, dx, js.t);  // the dependent speeds; the point's u'
+  const auto& ev = rhs.evaluator();
+  const auto eq = reduced_mass_matrix_and_forcing<Sys, NH>(ev, solve_constraints<NH>(ev)).reduced;
+  linear_equations<S, p, qi.size(), In::n> out;
+  for (std::size_t r = 0; r < p; ++r) {
+    J res = -eq.f(Eigen::Index(r));
+    for (std::size_t c = 0; c < p; ++c) {
+      const J& m = eq.M(Eigen::Index(r), Eigen::Index(c));
+      out.M(Eigen::Index(r), Eigen::Index(c)) = m.v;
+      res += m * J(dx[nq + c].v);
+    }
+    for (std::size_t j = 0; j < qi.size(); ++j) out.K(Eigen::Index(r), Eigen::Index(j)) = res.d[j];
+    for (std::size_t c = 0; c < p; ++c) out.C(Eigen::Index(r), Eigen::Index(c)) = res.d[qi.size() + c];
+    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(r), Eigen::Index(k)) = -res.d[nx + k];
+  }
+  out.status = status != solve_status::ok ? status : rhs.status();
+  return out;
+}
+
+}  // namespace kane
