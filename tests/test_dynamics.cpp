@@ -142,3 +142,35 @@ TEST_CASE("dynamics: the free body obeys Newton's and Euler's equations") {
     }
   }
 }
+
+namespace {
+// a body A turning about n1 at O, its mass centre off the axis, inertia given about O
+struct Ac : kane::point<O, kane::parameter<4>{} * e<A, 1> - kane::constant<1, 2>{} * L * e<A, 3>> {};
+template <std::size_t I>
+constexpr kane::parameter<I> pp{};
+using about_o = kane::inertia<A, O, pp<5>, pp<6>, pp<7>, pp<8>, pp<9>, pp<10>>;
+using moved = kane::parallel_axis<about_o, Ac, m>;
+using rod = kane::system<kane::rigid_body<A, Ac, m, moved>>;
+using state10 = kane::state<double, 1, 1, 10>;
+using eval10 = kane::evaluator<state10, kane::frames<A>, kane::level::acceleration, kane::qdot_speeds<1>>;
+}  // namespace
+
+TEST_CASE("dynamics: parallel_axis moves an inertia about O to the mass centre") {
+  state10 s;
+  const double l = 0.8, mass = 2.5, x = 0.3;
+  s.p = {l, mass, 9.81, x, 1.1, 1.3, 0.4, 0.05, -0.07, 0.09};
+  s.q = {0.6};
+  s.u = {0.0};
+  eval10 ev;
+  ev.update(s);
+  const auto c = moved::components;
+  const double d1 = x, d3 = -l / 2;
+  CHECK(kane::evaluate(std::get<0>(c), ev) == Approx(1.1 - mass * d3 * d3).epsilon(1e-15));
+  CHECK(kane::evaluate(std::get<1>(c), ev) == Approx(1.3 - mass * (d3 * d3 + d1 * d1)).epsilon(1e-15));
+  CHECK(kane::evaluate(std::get<2>(c), ev) == Approx(0.4 - mass * d1 * d1).epsilon(1e-15));
+  CHECK(kane::evaluate(std::get<3>(c), ev) == Approx(0.05).epsilon(1e-15));
+  CHECK(kane::evaluate(std::get<4>(c), ev) == Approx(-0.07).epsilon(1e-15));
+  CHECK(kane::evaluate(std::get<5>(c), ev) == Approx(0.09 + mass * d3 * d1).epsilon(1e-15));
+  // about the fixed axis n1 = a1 through O: M = (I_O)_11
+  CHECK(kane::mass_matrix_and_forcing<rod>(ev).M(0, 0) == Approx(1.1).epsilon(1e-14));
+}

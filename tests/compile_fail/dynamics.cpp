@@ -4,6 +4,7 @@
 // case inertia_in_turning_frame: inertia_given_in_a_frame_that_turns_relative_to_the_body<.*A, .*B>
 // case inertia_about_other_point: inertia_about_another_point_than_the_mass_centre_use_parallel_axis<.*J, .*Bo>
 // case force_at_massless_point: force_at_a_point_that_is_no_particle_and_fixed_in_no_body<.*S>
+// case wheel_inertia_not_symmetric: inertia_given_in_a_frame_that_turns_relative_to_the_body<.*B, .*W>
 // case particle_mass_not_scalar: kane: particle<P, m> takes a scalar expression m
 // case inertia_not_inertia: kane: rigid_body<B, Bo, m, I> takes I = kane::inertia<F, Bo, ...>
 #include <kane/kane.hpp>
@@ -43,6 +44,14 @@ using push = kane::force<S, p<7> * e<N, 1>>;
 #else
 using push = kane::force<Bo, p<7> * e<N, 1>>;
 #endif
+// a wheel spinning in B about b2: its inertia may be given in B if symmetric about b2
+struct W : kane::frame<B, kane::spin<kane::axis::y, kane::speed<3>>> {};
+#ifdef KANE_CASE_wheel_inertia_not_symmetric
+using wheel = kane::rigid_body<W, Bo, p<3>, kane::inertia<B, Bo, p<4>, p<5>, p<6>>>;
+#else
+using wheel = kane::rigid_body<W, Bo, p<3>, kane::inertia<B, Bo, p<4>, p<5>, p<4>>>;
+#endif
+static_assert(sizeof(wheel) > 0);
 using sys = kane::system<body, tip, push, kane::gravity<-p<8> * e<N, 3>>>;
 
 double use() {

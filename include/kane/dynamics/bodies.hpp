@@ -2,6 +2,7 @@
 //
 //   kane::particle<P, m>                          a mass m at the point P
 //   kane::inertia<F, Q, I11, I22, I33, I12, I23, I31>   a dyadic by its components in F, about Q
+//   kane::parallel_axis<I, G, m>                  I moved to the mass centre G of mass m
 //   kane::rigid_body<B, Bo, m, I>                 frame B, mass centre Bo, mass m, inertia I about Bo
 //   kane::force<P, R>                             R (a vector expression) applied at P
 //   kane::torque<B, T>                            a couple of torque T on B
@@ -10,7 +11,8 @@
 //
 // Masses and components are scalar expressions (a parameter, kane::literal(2.0),
 // kane::constant<1, 2>); loads are vector expressions of q, u, t and parameters.
-// The inertia's frame is fixed in the body and its point is the mass centre
+// The inertia's frame is fixed in the body (or B spins in it about an axis of
+// symmetry of I: a wheel, kane::spin) and its point is the mass centre
 // (kane::parallel_axis moves a dyadic there); a force acts at a particle or at a
 // point fixed in a body, where its partial velocities are those of a mass.
 #pragma once
@@ -45,6 +47,26 @@ template <class... F>
 constexpr bool constant_edges(list<F...>) {
   return (constant_edge<F>() && ...);
 }
+// B spins relative to F about a coordinate axis k of both, and I (in F) is
+// symmetric about k: equal moments about the other two axes (the same
+// expression), no products. I has the same components in B (a wheel).
+template <class B, class I>
+constexpr bool spins_symmetric() {
+  using F = typename I::frame;
+  if constexpr (!requires { B::step::speed_index; } || !std::is_same_v<typename B::tree_parent, F>)
+    return false;
+  else {
+    constexpr int k = unit_axis<typename B::step::axis>::principal;
+    using c = std::remove_cvref_t<decltype(I::components)>;
+    using i11 = std::tuple_element_t<0, c>;
+    using i22 = std::tuple_element_t<1, c>;
+    using i33 = std::tuple_element_t<2, c>;
+    constexpr bool products = is_zero_v<std::tuple_element_t<3, c>> &&
+                              is_zero_v<std::tuple_element_t<4, c>> && is_zero_v<std::tuple_element_t<5, c>>;
+    return products && ((k == 0 && std::is_same_v<i22, i33>) || (k == 1 && std::is_same_v<i11, i33>) ||
+                        (k == 2 && std::is_same_v<i11, i22>));
+  }
+}
 template <class A, class B>
 constexpr bool fixed_frames() {
   using p = path<A, B>;
@@ -75,15 +97,36 @@ struct inertia : detail::inertia_tag {
                                          detail::freeze<I12>(), detail::freeze<I23>(), detail::freeze<I31>()};
 };
 
+namespace detail {
+// I_G = I_Q - m (|d|^2 1 - d d), d = r^QG in F's components (fixed in F).
+template <class I, class G, auto Mass>
+struct moved_inertia {
+  using F = typename I::frame;
+  static constexpr auto d = position<typename I::about, G>();
+  static_assert(is_zero_vector_v<decltype(ddt_in<F>(d))>,
+                "kane: parallel_axis<I, G, m> needs the mass centre G fixed in the frame of I");
+  static constexpr auto m = freeze<Mass>();
+  static constexpr auto d1 = dot(d, e<F, 1>), d2 = dot(d, e<F, 2>), d3 = dot(d, e<F, 3>);
+  static constexpr auto c = I::components;
+  using type = inertia<F, G, std::get<0>(c) - m*(d2* d2 + d3 * d3), std::get<1>(c) - m*(d3* d3 + d1 * d1),
+                       std::get<2>(c) - m*(d1* d1 + d2 * d2), std::get<3>(c) + m * d1 * d2,
+                       std::get<4>(c) + m * d2 * d3, std::get<5>(c) + m * d3 * d1>;
+};
+}  // namespace detail
+
+// The inertia I (about any point Q) moved to the mass centre G of mass m.
+template <class I, Point G, auto Mass>
+using parallel_axis = typename detail::moved_inertia<I, G, Mass>::type;
+
 template <Frame B, Point Bo, auto Mass, class I>
 struct rigid_body : detail::body_tag {
   static_assert(ScalarExpr<decltype(Mass)>, "kane: rigid_body<B, Bo, m, I> takes a scalar expression m");
   static_assert(std::derived_from<I, detail::inertia_tag>,
                 "kane: rigid_body<B, Bo, m, I> takes I = kane::inertia<F, Bo, ...>");
   static_assert(detail::joined_frames<B, typename I::frame>::joined);
-  static_assert(
-      detail::check<detail::fixed_frames<B, typename I::frame>(),
-                    error::inertia_given_in_a_frame_that_turns_relative_to_the_body<typename I::frame, B>>);
+  static_assert(detail::check < detail::fixed_frames<B, typename I::frame>() ||
+                    detail::spins_symmetric<B, I>(),
+                error::inertia_given_in_a_frame_that_turns_relative_to_the_body < typename I::frame, B >>);
   static_assert(
       detail::check<
           std::is_same_v<typename I::about, Bo>,
