@@ -15,6 +15,8 @@
 // wheel) dependent on u4 (roll), u6 (steer) and u7 (rear wheel).
 #pragma once
 
+#include <cmath>
+
 #include <kane/kane.hpp>
 
 namespace models::bicycle {
@@ -66,4 +68,73 @@ using rolling =
                        dot(v_bf, e<Y, 1>), dot(v_bf, e<Y, 2>), kane::dt(ground)>;
 using state = kane::state<double, 6, 8, 6>;
 using evaluator = kane::evaluator<state, kane::frames<Wr, Wf>, kane::level::velocity, speeds>;
+
+// The bodies of the benchmark (Meijaard et al. 2007, Table 1, in this model's frames and
+// parameters: tests/data/gen_bicycle_dynamics.py): p7 = g; the rear wheel (mass p8, moments
+// p9, p10, p9 about its centre in H, where it spins), the rear frame with rider (mass p11 at
+// Bo, inertia p14..p17 in H), the front frame (mass p18 at Ho, inertia p21..p24 in F), the
+// front wheel (mass p25, moments p26, p27, p26 in F).
+template <std::size_t I>
+inline constexpr kane::parameter<I> p{};
+struct Bo : kane::point<Dr, p<12> * e<H, 1> + p<13> * e<H, 3>> {};
+struct Ho : kane::point<Df, p<19> * e<F, 1> + p<20> * e<F, 3>> {};
+inline constexpr kane::constant<0> zero{};
+using system =
+    kane::system<kane::rigid_body<Wr, Dr, p<8>, kane::inertia<H, Dr, p<9>, p<10>, p<9>>>,
+                 kane::rigid_body<H, Bo, p<11>, kane::inertia<H, Bo, p<14>, p<15>, p<16>, zero, zero, p<17>>>,
+                 kane::rigid_body<F, Ho, p<18>, kane::inertia<F, Ho, p<21>, p<22>, p<23>, zero, zero, p<24>>>,
+                 kane::rigid_body<Wf, Df, p<25>, kane::inertia<F, Df, p<26>, p<27>, p<26>>>,
+                 kane::gravity<-p<7> * e<N, 3>>>;
+using dynamics_state = kane::state<double, 6, 8, 27>;
+using dynamics_evaluator =
+    kane::evaluator<dynamics_state, kane::frames<Wr, Wf>, kane::level::acceleration, speeds>;
+
+// Table 1 of Meijaard et al. (2007) in the parameters above. The benchmark's frame (x
+// forward, y right, z down, upright) is N with y and z reversed; upright, pitch is 0 and
+// H and F are N turned about n2 by lambda: (I)_jk = h_j . I . h_k, positions likewise.
+inline dynamics_state benchmark_parameters() {
+  const double w = 1.02, trail = 0.08, tilt = M_PI / 10, rR = 0.3, rF = 0.35, hta = M_PI / 2 - tilt;
+  const double rake = -(trail * std::sin(hta) - rF * std::cos(hta)), c = std::cos(hta), s = std::sin(hta);
+  // components along h1 = (c, 0, -s) and h3 = (s, 0, c) of (x, 0, z) in N
+  const auto along1 = [&](double x, double z) { return c * x - s * z; };
+  const auto along3 = [&](double x, double z) { return s * x + c * z; };
+  struct moments {
+    double i11, i22, i33, i31;
+  };
+  const auto in_h = [&](double ixx, double iyy, double izz, double ixz) {  // Table 1's xz is -ixz in N
+    return moments{c * c * ixx - 2 * c * s * -ixz + s * s * izz, iyy,
+                   s * s * ixx + 2 * s * c * -ixz + c * c * izz,
+                   s * c * ixx + (c * c - s * s) * -ixz - c * s * izz};
+  };
+  const moments rear = in_h(9.2, 11, 2.8, 2.4), front = in_h(0.05892, 0.06, 0.00708, -0.00756);
+  dynamics_state st;
+  st.p = {rF,
+          rR,
+          hta,
+          rake,
+          w * c - (rF - rR) * s,
+          w * s - (rake - (rF - rR) * c),
+          9.81,
+          2,
+          0.0603,
+          0.12,
+          85,
+          along1(0.3, 0.9 - rR),
+          along3(0.3, 0.9 - rR),
+          rear.i11,
+          rear.i22,
+          rear.i33,
+          rear.i31,
+          4,
+          along1(0.9 - w, 0.7 - rF),
+          along3(0.9 - w, 0.7 - rF),
+          front.i11,
+          front.i22,
+          front.i33,
+          front.i31,
+          3,
+          0.1405,
+          0.28};
+  return st;
+}
 }  // namespace models::bicycle
