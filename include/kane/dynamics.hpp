@@ -4,4 +4,5 @@
 
 #include "kane/dynamics/bodies.hpp"
 #include "kane/dynamics/equations.hpp"
+#include "kane/dynamics/generalized_forces.hpp"
 #include "kane/dynamics/motion.hpp"
