@@ -5,6 +5,8 @@
 // case inertia_about_other_point: inertia_about_another_point_than_the_mass_centre_use_parallel_axis<.*J, .*Bo>
 // case force_at_massless_point: force_at_a_point_that_is_no_particle_and_fixed_in_no_body<.*S>
 // case wheel_inertia_not_symmetric: inertia_given_in_a_frame_that_turns_relative_to_the_body<.*B, .*W>
+// case torque_from_other_tree: frames_of_two_trees_relate_them_through_a_common_root_frame<M, N>
+// case equations_on_other_speeds: evaluator_and_constraints_use_different_speed_sets<kane::qdot_speeds<2>, kane::speeds<
 // case particle_mass_not_scalar: kane: particle<P, m> takes a scalar expression m
 // case inertia_not_inertia: kane: rigid_body<B, Bo, m, I> takes I = kane::inertia<F, Bo, ...>
 #include <kane/kane.hpp>
@@ -52,11 +54,33 @@ using wheel = kane::rigid_body<W, Bo, p<3>, kane::inertia<B, Bo, p<4>, p<5>, p<6
 using wheel = kane::rigid_body<W, Bo, p<3>, kane::inertia<B, Bo, p<4>, p<5>, p<4>>>;
 #endif
 static_assert(sizeof(wheel) > 0);
-using sys = kane::system<body, tip, push, kane::gravity<-p<8> * e<N, 3>>>;
+struct M : kane::root_frame {};  // another tree
+#ifdef KANE_CASE_torque_from_other_tree
+using twist = kane::torque<B, p<9> * e<M, 1>>;
+#else
+using twist = kane::torque<B, p<9> * e<N, 1>>;
+#endif
+using sys = kane::system<body, tip, push, twist, kane::gravity<-p<8> * e<N, 3>>>;
 
 double use() {
-  kane::state<double, 2, 2, 8> s;
+  kane::state<double, 2, 2, 9> s;
   kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, kane::qdot_speeds<2>> ev;
   ev.update(s);
   return kane::mass_matrix_and_forcing<sys>(ev).M(0, 0);
+}
+
+// q2' = q1' as a nonholonomic constraint on the speeds u1 = q1', u2 = q2'
+using rates = kane::speeds<kane::dt(kane::q<1>), kane::dt(kane::q<2>)>;
+using tied = kane::nonholonomic<rates, kane::dependent<2>, kane::dt(kane::q<2>) - kane::dt(kane::q<1>)>;
+#ifdef KANE_CASE_equations_on_other_speeds
+using tied_speeds = kane::qdot_speeds<2>;
+#else
+using tied_speeds = rates;
+#endif
+double use_tied() {
+  kane::state<double, 2, 2, 9> s;
+  kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, tied_speeds> ev;
+  ev.update(s);
+  return kane::reduced_mass_matrix_and_forcing<sys, tied>(ev, kane::solve_constraints<tied>(ev))
+      .reduced.M(0, 0);
 }
