@@ -253,7 +253,11 @@ S dynamics(const kane::state<S, 6>& s6) {
   kane::motion<m::system, decltype(ev)> rhs(s);
   std::array<S, 4> x{}, dx{};
   rhs(x, dx, S(0));
-  return eom.M.sum() + ud.sum() + kane::kinetic_energy<m::system>(ev) + dx[3];
+  const auto lin = kane::linearize<m::system, decltype(ev), kane::inputs<m::p<19>>>(s);
+  const S active =
+      kane::evaluate(kane::generalized_active_force<m::N, m::system, kane::qdot_speeds<2>, 1>(), ev);
+  return eom.M.sum() + ud.sum() + kane::kinetic_energy<m::system>(ev) + dx[3] + lin.A.sum() + lin.B.sum() +
+         active;
 }
 
 // Printing.

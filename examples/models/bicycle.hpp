@@ -94,17 +94,17 @@ using dynamics_evaluator =
 // H and F are N turned about n2 by lambda: (I)_jk = h_j . I . h_k, positions likewise.
 inline dynamics_state benchmark_parameters() {
   const double w = 1.02, trail = 0.08, tilt = M_PI / 10, rR = 0.3, rF = 0.35, hta = M_PI / 2 - tilt;
-  const double rake = -(trail * std::sin(hta) - rF * std::cos(hta)), c = std::cos(hta), s = std::sin(hta);
+  const double rake = -(trail * std::sin(hta) - rF * std::cos(hta)), cl = std::cos(hta), sl = std::sin(hta);
   // components along h1 = (c, 0, -s) and h3 = (s, 0, c) of (x, 0, z) in N
-  const auto along1 = [&](double x, double z) { return c * x - s * z; };
-  const auto along3 = [&](double x, double z) { return s * x + c * z; };
+  const auto along1 = [&](double x, double z) { return cl * x - sl * z; };
+  const auto along3 = [&](double x, double z) { return sl * x + cl * z; };
   struct moments {
     double i11, i22, i33, i31;
   };
   const auto in_h = [&](double ixx, double iyy, double izz, double ixz) {  // Table 1's xz is -ixz in N
-    return moments{c * c * ixx - 2 * c * s * -ixz + s * s * izz, iyy,
-                   s * s * ixx + 2 * s * c * -ixz + c * c * izz,
-                   s * c * ixx + (c * c - s * s) * -ixz - c * s * izz};
+    return moments{cl * cl * ixx - 2 * cl * sl * -ixz + sl * sl * izz, iyy,
+                   sl * sl * ixx + 2 * sl * cl * -ixz + cl * cl * izz,
+                   sl * cl * ixx + (cl * cl - sl * sl) * -ixz - cl * sl * izz};
   };
   const moments rear = in_h(9.2, 11, 2.8, 2.4), front = in_h(0.05892, 0.06, 0.00708, -0.00756);
   dynamics_state st;
@@ -112,8 +112,8 @@ inline dynamics_state benchmark_parameters() {
           rR,
           hta,
           rake,
-          w * c - (rF - rR) * s,
-          w * s - (rake - (rF - rR) * c),
+          w * cl - (rF - rR) * sl,
+          w * sl - (rake - (rF - rR) * cl),
           9.81,
           2,
           0.0603,
