@@ -4,7 +4,8 @@
 # per problem and preset, the median CPU ns of the hand-written pass and of
 # kane with the range [min-max] of the 5 repetitions, and the ratio of the
 # medians; for the disc also SymPy's generated code (disc_sympy.cpp); then the
-# peer (Orocos KDL) at -O3. Needs libbenchmark-dev liborocos-kdl-dev.
+# peer (Orocos KDL) at -O3 (bench_disc_dynamics also times kane_reduced, which the
+# table leaves out). Needs libbenchmark-dev liborocos-kdl-dev.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 presets=(bench-o2 bench bench-native)
@@ -13,7 +14,7 @@ csv=$(mktemp)
 for p in "${presets[@]}"; do
   cmake --preset "$p" >/dev/null
   cmake --build --preset "$p" >/dev/null
-  for b in arm6 chain disc fourbar quaternion dynamics6; do
+  for b in arm6 chain disc fourbar quaternion dynamics6 disc_dynamics; do
     "./build/$p/benchmarks/bench_$b" --benchmark_repetitions=$reps --benchmark_format=csv 2>/dev/null |
       grep '^"' | grep -Ev '_(mean|median|stddev|cv)"' | sed "s/^/$p,/"
   done
