@@ -12,37 +12,14 @@
 #include <complex>
 #include <cstdio>
 
-#include "models/bicycle.hpp"
+#include "models/bicycle_linear.hpp"
 
 namespace {
 namespace b = models::bicycle;
 using matrix = Eigen::Matrix2d;
-struct lean_steer {
-  matrix M, C, K;
-  kane::solve_status status;
-};
+using b::linearize_upright;
+const auto eigenvalues = b::upright_eigenvalues;
 
-// Upright, straight ahead at speed v: pitch 0, the rear wheel at v / rR.
-lean_steer linearize(double v) {
-  b::dynamics_state s = b::benchmark_parameters();
-  s.u[6] = v / s.p[1];
-  const auto eq = kane::linearize_equations<b::system, b::rolling, b::dynamics_evaluator, b::pitch>(s);
-  return {eq.M.topLeftCorner<2, 2>(), eq.C.topLeftCorner<2, 2>(),
-          (Eigen::Matrix2d() << eq.K.block<2, 1>(0, 3), eq.K.block<2, 1>(0, 4)).finished(), eq.status};
-}
-
-// Eigenvalues of x' = [0 1; -M^-1 K, -M^-1 C] x, sorted by real part.
-std::array<std::complex<double>, 4> eigenvalues(double v) {
-  const lean_steer l = linearize(v);
-  Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
-  a.topRightCorner<2, 2>().setIdentity();
-  a.bottomLeftCorner<2, 2>() = -l.M.inverse() * l.K;
-  a.bottomRightCorner<2, 2>() = -l.M.inverse() * l.C;
-  const Eigen::Vector4cd e = Eigen::EigenSolver<Eigen::Matrix4d>(a, false).eigenvalues();
-  std::array<std::complex<double>, 4> out{e(0), e(1), e(2), e(3)};
-  std::sort(out.begin(), out.end(), [](auto x, auto y) { return x.real() < y.real(); });
-  return out;
-}
 // The weave: the real part of the complex pair; capsize: the real eigenvalue nearest 0.
 double weave(double v) {
   for (auto e : eigenvalues(v))
@@ -106,7 +83,7 @@ void svg(const char* path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const lean_steer at0 = linearize(0), at5 = linearize(5);
+  const b::lean_steer at0 = linearize_upright(0), at5 = linearize_upright(5);
   int failures = (at0.status != kane::solve_status::ok) + (at5.status != kane::solve_status::ok);
   // Meijaard et al. (2007), section 5 (the benchmark's coefficient matrices)
   const matrix M{{80.81722, 2.31941332208709}, {2.31941332208709, 0.29784188199686}};

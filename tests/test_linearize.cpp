@@ -62,7 +62,8 @@ TEST_CASE("linearize: the 3D double pendulum's A and B against central differenc
 TEST_CASE("linearize: a NaN state gives not_finite") {
   pd::state s = pendulum_state();
   s.p[0] = std::numeric_limits<double>::quiet_NaN();
-  CHECK(kane::linearize<pd::system, pd::evaluator>(s).status == kane::solve_status::not_finite);
+  CHECK(kane::linearize<pd::system, pd::evaluator, kane::inputs<pd::p<19>>>(s).status ==
+        kane::solve_status::not_finite);
 }
 
 TEST_CASE("linearize: the upright rolling disc, Kane's closed form") {

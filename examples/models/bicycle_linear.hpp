@@ -1,0 +1,43 @@
+// The benchmark bicycle linearized (models/bicycle.hpp): Kane's reduced equations about
+// upright straight running at speed v, exactly (jets), read as the roll/steer equations
+// M q'' + C q' + K q = 0 of Meijaard et al. (2007), q = (roll q4, steer q6); C = v C1 and
+// K = g K0 + v^2 K2. Shared by examples/bicycle_benchmark.cpp and tests/test_bicycle_dynamics.cpp.
+#pragma once
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <array>
+#include <complex>
+
+#include "bicycle.hpp"
+
+namespace models::bicycle {
+struct lean_steer {
+  Eigen::Matrix2d M, C, K;
+  kane::solve_status status;
+};
+
+// Upright, straight ahead at speed v: pitch 0, the rear wheel at v / rR.
+inline lean_steer linearize_upright(double v) {
+  dynamics_state s = benchmark_parameters();
+  s.u[6] = v / s.p[1];
+  const auto eq = kane::linearize_equations<system, rolling, dynamics_evaluator, pitch>(s);
+  return {eq.M.topLeftCorner<2, 2>(), eq.C.topLeftCorner<2, 2>(),
+          (Eigen::Matrix2d() << eq.K.block<2, 1>(0, 3), eq.K.block<2, 1>(0, 4)).finished(), eq.status};
+}
+
+// Eigenvalues of x' = [0 1; -M^-1 K, -M^-1 C] x, sorted by real part, then imaginary part.
+inline std::array<std::complex<double>, 4> upright_eigenvalues(double v) {
+  const lean_steer l = linearize_upright(v);
+  Eigen::Matrix4d a = Eigen::Matrix4d::Zero();
+  a.topRightCorner<2, 2>().setIdentity();
+  a.bottomLeftCorner<2, 2>() = -l.M.inverse() * l.K;
+  a.bottomRightCorner<2, 2>() = -l.M.inverse() * l.C;
+  const Eigen::Vector4cd e = Eigen::EigenSolver<Eigen::Matrix4d>(a, false).eigenvalues();
+  std::array<std::complex<double>, 4> out{e(0), e(1), e(2), e(3)};
+  std::sort(out.begin(), out.end(), [](auto x, auto y) {
+    return x.real() < y.real() || (x.real() == y.real() && x.imag() < y.imag());
+  });
+  return out;
+}
+}  // namespace models::bicycle
