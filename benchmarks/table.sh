@@ -3,7 +3,8 @@
 # -O3 -march=native), runs every benchmark binary (5 repetitions) and prints,
 # per problem and preset, the median CPU ns of the hand-written pass and of
 # kane with the range [min-max] of the 5 repetitions, and the ratio of the
-# medians; for the disc also SymPy's generated code (disc_sympy.cpp); then the
+# medians; for the disc also SymPy's generated code (disc_sympy.cpp), for the bicycle
+# (bench_bicycle: no hand column) kane and SymPy's code (bicycle_sympy.cpp); then the
 # peer (Orocos KDL) at -O3 (bench_disc_dynamics also times kane_reduced, which the
 # table leaves out). Needs libbenchmark-dev liborocos-kdl-dev.
 set -euo pipefail
@@ -14,7 +15,7 @@ csv=$(mktemp)
 for p in "${presets[@]}"; do
   cmake --preset "$p" >/dev/null
   cmake --build --preset "$p" >/dev/null
-  for b in arm6 chain disc fourbar quaternion dynamics6 disc_dynamics; do
+  for b in arm6 chain disc fourbar quaternion dynamics6 disc_dynamics bicycle; do
     "./build/$p/benchmarks/bench_$b" --benchmark_repetitions=$reps --benchmark_format=csv 2>/dev/null |
       grep '^"' | grep -Ev '_(mean|median|stddev|cv)"' | sed "s/^/$p,/"
   done
