@@ -20,27 +20,9 @@ using matrix = Eigen::Matrix2d;
 using b::linearize_upright;
 const auto eigenvalues = b::upright_eigenvalues;
 
-// The weave: the real part of the complex pair; capsize: the real eigenvalue nearest 0.
-double weave(double v) {
-  for (auto e : eigenvalues(v))
-    if (e.imag() > 0) return e.real();
-  return NAN;
-}
-double capsize(double v) {
-  double best = INFINITY;
-  for (auto e : eigenvalues(v))
-    if (e.imag() == 0 && std::abs(e.real()) < std::abs(best)) best = e.real();
-  return best;
-}
-template <class F>
-double bisect(F f, double lo, double hi) {  // f(lo), f(hi) of opposite signs
-  const bool rising = f(lo) < 0;
-  for (int i = 0; i < 60 && hi - lo > 1e-15; ++i) {
-    const double mid = (lo + hi) / 2;
-    ((f(mid) < 0) == rising ? lo : hi) = mid;
-  }
-  return (lo + hi) / 2;
-}
+using b::bisect;
+const auto weave = b::weave_real_part;
+const auto capsize = b::capsize_eigenvalue;
 
 int check(const char* what, const matrix& kane, const matrix& paper) {
   const double err = (kane - paper).cwiseAbs().maxCoeff() / paper.cwiseAbs().maxCoeff();

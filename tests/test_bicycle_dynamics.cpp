@@ -20,15 +20,6 @@ Eigen::Matrix2d paper(const double (&m)[2][2]) {
 double relative(const Eigen::Matrix2d& a, const Eigen::Matrix2d& b) {
   return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();
 }
-template <class F>
-double bisect(F f, double lo, double hi) {  // f(lo), f(hi) of opposite signs
-  const bool rising = f(lo) < 0;
-  for (int i = 0; i < 60 && hi - lo > 1e-15; ++i) {
-    const double mid = (lo + hi) / 2;
-    ((f(mid) < 0) == rising ? lo : hi) = mid;
-  }
-  return (lo + hi) / 2;
-}
 }  // namespace
 
 TEST_CASE("bicycle: M, C1, K0, K2 of the benchmark to 1e-12") {
@@ -55,19 +46,8 @@ TEST_CASE("bicycle: eigenvalues for 0 <= v <= 10 to 1e-12") {
 }
 
 TEST_CASE("bicycle: weave and capsize speeds to 1e-10") {
-  const auto weave = [](double v) {
-    for (auto e : b::upright_eigenvalues(v))
-      if (e.imag() > 0) return e.real();
-    return std::nan("");
-  };
-  const auto capsize = [](double v) {
-    double best = INFINITY;
-    for (auto e : b::upright_eigenvalues(v))
-      if (e.imag() == 0 && std::abs(e.real()) < std::abs(best)) best = e.real();
-    return best;
-  };
-  CHECK(std::abs(bisect(weave, 4, 5) - meijaard2007::weave_speed) < 1e-10);
-  CHECK(std::abs(bisect(capsize, 5.5, 6.5) - meijaard2007::capsize_speed) < 1e-10);
+  CHECK(std::abs(b::bisect(b::weave_real_part, 4, 5) - meijaard2007::weave_speed) < 1e-10);
+  CHECK(std::abs(b::bisect(b::capsize_eigenvalue, 5.5, 6.5) - meijaard2007::capsize_speed) < 1e-10);
 }
 
 TEST_CASE("bicycle: the first-order A of (q_ind, u_ind) holds the lean and steer eigenvalues") {

@@ -7,6 +7,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <complex>
 
 #include "bicycle.hpp"
@@ -39,5 +40,28 @@ inline std::array<std::complex<double>, 4> upright_eigenvalues(double v) {
     return x.real() < y.real() || (x.real() == y.real() && x.imag() < y.imag());
   });
   return out;
+}
+
+// The weave: the real part of the complex pair (NaN if none); capsize: the real eigenvalue nearest 0.
+inline double weave_real_part(double v) {
+  for (auto e : upright_eigenvalues(v))
+    if (e.imag() > 0) return e.real();
+  return std::nan("");
+}
+inline double capsize_eigenvalue(double v) {
+  double best = INFINITY;
+  for (auto e : upright_eigenvalues(v))
+    if (e.imag() == 0 && std::abs(e.real()) < std::abs(best)) best = e.real();
+  return best;
+}
+// The root of f in [lo, hi] by bisection (f(lo), f(hi) of opposite signs).
+template <class F>
+double bisect(F f, double lo, double hi) {
+  const bool rising = f(lo) < 0;
+  for (int i = 0; i < 60 && hi - lo > 1e-15; ++i) {
+    const double mid = (lo + hi) / 2;
+    ((f(mid) < 0) == rising ? lo : hi) = mid;
+  }
+  return (lo + hi) / 2;
 }
 }  // namespace models::bicycle
