@@ -3,15 +3,17 @@
 // for a block of one unknown (none for an exact one), a Gauss-Jordan inverse
 // only for a coupled block. Zeros and ones of M, R and X are never touched.
 //
-// Rank rule: a pivot counts if |pivot| > eps * n * max |M_ij|. A max |M_ij|
-// outside about [sqrt(min), sqrt(max)] of S is first brought into [1/2, 1) by a
-// power of two f (M x = R solved as f M x = f R, exact): the threshold never
-// underflows, 1/pivot never overflows, and M and sM get the same status for
-// every power of two s that keeps the entries of sM normal (any other s rounds
-// sM, and the rule holds to that rounding). Status ok means every number of X
-// is finite: NaN or inf in M, or in what is produced (an X beyond the range of
-// S, as for M = 1e-310 I), gives not_finite; X is then NaN, as it is for a
-// singular M.
+// Rank rule: a pivot counts if |pivot| > eps * n * max |M_ij|. A block of one
+// unknown tests |pivot| / (eps n) > max |M_ij| and divides by its pivot, so
+// neither the threshold nor 1/pivot leaves the range of S. A coupled block is
+// solved for f M, with f a power of two that brings a max |M_ij| outside about
+// [sqrt(min), sqrt(max)] of S into [1/2, 1) (M x = R as f M x = f R, exact).
+// M and sM get the same status for every power of two s that keeps the entries
+// of sM normal (any other s rounds sM, and the rule holds to that rounding).
+// Status ok means every number of X is finite; not_finite if M holds inf, or
+// NaN where no finite pivot failed, or if what is produced is not finite (an X
+// beyond the range of S, as for M = 1e-310 I); singular if a finite pivot
+// fails the rule. X is NaN whenever the status is not ok.
 #pragma once
 
 #include <array>
@@ -88,21 +90,27 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
     }
   });
   using limits = std::numeric_limits<S>;
-  solve_status status = scale <= limits::max() ? solve_status::ok : solve_status::not_finite;
+  constexpr bool coupled = [] {
+    for (std::size_t b = 0; b < Sys::form.count; ++b)
+      if (Sys::form.start[b + 1] - Sys::form.start[b] > 1) return true;
+    return false;
+  }();
   S f = S(1);  // 2^-e with 2^(e-1) <= scale < 2^e, e clamped so that f is normal
-  if (constexpr S lo = pow2<S>(limits::min_exponent / 2), hi = pow2<S>(limits::max_exponent / 2);
-      scale > S(0) && scale <= limits::max() && !(scale >= lo && scale <= hi)) {
-    using std::frexp, std::ldexp;
-    int e = 0;
-    frexp(scale, &e);
-    if (e < limits::min_exponent - 2) e = limits::min_exponent - 2;  // a subnormal scale
-    if (e > limits::max_exponent - 2) e = limits::max_exponent - 2;
-    f = ldexp(S(1), -e);
+  if constexpr (coupled) {
+    if (constexpr S lo = pow2<S>(limits::min_exponent / 2), hi = pow2<S>(limits::max_exponent / 2);
+        scale > S(0) && scale <= limits::max() && !(scale >= lo && scale <= hi)) {
+      using std::frexp, std::ldexp;
+      int e = 0;
+      frexp(scale, &e);
+      if (e < limits::min_exponent - 2) e = limits::min_exponent - 2;  // a subnormal scale
+      if (e > limits::max_exponent - 2) e = limits::max_exponent - 2;
+      f = ldexp(S(1), -e);
+    }
   }
   const S tol = limits::epsilon() * S(n) * (scale * f);
-  auto fail = [&](bool finite) {  // the first failure decides the status
-    if (status == solve_status::ok) status = finite ? solve_status::singular : solve_status::not_finite;
-  };
+  constexpr S inverse_tol =
+      S(1) / (limits::epsilon() * S(n > 0 ? n : 1));  // |p| > tol as |p| / (eps n) > scale
+  bool singular = false;                              // a finite pivot failed the rank rule
   static_for<Sys::form.count>([&](auto b) {
     constexpr std::size_t first = Sys::form.start[b], size = Sys::form.start[b + 1] - first;
     // t_j = R_{row c, j} - sum over unknowns d of earlier blocks of M_{row c, d} x_dj
@@ -117,16 +125,17 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
     };
     if constexpr (size == 1) {
       constexpr std::size_t c = Sys::form.order[first], row = Sys::form.row[c];
-      S inverse = S(1);
       if constexpr (Sys::m[row][c] == entry::other) {
-        const S pivot = m[row][c] * f;
-        if (!(abs(pivot) > tol)) fail(pivot == pivot);
-        inverse = S(1) / pivot;  // of f M_rc
+        const S pivot = m[row][c];
+        singular = singular || (pivot == pivot && !(abs(pivot) * inverse_tol > scale));
       }
       static_for<k>([&](auto j) {
         if constexpr (Sys::x[c][j] == entry::other) {
           const S t = reduced(index_c<c>{}, j);
-          x[c][j] = Sys::m[row][c] == entry::one ? t : t * f * inverse;
+          if constexpr (Sys::m[row][c] == entry::one)
+            x[c][j] = t;
+          else
+            x[c][j] = t / m[row][c];
         }
       });
     } else {
@@ -137,7 +146,10 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
                             index_c<Sys::form.order[first + e]>{}) *
                       f;
       });
-      if (!invert(block, inverse, tol)) fail(block.allFinite());
+      if (!invert(block, inverse, tol)) {
+        singular = singular || block.allFinite();
+        inverse.setConstant(std::numeric_limits<S>::quiet_NaN());
+      }
       static_for<k>([&](auto j) {
         if constexpr (Sys::x[Sys::form.order[first]][j] != entry::zero) {
           Eigen::Matrix<S, int(size), 1> t;
@@ -154,7 +166,10 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
     constexpr std::size_t c = cj / k, j = cj % k;
     if constexpr (Sys::x[c][j] == entry::other) residue += x[c][j] - x[c][j];
   });
-  if (status == solve_status::ok && !(residue == S(0))) status = solve_status::not_finite;
+  const solve_status status = !(scale <= limits::max()) ? solve_status::not_finite
+                              : singular                ? solve_status::singular
+                              : residue == S(0)         ? solve_status::ok
+                                                        : solve_status::not_finite;
   if (status != solve_status::ok)
     static_for<n * k>([&](auto cj) {
       constexpr std::size_t c = cj / k, j = cj % k;
