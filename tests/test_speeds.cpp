@@ -252,6 +252,45 @@ TEST_CASE("speeds: a 3-2-1 body with body-frame angular velocity components as s
   CHECK(std::isnan(ev.coordinate_value<3, 1>()));
 }
 
+TEST_CASE("speeds: update_pose then update_speeds gives the numbers and status of update") {
+  std::mt19937 rng(47);
+  std::uniform_real_distribution<double> d(-1.2, 1.2);
+  const auto alpha = kane::angular_acceleration<N, B321>();
+  for (int k = 0; k < 50; ++k) {
+    St321 s;
+    for (int i = 0; i < 3; ++i) s.q[i] = d(rng), s.u[i] = d(rng), s.ud[i] = d(rng);
+    Ev321 whole, split;
+    whole.update(s);
+    split.update_pose(s);
+    REQUIRE(split.status() == kane::solve_status::ok);
+    CHECK(kane::express<N>(e<B321, 2>, split) == kane::express<N>(e<B321, 2>, whole));
+    St321 later = s;  // update_speeds reads u and u' only: the pose stays that of update_pose
+    later.q = {9, 9, 9};
+    split.update_speeds(later);
+    REQUIRE(split.status() == kane::solve_status::ok);
+    CHECK(split.coordinate_rates<1>() == whole.coordinate_rates<1>());
+    CHECK(split.coordinate_rates<2>() == whole.coordinate_rates<2>());
+    CHECK(kane::express<N>(alpha, split) == kane::express<N>(alpha, whole));
+  }
+  // NaN in u: the pose is ok, the speeds are not finite.
+  St321 s;
+  s.q = {0.2, 0.3, -0.4};
+  s.u = {0.1, std::numeric_limits<double>::quiet_NaN(), 0.3};
+  Ev321 ev;
+  ev.update_pose(s);
+  CHECK(ev.status() == kane::solve_status::ok);
+  ev.update_speeds(s);
+  CHECK(ev.status() == kane::solve_status::not_finite);
+  CHECK(std::isnan(ev.coordinate_value<1, 1>()));
+  // Gimbal lock found by the pose stays the status: singular, not overwritten by finite speeds.
+  s.q[1] = std::acos(-1.0) / 2;
+  s.u[1] = 0.2;
+  ev.update_pose(s);
+  ev.update_speeds(s);
+  CHECK(ev.status() == kane::solve_status::singular);
+  CHECK(std::isnan(ev.coordinate_value<2, 1>()));
+}
+
 namespace {
 using namespace trees;
 struct A1 : kane::frame<N, kane::simple<kane::axis::z, trees::q1>> {};

@@ -9,6 +9,7 @@
 // one evaluator pass at level::acceleration, at any u', gives M and f.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <limits>
 #include <type_traits>
@@ -17,7 +18,6 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <Eigen/LU>
 
 #include "kane/dynamics/bodies.hpp"
 #include "kane/evaluation/evaluate.hpp"
@@ -56,6 +56,28 @@ Eigen::Matrix<typename Ev::scalar, 3, 3> inertia_in_root(const Ev& ev) {
     return axes * i * axes.transpose();
   }
 }
+// Which partial velocities of x may be nonzero (the others are zero at every state).
+template <class Sp, class X>
+constexpr std::array<bool, Sp::n> nonzero_columns() {
+  return []<std::size_t... R>(std::index_sequence<R...>) {
+    return std::array<bool, Sp::n>{!(
+        is_zero_v<std::remove_cvref_t<decltype(column_of<Sp, R + 1>(std::declval<const X&>()))>> ||
+        is_zero_vector_v<std::remove_cvref_t<decltype(column_of<Sp, R + 1>(std::declval<const X&>()))>>)...};
+  }
+  (std::make_index_sequence<Sp::n>{});
+}
+// The upper triangle of M += a^T b (symmetric: b = W a, W symmetric) over the columns Nz.
+template <auto Nz, class S, int N>
+KANE_ALWAYS_INLINE void add_upper(Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<S, 3, N>& a,
+                                  const Eigen::Matrix<S, 3, N>& b) {
+  static_for<std::size_t(N * N)>([&](auto rc) {
+    constexpr std::size_t r = rc / std::size_t(N), c = rc % std::size_t(N);
+    if constexpr (r <= c && Nz[r] && Nz[c])
+      m(Eigen::Index(r), Eigen::Index(c)) += a(0, Eigen::Index(r)) * b(0, Eigen::Index(c)) +
+                                             a(1, Eigen::Index(r)) * b(1, Eigen::Index(c)) +
+                                             a(2, Eigen::Index(r)) * b(2, Eigen::Index(c));
+  });
+}
 template <class Ev>
 auto speed_rates(const Ev& ev) {  // u' of the evaluator's state
   using S = typename Ev::scalar;
@@ -73,7 +95,8 @@ requires detail::is_evaluator<Ev>::value equations_of_motion<typename Ev::scalar
 mass_matrix_and_forcing(const Ev& ev) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
-  constexpr std::size_t n = detail::speeds_of<Ev>::n;
+  using Sp = detail::speeds_of<Ev>;
+  constexpr std::size_t n = Sp::n;
   static_assert(detail::forces_checked<Sys>(typename Sys::items{}));
   equations_of_motion<S, n> out{Eigen::Matrix<S, int(n), int(n)>::Zero(), Eigen::Matrix<S, int(n), 1>::Zero(),
                                 ev.status()};
@@ -89,9 +112,10 @@ mass_matrix_and_forcing(const Ev& ev) {
   const auto mass = [&](const auto& point_velocity, const auto& point_acceleration, const auto& m) {
     const auto v = partial_velocities<R>(point_velocity, ev);
     const Eigen::Matrix<S, 3, 1> a0 = detail::in_root<R>(point_acceleration, ev) - v * ud;
-    const S ms = detail::eval_scalar(m, ev);
-    out.M.noalias() += ms * v.transpose() * v;
-    out.f.noalias() += ms * v.transpose() * (g - a0);
+    const Eigen::Matrix<S, 3, int(n)> mv = detail::eval_scalar(m, ev) * v;
+    detail::add_upper<detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(point_velocity)>>()>(out.M, v,
+                                                                                                    mv);
+    out.f.noalias() += mv.transpose() * (g - a0);
   };
   [&]<class... X>(detail::list<X...>) {
     (
@@ -108,7 +132,9 @@ mass_matrix_and_forcing(const Ev& ev) {
             const Eigen::Matrix<S, 3, 1> omega = detail::in_root<R>(angular_velocity<R, B>(), ev);
             const Eigen::Matrix<S, 3, 1> alpha0 =
                 detail::in_root<R>(angular_acceleration<R, B>(), ev) - w * ud;
-            out.M.noalias() += w.transpose() * i * w;
+            const Eigen::Matrix<S, 3, int(n)> iw = i * w;
+            detail::add_upper<detail::nonzero_columns<Sp, decltype(angular_velocity<R, B>())>()>(out.M, w,
+                                                                                                 iw);
             out.f.noalias() -= w.transpose() * (i * alpha0 + omega.cross(i * omega));
           } else if constexpr (detail::is_force<X>) {
             const auto v = partial_velocities<R>(velocity<R, typename X::point>(), ev);
@@ -120,6 +146,7 @@ mass_matrix_and_forcing(const Ev& ev) {
         }(),
         ...);
   }(typename Sys::items{});
+  out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
   if (out.status == solve_status::ok && !(out.M.allFinite() && out.f.allFinite()))
     out.status = solve_status::not_finite;
   return out;
@@ -155,18 +182,22 @@ reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
     rest(Eigen::Index(k)) = detail::eval_scalar(dc, ev);
   });
   rest -= sol.C * ud;
-  Eigen::Matrix<S, int(m), int(m)> dep;
-  for (std::size_t j = 0; j < m; ++j)
-    dep.col(Eigen::Index(j)) = sol.C.col(Eigen::Index(NH::dependents[j] - 1));
-  const Eigen::Matrix<S, int(m), 1> bd = -dep.partialPivLu().solve(rest);
+  // b_dep = -C_dep^-1 (C' u + c0'), with the factors of C_dep that solve_constraints found
+  using Dep = detail::dense_right_side<detail::constraint_system<NH>>;
+  detail::table<S, m, 1> right, bd;
+  for (std::size_t k = 0; k < m; ++k) right[k][0] = rest(Eigen::Index(k));
+  const solve_status solved =
+      detail::substitute_structured<Dep>(sol.dependent.m, sol.dependent.factors, right, bd);
   for (std::size_t j = 0; j < m; ++j) {
     const auto row = Eigen::Index(NH::dependents[j] - 1);
     out.T.row(row) = sol.A.row(Eigen::Index(j));
-    out.b(row) = bd(Eigen::Index(j));
+    out.b(row) = -bd[j][0];
   }
   out.reduced.M.noalias() = out.T.transpose() * full.M * out.T;
   out.reduced.f.noalias() = out.T.transpose() * (full.f - full.M * out.b);
-  out.reduced.status = full.status != solve_status::ok ? full.status : sol.status;
+  out.reduced.status = full.status != solve_status::ok  ? full.status
+                       : sol.status != solve_status::ok ? sol.status
+                                                        : solved;
   if (out.reduced.status == solve_status::ok && !(out.reduced.M.allFinite() && out.reduced.f.allFinite()))
     out.reduced.status = solve_status::not_finite;
   return out;

@@ -66,16 +66,15 @@ class constrained_motion {
   void operator()(const X& x, DX& dxdt, scalar time) {
     for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
     for (std::size_t k = 0; k < p; ++k) s_.u[NH::independents[k] - 1] = x[nq + k];
-    for (std::size_t j = 0; j < NH::m; ++j) s_.u[NH::dependents[j] - 1] = scalar(0);
     s_.t = time;
-    ev_.update(s_);  // A and B depend on q and t alone
+    ev_.update_pose(s_);  // A and B depend on q and t alone
     const auto sol = solve_constraints<NH>(ev_);
     for (std::size_t j = 0; j < NH::m; ++j) {
       scalar u = sol.B(Eigen::Index(j));
       for (std::size_t k = 0; k < p; ++k) u += sol.A(Eigen::Index(j), Eigen::Index(k)) * x[nq + k];
       s_.u[NH::dependents[j] - 1] = u;
     }
-    ev_.update(s_);
+    ev_.update_speeds(s_);
     const auto [ud, status] = speed_derivatives(reduced_mass_matrix_and_forcing<Sys, NH>(ev_, sol).reduced);
     const auto qd = ev_.coordinate_rates();
     status_ = status;

@@ -54,14 +54,95 @@ constexpr S pow2(int e) {
   return x;
 }
 
-// Sys: static constexpr n, k, m (pattern n x n), r (n x k), form (blocks_of(m)), x (solution_pattern).
-// The zeros and ones of X are written unless the caller keeps them (WriteConstants false).
-template <class Sys, bool WriteConstants = true, class S>
-KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>& m,
-                                                 const table<S, Sys::n, Sys::k>& r,
-                                                 table<S, Sys::n, Sys::k>& x) {
+// What a solve keeps of M: the rank rule's scale, the power of two f, whether
+// a finite pivot failed, and (f M_B)^-1 of each coupled block B in its places.
+template <class S, std::size_t N>
+struct structured_factors {
+  table<S, N, N> inverse;
+  S scale, f;
+  bool singular;
+};
+// A matrix of a known zero pattern and its factors: more right-hand sides later.
+template <class S, std::size_t N>
+struct factored {
+  table<S, N, N> m;
+  structured_factors<S, N> factors;
+};
+
+// Sys: static constexpr n, m (pattern n x n), form (blocks_of(m)).
+template <class Sys, class S>
+KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S, Sys::n, Sys::n>& m) {
   static_assert(Sys::form.regular);
   using std::abs;
+  using limits = std::numeric_limits<S>;
+  constexpr std::size_t n = Sys::n;
+  auto value = [&](auto i, auto j) -> S {  // M_ij
+    if constexpr (Sys::m[i][j] == entry::one)
+      return S(1);
+    else
+      return m[i][j];
+  };
+  structured_factors<S, n> out{};
+  static_for<n * n>([&](auto ij) {
+    constexpr std::size_t i = ij / n, j = ij % n;
+    if constexpr (Sys::m[i][j] != entry::zero) {
+      const S a = abs(value(index_c<i>{}, index_c<j>{}));
+      out.scale = a > out.scale ? a : out.scale;
+    }
+  });
+  const S scale = out.scale;
+  out.f = S(1);  // 2^-e with 2^(e-1) <= scale < 2^e, e clamped so that f is normal
+  out.singular = false;
+  static_for<Sys::form.count>([&](auto b) {
+    constexpr std::size_t first = Sys::form.start[b], size = Sys::form.start[b + 1] - first;
+    if constexpr (size == 1) {
+      constexpr std::size_t c = Sys::form.order[first], row = Sys::form.row[c];
+      if constexpr (Sys::m[row][c] == entry::other) {
+        constexpr S inverse_tol =
+            S(1) / (limits::epsilon() * S(n > 0 ? n : 1));  // |p| > tol as |p| / (eps n) > scale
+        const S pivot = m[row][c];
+        out.singular = out.singular || (pivot == pivot && !(abs(pivot) * inverse_tol > scale));
+      }
+    } else {
+      if (constexpr S lo = pow2<S>(limits::min_exponent / 2), hi = pow2<S>(limits::max_exponent / 2);
+          out.f == S(1) && scale > S(0) && scale <= limits::max() && !(scale >= lo && scale <= hi)) {
+        using std::frexp, std::ldexp;
+        int e = 0;
+        frexp(scale, &e);
+        if (e < limits::min_exponent - 2) e = limits::min_exponent - 2;  // a subnormal scale
+        if (e > limits::max_exponent - 2) e = limits::max_exponent - 2;
+        out.f = ldexp(S(1), -e);
+      }
+      const S f = out.f, tol = limits::epsilon() * S(n) * (scale * f);
+      Eigen::Matrix<S, int(size), int(size)> block, inverse;
+      static_for<size * size>([&](auto ab) {
+        constexpr std::size_t a = ab / size, e = ab % size;
+        block(a, e) = value(index_c<Sys::form.row[Sys::form.order[first + a]]>{},
+                            index_c<Sys::form.order[first + e]>{}) *
+                      f;
+      });
+      if (!invert(block, inverse, tol)) {
+        out.singular = out.singular || block.allFinite();
+        inverse.setConstant(limits::quiet_NaN());
+      }
+      static_for<size * size>([&](auto ab) {
+        constexpr std::size_t a = ab / size, e = ab % size;
+        out.inverse[Sys::form.order[first + a]][Sys::form.order[first + e]] = inverse(a, e);
+      });
+    }
+  });
+  return out;
+}
+
+// X = M^-1 R from the factors of M. Sys: static constexpr n, k, m (pattern n x n), r (n x k),
+// form (blocks_of(m)), x (solution_pattern). The zeros and ones of X are written unless the
+// caller keeps them (WriteConstants false).
+template <class Sys, bool WriteConstants = true, class S>
+KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys::n>& m,
+                                                      const structured_factors<S, Sys::n>& fac,
+                                                      const table<S, Sys::n, Sys::k>& r,
+                                                      table<S, Sys::n, Sys::k>& x) {
+  using limits = std::numeric_limits<S>;
   constexpr std::size_t n = Sys::n, k = Sys::k;
   auto value = [&](auto i, auto j) -> S {  // M_ij
     if constexpr (Sys::m[i][j] == entry::one)
@@ -81,36 +162,6 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
     constexpr std::size_t c = cj / k, j = cj % k;
     if constexpr (WriteConstants && Sys::x[c][j] != entry::other) x[c][j] = S(Sys::x[c][j] == entry::one);
   });
-  S scale = S(0);
-  static_for<n * n>([&](auto ij) {
-    constexpr std::size_t i = ij / n, j = ij % n;
-    if constexpr (Sys::m[i][j] != entry::zero) {
-      const S a = abs(value(index_c<i>{}, index_c<j>{}));
-      scale = a > scale ? a : scale;
-    }
-  });
-  using limits = std::numeric_limits<S>;
-  constexpr bool coupled = [] {
-    for (std::size_t b = 0; b < Sys::form.count; ++b)
-      if (Sys::form.start[b + 1] - Sys::form.start[b] > 1) return true;
-    return false;
-  }();
-  S f = S(1);  // 2^-e with 2^(e-1) <= scale < 2^e, e clamped so that f is normal
-  if constexpr (coupled) {
-    if (constexpr S lo = pow2<S>(limits::min_exponent / 2), hi = pow2<S>(limits::max_exponent / 2);
-        scale > S(0) && scale <= limits::max() && !(scale >= lo && scale <= hi)) {
-      using std::frexp, std::ldexp;
-      int e = 0;
-      frexp(scale, &e);
-      if (e < limits::min_exponent - 2) e = limits::min_exponent - 2;  // a subnormal scale
-      if (e > limits::max_exponent - 2) e = limits::max_exponent - 2;
-      f = ldexp(S(1), -e);
-    }
-  }
-  const S tol = limits::epsilon() * S(n) * (scale * f);
-  constexpr S inverse_tol =
-      S(1) / (limits::epsilon() * S(n > 0 ? n : 1));  // |p| > tol as |p| / (eps n) > scale
-  bool singular = false;                              // a finite pivot failed the rank rule
   static_for<Sys::form.count>([&](auto b) {
     constexpr std::size_t first = Sys::form.start[b], size = Sys::form.start[b + 1] - first;
     // t_j = R_{row c, j} - sum over unknowns d of earlier blocks of M_{row c, d} x_dj
@@ -125,10 +176,6 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
     };
     if constexpr (size == 1) {
       constexpr std::size_t c = Sys::form.order[first], row = Sys::form.row[c];
-      if constexpr (Sys::m[row][c] == entry::other) {
-        const S pivot = m[row][c];
-        singular = singular || (pivot == pivot && !(abs(pivot) * inverse_tol > scale));
-      }
       static_for<k>([&](auto j) {
         if constexpr (Sys::x[c][j] == entry::other) {
           const S t = reduced(index_c<c>{}, j);
@@ -139,22 +186,17 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
         }
       });
     } else {
-      Eigen::Matrix<S, int(size), int(size)> block, inverse;
+      Eigen::Matrix<S, int(size), int(size)> inverse;  // (f M_B)^-1
       static_for<size * size>([&](auto ab) {
         constexpr std::size_t a = ab / size, e = ab % size;
-        block(a, e) = value(index_c<Sys::form.row[Sys::form.order[first + a]]>{},
-                            index_c<Sys::form.order[first + e]>{}) *
-                      f;
+        inverse(a, e) = fac.inverse[Sys::form.order[first + a]][Sys::form.order[first + e]];
       });
-      if (!invert(block, inverse, tol)) {
-        singular = singular || block.allFinite();
-        inverse.setConstant(std::numeric_limits<S>::quiet_NaN());
-      }
       static_for<k>([&](auto j) {
         if constexpr (Sys::x[Sys::form.order[first]][j] != entry::zero) {
           Eigen::Matrix<S, int(size), 1> t;
-          static_for<size>(
-              [&](auto a) { t(Eigen::Index(a)) = reduced(index_c<Sys::form.order[first + a]>{}, j) * f; });
+          static_for<size>([&](auto a) {
+            t(Eigen::Index(a)) = reduced(index_c<Sys::form.order[first + a]>{}, j) * fac.f;
+          });
           const Eigen::Matrix<S, int(size), 1> y = inverse * t;  // (f M)^-1 f t
           static_for<size>([&](auto a) { x[Sys::form.order[first + a]][j] = y(Eigen::Index(a)); });
         }
@@ -166,16 +208,23 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
     constexpr std::size_t c = cj / k, j = cj % k;
     if constexpr (Sys::x[c][j] == entry::other) residue += x[c][j] - x[c][j];
   });
-  const solve_status status = !(scale <= limits::max()) ? solve_status::not_finite
-                              : singular                ? solve_status::singular
-                              : residue == S(0)         ? solve_status::ok
-                                                        : solve_status::not_finite;
+  const solve_status status = !(fac.scale <= limits::max()) ? solve_status::not_finite
+                              : fac.singular                ? solve_status::singular
+                              : residue == S(0)             ? solve_status::ok
+                                                            : solve_status::not_finite;
   if (status != solve_status::ok)
     static_for<n * k>([&](auto cj) {
       constexpr std::size_t c = cj / k, j = cj % k;
-      if constexpr (Sys::x[c][j] == entry::other) x[c][j] = std::numeric_limits<S>::quiet_NaN();
+      if constexpr (Sys::x[c][j] == entry::other) x[c][j] = limits::quiet_NaN();
     });
   return status;
+}
+
+template <class Sys, bool WriteConstants = true, class S>
+KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>& m,
+                                                 const table<S, Sys::n, Sys::k>& r,
+                                                 table<S, Sys::n, Sys::k>& x) {
+  return substitute_structured<Sys, WriteConstants>(m, factor_structured<Sys>(m), r, x);
 }
 
 }  // namespace kane::detail

@@ -88,8 +88,28 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   // is singular or not_finite, and W (but for its structural zeros and ones),
   // X, q', q'' and all computed from them are NaN (without a speed set, NaN
   // or inf in s reaches what is computed from it).
-  KANE_INLINE_FLATTEN void update(const St& s) requires(detail::inlined_entry<pass_type>) { pass_at(s); }
-  KANE_FLATTEN void update(const St& s) requires(!detail::inlined_entry<pass_type>) { pass_at(s); }
+  KANE_INLINE_FLATTEN void update(const St& s) requires(detail::inlined_entry<pass_type>) {
+    pass_at<true>(s);
+  }
+  KANE_FLATTEN void update(const St& s) requires(!detail::inlined_entry<pass_type>) { pass_at<true>(s); }
+
+  // With a speed set, update(s) in two steps: update_pose(s) reads q, p, t (the
+  // pose, W and X: enough for the constraints' A and B); update_speeds(s) then
+  // reads u and u' at that pose (s.q, s.p, s.t are not read again) for the
+  // velocity and acceleration levels. Between the two only the pose level may
+  // be evaluated; after both, every result and status() are those of update(s).
+  KANE_INLINE_FLATTEN void update_pose(const St& s) requires(solves&& detail::inlined_entry<pass_type>) {
+    pass_at<false>(s);
+  }
+  KANE_FLATTEN void update_pose(const St& s) requires(solves && !detail::inlined_entry<pass_type>) {
+    pass_at<false>(s);
+  }
+  KANE_INLINE_FLATTEN void update_speeds(const St& s) requires(solves&& detail::inlined_entry<pass_type>) {
+    speeds_at(s);
+  }
+  KANE_FLATTEN void update_speeds(const St& s) requires(solves && !detail::inlined_entry<pass_type>) {
+    speeds_at(s);
+  }
 
   // The state of the last update as far as evaluation reads it (with a speed set,
   // q' and q'' stay NaN: coordinate_value gives the solved ones; without, u and u').
@@ -144,22 +164,31 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   }
 
  private:
-  KANE_ALWAYS_INLINE void pass_at(const St& s) {
-    st_.q = s.q, st_.p = s.p, st_.t = s.t, updated_ = true;
-    const scalar norm_residue = normalise(closure{});  // Euler parameters of unit norm
-    const bool rotations = attitudes(closure{});       // NaN in st_ where not
-    if constexpr (solves)
-      st_.u = s.u, st_.ud = s.ud;
-    else
-      st_.qd = s.qd, st_.qdd = s.qdd;
-    const auto tr = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
-    constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
-    scalar residue =
-        detail::nonfinite_residue(s.q) + detail::nonfinite_residue(s.p) + (s.t - s.t) + norm_residue;
+  static constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
+
+  // 0 if the rates this level reads (q' or u, then q'' or u') are finite, NaN if not.
+  static scalar rates_residue(const St& s) {
+    scalar residue = scalar(0);
     if constexpr (velocity)
       residue += solves ? detail::nonfinite_residue(s.u) : detail::nonfinite_residue(s.qd);
     if constexpr (acceleration)
       residue += solves ? detail::nonfinite_residue(s.ud) : detail::nonfinite_residue(s.qdd);
+    return residue;
+  }
+
+  template <bool Rates>
+  KANE_ALWAYS_INLINE void pass_at(const St& s) {
+    st_.q = s.q, st_.p = s.p, st_.t = s.t, updated_ = true;
+    const scalar norm_residue = normalise(closure{});  // Euler parameters of unit norm
+    const bool rotations = attitudes(closure{});       // NaN in st_ where not
+    if constexpr (!solves)
+      st_.qd = s.qd, st_.qdd = s.qdd;
+    else if constexpr (Rates)
+      st_.u = s.u, st_.ud = s.ud;
+    const auto tr = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
+    scalar residue =
+        detail::nonfinite_residue(s.q) + detail::nonfinite_residue(s.p) + (s.t - s.t) + norm_residue;
+    if constexpr (Rates) residue += rates_residue(s);
     const bool finite = residue == scalar(0);
     this->status_ = !finite     ? solve_status::not_finite
                     : rotations ? solve_status::ok
@@ -171,15 +200,27 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
       this->template pass<true, false, false>(tr, *this);
       this->store_trig(tr);
       if constexpr (!direct) this->solve_kinematic_equations(*this);
-      if constexpr (velocity) {
-        this->solve_rates(s);
-        this->template pass<false, true, false>(tr, *this);
-      }
-      if constexpr (acceleration) {
-        this->solve_accelerations(*this, s);
-        this->template pass<false, false, true>(tr, *this);
-      }
+      if constexpr (Rates) rates_at(s, tr);
     }
+  }
+
+  // The velocity and acceleration levels at s.u and s.ud (a speed set), the pose kept.
+  KANE_ALWAYS_INLINE void rates_at(const St& s, const trig_type& tr) {
+    if constexpr (velocity) {
+      this->solve_rates(s);
+      this->template pass<false, true, false>(tr, *this);
+    }
+    if constexpr (acceleration) {
+      this->solve_accelerations(*this, s);
+      this->template pass<false, false, true>(tr, *this);
+    }
+  }
+  KANE_ALWAYS_INLINE void speeds_at(const St& s) {
+    assert(updated_ && "kane: update_speeds after update_pose");
+    st_.u = s.u, st_.ud = s.ud;
+    if (const scalar residue = rates_residue(s); this->status_ == solve_status::ok && !(residue == scalar(0)))
+      this->status_ = solve_status::not_finite;
+    rates_at(s, this->cached_trig());
   }
 
   // e / |e| for the Euler parameters e of each frame; 0, or NaN for |e| zero or not finite.

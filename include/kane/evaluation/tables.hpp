@@ -161,6 +161,7 @@ struct constraint_solution {
   solve_status status;
   Eigen::Matrix<S, int(M), int(M + P)> C;
   Eigen::Matrix<S, int(M), 1> c0;
+  detail::factored<S, M> dependent;  // the block of C of the dependent speeds: u_dep' reuses it
 };
 
 // u_dep = A u_ind + B at the evaluator's state.
@@ -204,7 +205,9 @@ KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
     else
       out.c0(Eigen::Index(k)) = c;
   });
-  const solve_status solved = detail::solve_structured<Sys>(dep, right, x);
+  out.dependent.m = dep;
+  out.dependent.factors = detail::factor_structured<Sys>(dep);
+  const solve_status solved = detail::substitute_structured<Sys>(dep, out.dependent.factors, right, x);
   out.status = ev.status() != solve_status::ok ? ev.status() : solved;
   for (std::size_t k = 0; k < m; ++k) {
     const auto row = static_cast<Eigen::Index>(k);

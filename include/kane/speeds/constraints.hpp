@@ -109,6 +109,19 @@ struct constraint_system {
   static constexpr block_form<n> form = blocks_of(m);
   static constexpr pattern<n, k> x = solution_pattern(m, form, r);
 };
+// The block of Sys with one right-hand side of numbers only (u_dep' of the differentiated constraints).
+template <class Sys>
+struct dense_right_side {
+  static constexpr std::size_t n = Sys::n, k = 1;
+  static constexpr pattern<n, n> m = Sys::m;
+  static constexpr block_form<n> form = Sys::form;
+  static constexpr pattern<n, 1> r = [] {
+    pattern<n, 1> out{};
+    for (auto& row : out) row[0] = entry::other;
+    return out;
+  }();
+  static constexpr pattern<n, 1> x = solution_pattern(m, form, r);
+};
 }  // namespace detail
 
 }  // namespace kane
