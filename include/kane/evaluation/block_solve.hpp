@@ -69,6 +69,15 @@ struct factored {
   structured_factors<S, N> factors;
 };
 
+// M_ij: 1 where the pattern says so, else the number.
+template <class Sys, class S, std::size_t I, std::size_t J>
+KANE_ALWAYS_INLINE S entry_value(const table<S, Sys::n, Sys::n>& m, index_c<I>, index_c<J>) {
+  if constexpr (Sys::m[I][J] == entry::one)
+    return S(1);
+  else
+    return m[I][J];
+}
+
 // Sys: static constexpr n, m (pattern n x n), form (blocks_of(m)).
 template <class Sys, class S>
 KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S, Sys::n, Sys::n>& m) {
@@ -76,12 +85,7 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
   using std::abs;
   using limits = std::numeric_limits<S>;
   constexpr std::size_t n = Sys::n;
-  auto value = [&](auto i, auto j) -> S {  // M_ij
-    if constexpr (Sys::m[i][j] == entry::one)
-      return S(1);
-    else
-      return m[i][j];
-  };
+  auto value = [&](auto i, auto j) { return entry_value<Sys>(m, i, j); };
   structured_factors<S, n> out{};
   static_for<n * n>([&](auto ij) {
     constexpr std::size_t i = ij / n, j = ij % n;
@@ -92,7 +96,22 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
   });
   const S scale = out.scale;
   out.f = S(1);  // 2^-e with 2^(e-1) <= scale < 2^e, e clamped so that f is normal
-  out.singular = false;
+  constexpr bool coupled = [] {
+    for (std::size_t b = 0; b < Sys::form.count; ++b)
+      if (Sys::form.start[b + 1] - Sys::form.start[b] > 1) return true;
+    return false;
+  }();
+  if constexpr (coupled) {
+    if (constexpr S lo = pow2<S>(limits::min_exponent / 2), hi = pow2<S>(limits::max_exponent / 2);
+        scale > S(0) && scale <= limits::max() && !(scale >= lo && scale <= hi)) {
+      using std::frexp, std::ldexp;
+      int e = 0;
+      frexp(scale, &e);
+      if (e < limits::min_exponent - 2) e = limits::min_exponent - 2;  // a subnormal scale
+      if (e > limits::max_exponent - 2) e = limits::max_exponent - 2;
+      out.f = ldexp(S(1), -e);
+    }
+  }
   static_for<Sys::form.count>([&](auto b) {
     constexpr std::size_t first = Sys::form.start[b], size = Sys::form.start[b + 1] - first;
     if constexpr (size == 1) {
@@ -104,15 +123,6 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
         out.singular = out.singular || (pivot == pivot && !(abs(pivot) * inverse_tol > scale));
       }
     } else {
-      if (constexpr S lo = pow2<S>(limits::min_exponent / 2), hi = pow2<S>(limits::max_exponent / 2);
-          out.f == S(1) && scale > S(0) && scale <= limits::max() && !(scale >= lo && scale <= hi)) {
-        using std::frexp, std::ldexp;
-        int e = 0;
-        frexp(scale, &e);
-        if (e < limits::min_exponent - 2) e = limits::min_exponent - 2;  // a subnormal scale
-        if (e > limits::max_exponent - 2) e = limits::max_exponent - 2;
-        out.f = ldexp(S(1), -e);
-      }
       const S f = out.f, tol = limits::epsilon() * S(n) * (scale * f);
       Eigen::Matrix<S, int(size), int(size)> block, inverse;
       static_for<size * size>([&](auto ab) {
@@ -144,12 +154,7 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
                                                       table<S, Sys::n, Sys::k>& x) {
   using limits = std::numeric_limits<S>;
   constexpr std::size_t n = Sys::n, k = Sys::k;
-  auto value = [&](auto i, auto j) -> S {  // M_ij
-    if constexpr (Sys::m[i][j] == entry::one)
-      return S(1);
-    else
-      return m[i][j];
-  };
+  auto value = [&](auto i, auto j) { return entry_value<Sys>(m, i, j); };
   auto rhs = [&](auto i, auto j) -> S {
     if constexpr (Sys::r[i][j] == entry::zero)
       return S(0);
