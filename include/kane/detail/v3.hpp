@@ -3,24 +3,30 @@
 // expression trees went through the stack (store-forwarding stalls).
 #pragma once
 
+#include <cstddef>
 #include <limits>
+#include <tuple>
 #include <type_traits>
+#include <utility>
 
 #include "kane/detail/inline.hpp"
 
 namespace kane::detail {
 
-// An array (of arrays) of S with every number NaN: caches before their first write.
+// Every number of a (an array of arrays of S) NaN, one store each: caches
+// before their first write. Not a block copy of a constant: the update that
+// follows a construction overwrites each number, and the optimiser drops the
+// stores it kills one by one (it keeps a copy of over 256 bytes whole).
+template <class A, std::size_t... I>
+KANE_ALWAYS_INLINE constexpr void fill_nan(A& a, std::index_sequence<I...>) {
+  if constexpr (requires { a[0].size(); })
+    (fill_nan(a[I], std::make_index_sequence<std::tuple_size_v<std::remove_cvref_t<decltype(a[0])>>>{}), ...);
+  else
+    ((a[I] = std::numeric_limits<std::remove_cvref_t<decltype(a[0])>>::quiet_NaN()), ...);
+}
 template <class A>
-constexpr A nan_filled() {
-  A a{};
-  for (auto& x : a) {
-    if constexpr (requires { x.size(); })
-      x = nan_filled<std::remove_cvref_t<decltype(x)>>();
-    else
-      x = std::numeric_limits<std::remove_cvref_t<decltype(x)>>::quiet_NaN();
-  }
-  return a;
+KANE_ALWAYS_INLINE constexpr void fill_nan(A& a) {
+  fill_nan(a, std::make_index_sequence<std::tuple_size_v<A>>{});
 }
 
 template <class S>

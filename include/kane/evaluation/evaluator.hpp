@@ -80,6 +80,12 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   using speed_set = Speeds;
   using typename pass_type::closure;
 
+  KANE_ALWAYS_INLINE evaluator() {  // NaN until the first update
+    detail::fill_nan(st_.q), detail::fill_nan(st_.qd), detail::fill_nan(st_.qdd);
+    detail::fill_nan(st_.u), detail::fill_nan(st_.ud), detail::fill_nan(st_.p);
+    st_.t = std::numeric_limits<scalar>::quiet_NaN();
+  }
+
   // The outward pass at a copy of s (later changes of s are not seen). With a
   // speed set, W and X at every level, q' and q'' from s.u and s.ud at the
   // velocity and acceleration levels. status() is ok only if the numbers of s
@@ -262,7 +268,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
     return all;
   }
 
-  St st_ = detail::nan_state<St>();
+  St st_;
   bool updated_ = false;
 };
 

@@ -26,8 +26,9 @@ template <class St, class Speeds>
 class kinematic_equations {
  protected:
   static constexpr bool solves = !std::is_void_v<Speeds>;
-  static constexpr bool direct = [] {  // q' = u or q' read from the state
-    if constexpr (solves)
+  // q' = u or q' read from the state (or no speed set: refused by the constructor)
+  static constexpr bool direct = [] {
+    if constexpr (SpeedSet<Speeds>)
       return Speeds::identity;
     else
       return true;
@@ -62,9 +63,15 @@ class kinematic_equations {
   // W_sr and X_s (0-based): numbers where the structure of Y does not fix them.
   scalar weight(std::size_t s, std::size_t r) const {
     const auto kind = w_pattern()[s][r];
-    return kind == entry::other ? kde_w_[s][r] : scalar(kind == entry::one);
+    if constexpr (!direct)
+      if (kind == entry::other) return kde_w_[s][r];
+    return scalar(kind == entry::one);
   }
-  scalar offset(std::size_t s) const { return offset_pattern()[s] ? kde_x_[s] : scalar(0); }
+  scalar offset(std::size_t s) const {
+    if constexpr (!direct)
+      if (offset_pattern()[s]) return kde_x_[s];
+    return scalar(0);
+  }
   // the stored numbers behind kde_weight<S + 1, R + 1> and kde_offset<S + 1>
   template <std::size_t S, std::size_t R>
   scalar stored_weight() const {
@@ -78,7 +85,8 @@ class kinematic_equations {
   }
 
  protected:
-  kinematic_equations() {
+  KANE_ALWAYS_INLINE kinematic_equations() {  // NaN until the first update
+    fill_nan(qd_), fill_nan(qdd_), fill_nan(kde_w_), fill_nan(kde_x_);
     static_assert(!solves || SpeedSet<Speeds>,
                   "kane: the fourth argument of evaluator is a speed set (speeds/generalized_speeds.hpp)");
     if constexpr (solves) {
@@ -210,12 +218,11 @@ class kinematic_equations {
   }
 
   solve_status status_ = solve_status::ok;
-  // NaN until the first update
-  std::array<scalar, nq> qd_ = nan_filled<std::array<scalar, nq>>();  // read at the velocity level and above
-  std::array<scalar, nq> qdd_ = nan_filled<std::array<scalar, nq>>();
-  table<scalar, nq, nq> kde_w_ =
-      nan_filled<table<scalar, nq, nq>>();  // W where its structure does not fix it
-  std::array<scalar, nq> kde_x_ = nan_filled<std::array<scalar, nq>>();
+  // held only where solved (nr) and where Y is no identity (nw)
+  static constexpr std::size_t nr = solves ? nq : 0, nw = direct ? 0 : nq;
+  std::array<scalar, nr> qd_, qdd_;  // read at the velocity level and above
+  table<scalar, nw, nw> kde_w_;      // W where its structure does not fix it
+  std::array<scalar, nw> kde_x_;
 };
 
 }  // namespace kane::detail

@@ -73,7 +73,11 @@ class outward_pass {
   static constexpr auto cached = step_coordinates<closure>::value;
   using trig_type = trig<scalar, cached>;
 
-  outward_pass() { init_roots(closure{}); }  // the pass writes every other frame
+  // NaN until the first update; the pass writes every frame but the roots
+  KANE_ALWAYS_INLINE outward_pass() {
+    fill_nan(trig_.s), fill_nan(trig_.c), fill_nan(c_), fill_nan(w_), fill_nan(a_);
+    init_roots(closure{});
+  }
 
   // One pass at the levels asked for, frame after frame.
   template <bool Pose, bool Velocity, bool Acceleration, class Rates>
@@ -288,11 +292,9 @@ class outward_pass {
       store3(a_[index<F>()].data(), alpha_below<F>(rates));
   }
 
-  trig_type trig_{nan_filled<decltype(trig_type::s)>(), nan_filled<decltype(trig_type::c)>()};
-  // NaN until the first update; e_F1, e_F2, e_F3 in R, column after column
-  std::array<std::array<scalar, 9>, size> c_ = nan_filled<std::array<std::array<scalar, 9>, size>>();
-  std::array<std::array<scalar, 3>, size> w_ = nan_filled<std::array<std::array<scalar, 3>, size>>();
-  std::array<std::array<scalar, 3>, size> a_ = nan_filled<std::array<std::array<scalar, 3>, size>>();
+  trig_type trig_;
+  std::array<std::array<scalar, 9>, size> c_;  // e_F1, e_F2, e_F3 in R, column after column
+  std::array<std::array<scalar, 3>, size> w_, a_;
 };
 
 }  // namespace detail

@@ -3,7 +3,6 @@
 
 #include <array>
 #include <cstddef>
-#include <limits>
 
 #include "kane/frames/coordinate.hpp"
 #include "kane/frames/scalar.hpp"
@@ -92,17 +91,5 @@ struct is_state<state<S, NQ, NU, NP>> : std::true_type {};
 
 template <class T>
 concept State = detail::is_state<T>::value;
-
-namespace detail {
-// Every number of the state NaN: what an evaluator holds before its first update.
-template <class St>
-constexpr St nan_state() {
-  constexpr auto nan = std::numeric_limits<typename St::scalar>::quiet_NaN();
-  St s;
-  s.q.fill(nan), s.qd.fill(nan), s.qdd.fill(nan), s.u.fill(nan), s.ud.fill(nan), s.p.fill(nan);
-  s.t = nan;
-  return s;
-}
-}  // namespace detail
 
 }  // namespace kane
