@@ -89,14 +89,71 @@ auto speed_rates(const Ev& ev) {  // u' of the evaluator's state
 }
 }  // namespace detail
 
-// M and f of the system Sys at the evaluator's state (level::acceleration).
-template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value equations_of_motion<typename Ev::scalar, detail::speeds_of<Ev>::n>
-mass_matrix_and_forcing(const Ev& ev) {
+namespace detail {
+// The columns the equations are written for. Every speed: M and f.
+template <std::size_t N>
+struct all_speeds {
+  static constexpr std::size_t n = N;
+  template <auto Nz>
+  static constexpr std::array<bool, n> nonzero() {
+    return Nz;
+  }
+  template <auto Nz, class V>
+  KANE_ALWAYS_INLINE const V& columns(const V& v) const {
+    return v;
+  }
+  template <auto Nz, class A, class V>
+  KANE_ALWAYS_INLINE void add_bias(A&, const V&) const {}
+};
+// The independent speeds of the constraints NH along v~ = v T (seed eq. 22):
+// v~_k = v_ind_k + sum_j v_dep_j A_jk, and v b = sum_j v_dep_j b_j adds to the
+// bias acceleration (u' = T u_ind' + b).
+template <class NH, class S>
+struct independent_speeds {
+  static constexpr std::size_t n = NH::p;
+  const Eigen::Matrix<S, int(NH::m), int(NH::p)>& A;
+  const std::array<S, NH::m>& b;
+  template <auto Nz>
+  static constexpr std::array<bool, n> nonzero() {
+    bool dependent = false;
+    for (std::size_t j = 0; j < NH::m; ++j) dependent = dependent || Nz[NH::dependents[j] - 1];
+    std::array<bool, n> out{};
+    for (std::size_t k = 0; k < n; ++k) out[k] = Nz[NH::independents[k] - 1] || dependent;
+    return out;
+  }
+  template <auto Nz, class V>
+  KANE_ALWAYS_INLINE Eigen::Matrix<S, 3, int(n)> columns(const V& v) const {
+    Eigen::Matrix<S, 3, int(n)> t;
+    static_for<n>([&](auto k) {
+      if constexpr (Nz[NH::independents[k] - 1])
+        t.col(Eigen::Index(k)) = v.col(Eigen::Index(NH::independents[k] - 1));
+      else
+        t.col(Eigen::Index(k)).setZero();
+      static_for<NH::m>([&](auto j) {
+        if constexpr (Nz[NH::dependents[j] - 1])
+          t.col(Eigen::Index(k)) +=
+              v.col(Eigen::Index(NH::dependents[j] - 1)) * A(Eigen::Index(j), Eigen::Index(k));
+      });
+    });
+    return t;
+  }
+  template <auto Nz, class X, class V>
+  KANE_ALWAYS_INLINE void add_bias(X& a0, const V& v) const {
+    static_for<NH::m>([&](auto j) {
+      if constexpr (Nz[NH::dependents[j] - 1]) a0 += v.col(Eigen::Index(NH::dependents[j] - 1)) * b[j];
+    });
+  }
+};
+
+// M and f along the columns Cols; RestRates: the caller's state has u' = 0 (the
+// right-hand sides of motion.hpp), so the bias accelerations are the evaluator's
+// (a - v u' would multiply by zeros).
+template <class Sys, bool RestRates, class Ev, class Cols>
+equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, const Cols& cols) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using Sp = detail::speeds_of<Ev>;
-  constexpr std::size_t n = Sp::n;
+  constexpr std::size_t n = Cols::n;
   static_assert(detail::forces_checked<Sys>(typename Sys::items{}));
   equations_of_motion<S, n> out{Eigen::Matrix<S, int(n), int(n)>::Zero(), Eigen::Matrix<S, int(n), 1>::Zero(),
                                 ev.status()};
@@ -109,12 +166,21 @@ mass_matrix_and_forcing(const Ev& ev) {
         }(),
         ...);
   }(typename Sys::items{});
+  // the partial velocities of x along the columns, and x's bias (a0 or alpha0)
+  const auto along = [&](const auto& x, const auto& x_dot, Eigen::Matrix<S, 3, 1>& bias) {
+    constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
+    const auto v = partial_velocities<R>(x, ev);
+    bias = detail::in_root<R>(x_dot, ev);
+    if constexpr (!RestRates) bias -= v * ud;
+    cols.template add_bias<nz>(bias, v);
+    return Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(v));
+  };
   const auto mass = [&](const auto& point_velocity, const auto& point_acceleration, const auto& m) {
-    const auto v = partial_velocities<R>(point_velocity, ev);
-    const Eigen::Matrix<S, 3, 1> a0 = detail::in_root<R>(point_acceleration, ev) - v * ud;
+    Eigen::Matrix<S, 3, 1> a0;
+    const auto v = along(point_velocity, point_acceleration, a0);
     const Eigen::Matrix<S, 3, int(n)> mv = detail::eval_scalar(m, ev) * v;
-    detail::add_upper<detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(point_velocity)>>()>(out.M, v,
-                                                                                                    mv);
+    constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(point_velocity)>>();
+    detail::add_upper<Cols::template nonzero<nz>()>(out.M, v, mv);
     out.f.noalias() += mv.transpose() * (g - a0);
   };
   [&]<class... X>(detail::list<X...>) {
@@ -127,29 +193,45 @@ mass_matrix_and_forcing(const Ev& ev) {
             using B = typename X::frame;
             using P = typename X::centre;
             mass(velocity<R, P>(), acceleration<R, P>(), X::mass);
-            const auto w = partial_velocities<R>(angular_velocity<R, B>(), ev);
+            Eigen::Matrix<S, 3, 1> alpha0;
+            const auto w = along(angular_velocity<R, B>(), angular_acceleration<R, B>(), alpha0);
             const Eigen::Matrix<S, 3, 3> i = detail::inertia_in_root<typename X::inertia_type>(ev);
             const Eigen::Matrix<S, 3, 1> omega = detail::in_root<R>(angular_velocity<R, B>(), ev);
-            const Eigen::Matrix<S, 3, 1> alpha0 =
-                detail::in_root<R>(angular_acceleration<R, B>(), ev) - w * ud;
             const Eigen::Matrix<S, 3, int(n)> iw = i * w;
-            detail::add_upper<detail::nonzero_columns<Sp, decltype(angular_velocity<R, B>())>()>(out.M, w,
-                                                                                                 iw);
+            constexpr auto nz = detail::nonzero_columns<Sp, decltype(angular_velocity<R, B>())>();
+            detail::add_upper<Cols::template nonzero<nz>()>(out.M, w, iw);
             out.f.noalias() -= w.transpose() * (i * alpha0 + omega.cross(i * omega));
           } else if constexpr (detail::is_force<X>) {
-            const auto v = partial_velocities<R>(velocity<R, typename X::point>(), ev);
-            out.f.noalias() += v.transpose() * detail::in_root<R>(X::vector, ev);
+            const auto x = velocity<R, typename X::point>();
+            const auto v = partial_velocities<R>(x, ev);
+            constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
+            out.f.noalias() += cols.template columns<nz>(v).transpose() * detail::in_root<R>(X::vector, ev);
           } else if constexpr (detail::is_torque<X>) {
-            const auto w = partial_velocities<R>(angular_velocity<R, typename X::frame>(), ev);
-            out.f.noalias() += w.transpose() * detail::in_root<R>(X::vector, ev);
+            const auto x = angular_velocity<R, typename X::frame>();
+            const auto w = partial_velocities<R>(x, ev);
+            constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
+            out.f.noalias() += cols.template columns<nz>(w).transpose() * detail::in_root<R>(X::vector, ev);
           }
         }(),
         ...);
   }(typename Sys::items{});
   out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
-  if (out.status == solve_status::ok && !(out.M.allFinite() && out.f.allFinite()))
+  if (out.status == solve_status::ok &&
+      !(detail::all_finite_matrix(out.M) && detail::all_finite_matrix(out.f)))
     out.status = solve_status::not_finite;
   return out;
+}
+template <class Sys, bool RestRates, class Ev>
+equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n> mass_matrix_and_forcing_at(const Ev& ev) {
+  return equations_along<Sys, RestRates>(ev, all_speeds<speeds_of<Ev>::n>{});
+}
+}  // namespace detail
+
+// M and f of the system Sys at the evaluator's state (level::acceleration).
+template <class Sys, class Ev>
+requires detail::is_evaluator<Ev>::value equations_of_motion<typename Ev::scalar, detail::speeds_of<Ev>::n>
+mass_matrix_and_forcing(const Ev& ev) {
+  return detail::mass_matrix_and_forcing_at<Sys, false>(ev);
 }
 
 // Kane's equations of a nonholonomic system (seed eq. 22) for its p independent
@@ -164,13 +246,13 @@ struct reduced_equations {
   Eigen::Matrix<S, int(N), int(P)> T;  // u' = T u_ind' + b
   Eigen::Matrix<S, int(N), 1> b;
 };
-template <class Sys, class NH, class Ev, class Sol>
-requires detail::is_evaluator<Ev>::value reduced_equations<typename Ev::scalar, NH::n, NH::p>
-reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
+namespace detail {
+template <class Sys, class NH, bool RestRates, class Ev, class Sol>
+reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_forcing_at(const Ev& ev,
+                                                                                        const Sol& sol) {
   using S = typename Ev::scalar;
   constexpr std::size_t n = NH::n, p = NH::p, m = NH::m;
   static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
-  const auto full = mass_matrix_and_forcing<Sys>(ev);
   const auto ud = detail::speed_rates(ev);
   reduced_equations<S, n, p> out;
   out.T.setZero();
@@ -181,7 +263,7 @@ reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
     constexpr auto dc = dt(std::get<k>(NH::equations));
     rest(Eigen::Index(k)) = detail::eval_scalar(dc, ev);
   });
-  rest -= sol.C * ud;
+  if constexpr (!RestRates) rest -= sol.C * ud;
   // b_dep = -C_dep^-1 (C' u + c0'), with the factors of C_dep that solve_constraints found
   using Dep = detail::dense_right_side<detail::constraint_system<NH>>;
   detail::table<S, m, 1> right, bd;
@@ -193,14 +275,18 @@ reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
     out.T.row(row) = sol.A.row(Eigen::Index(j));
     out.b(row) = -bd[j][0];
   }
-  out.reduced.M.noalias() = out.T.transpose() * full.M * out.T;
-  out.reduced.f.noalias() = out.T.transpose() * (full.f - full.M * out.b);
-  out.reduced.status = full.status != solve_status::ok  ? full.status
-                       : sol.status != solve_status::ok ? sol.status
-                                                        : solved;
-  if (out.reduced.status == solve_status::ok && !(out.reduced.M.allFinite() && out.reduced.f.allFinite()))
-    out.reduced.status = solve_status::not_finite;
+  std::array<S, m> b_dep;
+  for (std::size_t j = 0; j < m; ++j) b_dep[j] = -bd[j][0];
+  out.reduced = equations_along<Sys, RestRates>(ev, independent_speeds<NH, S>{sol.A, b_dep});
+  if (out.reduced.status == solve_status::ok) out.reduced.status = sol.status;
+  if (out.reduced.status == solve_status::ok) out.reduced.status = solved;
   return out;
+}
+}  // namespace detail
+template <class Sys, class NH, class Ev, class Sol>
+requires detail::is_evaluator<Ev>::value reduced_equations<typename Ev::scalar, NH::n, NH::p>
+reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
+  return detail::reduced_mass_matrix_and_forcing_at<Sys, NH, false>(ev, sol);
 }
 
 // u' = M^-1 f by a Cholesky factorization of fixed size; singular if M is not
@@ -212,7 +298,7 @@ std::pair<Eigen::Matrix<S, int(N), 1>, solve_status> speed_derivatives(const equ
   const Eigen::LLT<Eigen::Matrix<S, int(N), int(N)>> llt(e.M);
   if (llt.info() != Eigen::Success) return {ud, solve_status::singular};
   ud = llt.solve(e.f);
-  if (!ud.allFinite())
+  if (!detail::all_finite_matrix(ud))
     return {Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN()),
             solve_status::not_finite};
   return {ud, solve_status::ok};

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 
 #include "kane/dynamics/equations.hpp"
 
@@ -27,18 +28,15 @@ class motion {
 
   explicit motion(const state_type& s) : s_(s) { s_.ud = {}; }
 
+  // Numbers: one function body (the passes, the tables and Eigen's fixed-size
+  // loops inlined); jets (linearize.hpp) keep their calls.
+  template <class X, class DX>
+  KANE_FLATTEN void operator()(const X& x, DX& dxdt, scalar time) requires std::is_floating_point_v<scalar> {
+    step(x, dxdt, time);
+  }
   template <class X, class DX>
   void operator()(const X& x, DX& dxdt, scalar time) {
-    for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
-    for (std::size_t i = 0; i < nu; ++i) s_.u[i] = x[nq + i];
-    s_.t = time;
-    ev_.update(s_);
-    const auto [ud, status] = speed_derivatives(mass_matrix_and_forcing<Sys>(ev_));
-    const auto qd = ev_.coordinate_rates();
-    status_ = status;
-    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
-    for (std::size_t i = 0; i < nq; ++i) dxdt[i] = status == solve_status::ok ? qd[i] : nan;
-    for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = ud(Eigen::Index(i));
+    step(x, dxdt, time);
   }
 
   solve_status status() const { return status_; }
@@ -46,6 +44,20 @@ class motion {
   const Ev& evaluator() const { return ev_; }
 
  private:
+  template <class X, class DX>
+  void step(const X& x, DX& dxdt, scalar time) {
+    for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
+    for (std::size_t i = 0; i < nu; ++i) s_.u[i] = x[nq + i];
+    s_.t = time;
+    ev_.update(s_);
+    const auto [ud, status] = speed_derivatives(detail::mass_matrix_and_forcing_at<Sys, true>(ev_));
+    const auto qd = ev_.coordinate_rates();
+    status_ = status;
+    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
+    for (std::size_t i = 0; i < nq; ++i) dxdt[i] = status == solve_status::ok ? qd[i] : nan;
+    for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = ud(Eigen::Index(i));
+  }
+
   state_type s_;
   Ev ev_;
   solve_status status_ = solve_status::ok;
@@ -62,8 +74,25 @@ class constrained_motion {
 
   explicit constrained_motion(const state_type& s) : s_(s) { s_.ud = {}; }
 
+  // Numbers: one function body (the passes, the tables and Eigen's fixed-size
+  // loops inlined); jets (linearize.hpp) keep their calls.
+  template <class X, class DX>
+  KANE_FLATTEN void operator()(const X& x, DX& dxdt, scalar time) requires std::is_floating_point_v<scalar> {
+    step(x, dxdt, time);
+  }
   template <class X, class DX>
   void operator()(const X& x, DX& dxdt, scalar time) {
+    step(x, dxdt, time);
+  }
+
+  solve_status status() const { return status_; }
+  const Ev& evaluator() const { return ev_; }
+  // The state of the last call, its dependent speeds solved.
+  const state_type& state() const { return s_; }
+
+ private:
+  template <class X, class DX>
+  void step(const X& x, DX& dxdt, scalar time) {
     for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
     for (std::size_t k = 0; k < p; ++k) s_.u[NH::independents[k] - 1] = x[nq + k];
     s_.t = time;
@@ -75,7 +104,8 @@ class constrained_motion {
       s_.u[NH::dependents[j] - 1] = u;
     }
     ev_.update_speeds(s_);
-    const auto [ud, status] = speed_derivatives(reduced_mass_matrix_and_forcing<Sys, NH>(ev_, sol).reduced);
+    const auto [ud, status] =
+        speed_derivatives(detail::reduced_mass_matrix_and_forcing_at<Sys, NH, true>(ev_, sol).reduced);
     const auto qd = ev_.coordinate_rates();
     status_ = status;
     const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
@@ -83,12 +113,6 @@ class constrained_motion {
     for (std::size_t k = 0; k < p; ++k) dxdt[nq + k] = ud(Eigen::Index(k));
   }
 
-  solve_status status() const { return status_; }
-  const Ev& evaluator() const { return ev_; }
-  // The state of the last call, its dependent speeds solved.
-  const state_type& state() const { return s_; }
-
- private:
   state_type s_;
   Ev ev_;
   solve_status status_ = solve_status::ok;

@@ -35,6 +35,11 @@ template <class S, std::size_t N>
 constexpr bool all_finite(const std::array<S, N>& a) {
   return nonfinite_residue(a) == S(0);
 }
+// The same for an Eigen matrix of fixed size: one sum, no branch per entry.
+template <class M>
+bool all_finite_matrix(const M& m) {
+  return (m.array() - m.array()).sum() == typename M::Scalar(0);
+}
 }  // namespace detail
 
 }  // namespace kane
