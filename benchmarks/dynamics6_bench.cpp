@@ -25,6 +25,9 @@ void agree() {
     dynamics6::kdl_forward(in, o);
     const int n = sizeof(dynamics6::output) / sizeof(double);
     bench::require_agreement(std::fmax(bench::max_diff(k.M, h.M, n), bench::max_diff(o.M, h.M, n)));
+    dynamics6::output m{};  // kane's M alone (a pose-level evaluator)
+    dynamics6::kane_mass(in, m);
+    bench::require_agreement(bench::max_diff(m.M, h.M, 36));
   }
 }
 }  // namespace

@@ -43,8 +43,16 @@ void run(const dynamics6::input& in, dynamics6::output& out) {
   if constexpr (Forward)
     Eigen::Map<Eigen::Matrix<double, 6, 1>>(out.qdd) = kane::speed_derivatives(eom).first;
 }
+// M alone: the partial velocities need the pose only
+void mass_alone(const dynamics6::input& in, dynamics6::output& out) {
+  state s;
+  s.q = in.q;
+  kane::evaluator<state, kane::frames<B6>, kane::level::pose, kane::qdot_speeds<6>> ev;
+  ev.update(s);
+  Eigen::Map<Eigen::Matrix<double, 6, 6>>(out.M) = kane::mass_matrix<system>(ev).M;
+}
 }  // namespace
 
-void dynamics6::kane_mass(const input& in, output& out) { run<false>(in, out); }
+void dynamics6::kane_mass(const input& in, output& out) { mass_alone(in, out); }
 void dynamics6::kane_bias(const input& in, output& out) { run<false>(in, out); }
 void dynamics6::kane_forward(const input& in, output& out) { run<true>(in, out); }

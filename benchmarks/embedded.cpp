@@ -63,5 +63,9 @@ extern "C" int pendulum_step(const real* x, const real* p, real* dxdt) {
   for (int i = 0; i < 21; ++i) s.p[i] = p[i];
   kane::motion<m::system, evaluator> rhs(s);
   rhs(x, dxdt, real(0));
-  return rhs.status() == kane::solve_status::ok ? 0 : 1;
+  s.q = {x[0], x[1]};  // M alone, from the pose
+  kane::evaluator<state, kane::frames<m::B>, kane::level::pose, kane::qdot_speeds<2>> pose;
+  pose.update(s);
+  const auto mass = kane::mass_matrix<m::system>(pose);
+  return rhs.status() == kane::solve_status::ok && mass.status == kane::solve_status::ok ? 0 : 1;
 }

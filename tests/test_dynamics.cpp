@@ -3,6 +3,7 @@
 // links and for a free rigid body.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 
 #include <kane/kane.hpp>
 
@@ -114,6 +115,40 @@ TEST_CASE("dynamics: a free body with Euler parameters, a torque and a force aga
     const auto [ud, st] = kane::speed_derivatives(eom);
     for (int i = 0; i < 6; ++i) CHECK(ud(i) == Approx(x.ud[i]).margin(1e-13));
     CHECK(kane::kinetic_energy<fb::system>(ev) == Approx(x.T).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("dynamics: mass_matrix alone from a pose-level evaluator is SymPy's mass matrix") {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  using pose = kane::evaluator<pd::state, kane::frames<pd::B>, kane::level::pose, kane::qdot_speeds<2>>;
+  for (const auto& x : sympy_dynamics::pendulum) {
+    pd::state s;
+    for (int i = 0; i < 21; ++i) s.p[i] = sympy_dynamics::pendulum_p[i];
+    s.q = {x.q[0], x.q[1]};
+    s.u = {nan, nan};  // read at no level below velocity
+    pose ev;
+    ev.update(s);
+    const auto mm = kane::mass_matrix<pd::system>(ev);
+    REQUIRE(mm.status == kane::solve_status::ok);
+    for (int i = 0; i < 4; ++i) CHECK(mm.M(i / 2, i % 2) == Approx(x.M[i]).epsilon(1e-13));
+    s.q[1] = nan;
+    ev.update(s);
+    CHECK(kane::mass_matrix<pd::system>(ev).status == kane::solve_status::not_finite);
+  }
+  using body_pose =
+      kane::evaluator<fb::state, kane::frames<fb::B>, kane::level::pose, models::free_body::speeds>;
+  for (const auto& x : sympy_dynamics::body) {
+    fb::state s;
+    const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> c(x.dcm);
+    const Eigen::Quaterniond e(Eigen::Matrix3d(c.transpose()));
+    s.q = {e.w(), e.x(), e.y(), e.z(), x.q[3], x.q[4], x.q[5]};
+    const auto& bp = sympy_dynamics::body_p;
+    for (int i = 0; i < 17; ++i) s.p[i] = i < 3 ? bp[11 + i] : i < 14 ? bp[i - 3] : bp[i];
+    body_pose ev;
+    ev.update(s);
+    const auto mm = kane::mass_matrix<fb::system>(ev);
+    REQUIRE(mm.status == kane::solve_status::ok);
+    for (int i = 0; i < 36; ++i) CHECK(mm.M(i / 6, i % 6) == Approx(x.M[i]).margin(1e-14));
   }
 }
 

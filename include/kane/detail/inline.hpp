@@ -1,6 +1,8 @@
 // How evaluation code is inlined in optimized builds (g++ and clang).
 #pragma once
 
+#include <type_traits>
+
 // Entry points of evaluation inline their whole expression tree: common
 // subexpressions of one call meet in one function body (at -O2 too).
 #ifndef KANE_FLATTEN
@@ -30,3 +32,14 @@
 #define KANE_ALWAYS_INLINE inline
 #endif
 #endif
+
+namespace kane::detail {
+// f() in one function body when S is a number; other scalars (jets) keep
+// their calls, whose flattened bodies would multiply the compile's cost.
+template <class S, class F>
+requires std::is_floating_point_v<S> KANE_FLATTEN decltype(auto) flat(F&& f) { return f(); }
+template <class S, class F>
+decltype(auto) flat(F&& f) {
+  return f();
+}
+}  // namespace kane::detail

@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "kane/detail/inline.hpp"
 #include "kane/dynamics/bodies.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/status.hpp"
@@ -147,8 +148,9 @@ struct independent_speeds {
 
 // M and f along the columns Cols; RestRates: the caller's state has u' = 0 (the
 // right-hand sides of motion.hpp), so the bias accelerations are the evaluator's
-// (a - v u' would multiply by zeros).
-template <class Sys, bool RestRates, class Ev, class Cols>
+// (a - v u' would multiply by zeros); without Forcing, M alone (f stays 0: no
+// velocity, acceleration or load is read).
+template <class Sys, bool RestRates, bool Forcing, class Ev, class Cols>
 equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, const Cols& cols) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
@@ -162,7 +164,7 @@ equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, 
   [&]<class... X>(detail::list<X...>) {
     (
         [&] {
-          if constexpr (detail::is_gravity<X>) g += detail::in_root<R>(X::vector, ev);
+          if constexpr (Forcing && detail::is_gravity<X>) g += detail::in_root<R>(X::vector, ev);
         }(),
         ...);
   }(typename Sys::items{});
@@ -170,9 +172,11 @@ equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, 
   const auto along = [&](const auto& x, const auto& x_dot, Eigen::Matrix<S, 3, 1>& bias) {
     constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
     const auto v = partial_velocities<R>(x, ev);
-    bias = detail::in_root<R>(x_dot, ev);
-    if constexpr (!RestRates) bias -= v * ud;
-    cols.template add_bias<nz>(bias, v);
+    if constexpr (Forcing) {
+      bias = detail::in_root<R>(x_dot, ev);
+      if constexpr (!RestRates) bias -= v * ud;
+      cols.template add_bias<nz>(bias, v);
+    }
     return Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(v));
   };
   const auto mass = [&](const auto& point_velocity, const auto& point_acceleration, const auto& m) {
@@ -181,7 +185,7 @@ equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, 
     const Eigen::Matrix<S, 3, int(n)> mv = detail::eval_scalar(m, ev) * v;
     constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(point_velocity)>>();
     detail::add_upper<Cols::template nonzero<nz>()>(out.M, v, mv);
-    out.f.noalias() += mv.transpose() * (g - a0);
+    if constexpr (Forcing) out.f.noalias() += mv.transpose() * (g - a0);
   };
   [&]<class... X>(detail::list<X...>) {
     (
@@ -196,17 +200,19 @@ equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, 
             Eigen::Matrix<S, 3, 1> alpha0;
             const auto w = along(angular_velocity<R, B>(), angular_acceleration<R, B>(), alpha0);
             const Eigen::Matrix<S, 3, 3> i = detail::inertia_in_root<typename X::inertia_type>(ev);
-            const Eigen::Matrix<S, 3, 1> omega = detail::in_root<R>(angular_velocity<R, B>(), ev);
             const Eigen::Matrix<S, 3, int(n)> iw = i * w;
             constexpr auto nz = detail::nonzero_columns<Sp, decltype(angular_velocity<R, B>())>();
             detail::add_upper<Cols::template nonzero<nz>()>(out.M, w, iw);
-            out.f.noalias() -= w.transpose() * (i * alpha0 + omega.cross(i * omega));
-          } else if constexpr (detail::is_force<X>) {
+            if constexpr (Forcing) {
+              const Eigen::Matrix<S, 3, 1> omega = detail::in_root<R>(angular_velocity<R, B>(), ev);
+              out.f.noalias() -= w.transpose() * (i * alpha0 + omega.cross(i * omega));
+            }
+          } else if constexpr (Forcing && detail::is_force<X>) {
             const auto x = velocity<R, typename X::point>();
             const auto v = partial_velocities<R>(x, ev);
             constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
             out.f.noalias() += cols.template columns<nz>(v).transpose() * detail::in_root<R>(X::vector, ev);
-          } else if constexpr (detail::is_torque<X>) {
+          } else if constexpr (Forcing && detail::is_torque<X>) {
             const auto x = angular_velocity<R, typename X::frame>();
             const auto w = partial_velocities<R>(x, ev);
             constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
@@ -223,7 +229,7 @@ equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, 
 }
 template <class Sys, bool RestRates, class Ev>
 equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n> mass_matrix_and_forcing_at(const Ev& ev) {
-  return equations_along<Sys, RestRates>(ev, all_speeds<speeds_of<Ev>::n>{});
+  return equations_along<Sys, RestRates, true>(ev, all_speeds<speeds_of<Ev>::n>{});
 }
 }  // namespace detail
 
@@ -231,7 +237,26 @@ equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n> mass_matrix_and_forci
 template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value equations_of_motion<typename Ev::scalar, detail::speeds_of<Ev>::n>
 mass_matrix_and_forcing(const Ev& ev) {
-  return detail::mass_matrix_and_forcing_at<Sys, false>(ev);
+  return detail::flat<typename Ev::scalar>(
+      [&] { return detail::mass_matrix_and_forcing_at<Sys, false>(ev); });
+}
+
+// M alone, M_rs = sum m v_r . v_s + w_r . I . w_s: the partial velocities need the pose only,
+// so an evaluator of any level will do (level::pose computes least). status: the evaluator's,
+// or not_finite.
+template <class S, std::size_t N>
+struct mass_matrix_only {
+  Eigen::Matrix<S, int(N), int(N)> M;
+  solve_status status;
+};
+template <class Sys, class Ev>
+requires detail::is_evaluator<Ev>::value mass_matrix_only<typename Ev::scalar, detail::speeds_of<Ev>::n>
+mass_matrix(const Ev& ev) {
+  constexpr std::size_t n = detail::speeds_of<Ev>::n;
+  return detail::flat<typename Ev::scalar>([&] {
+    const auto e = detail::equations_along<Sys, true, false>(ev, detail::all_speeds<n>{});
+    return mass_matrix_only<typename Ev::scalar, n>{e.M, e.status};
+  });
 }
 
 // Kane's equations of a nonholonomic system (seed eq. 22) for its p independent
@@ -277,7 +302,7 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
   }
   std::array<S, m> b_dep;
   for (std::size_t j = 0; j < m; ++j) b_dep[j] = -bd[j][0];
-  out.reduced = equations_along<Sys, RestRates>(ev, independent_speeds<NH, S>{sol.A, b_dep});
+  out.reduced = equations_along<Sys, RestRates, true>(ev, independent_speeds<NH, S>{sol.A, b_dep});
   if (out.reduced.status == solve_status::ok) out.reduced.status = sol.status;
   if (out.reduced.status == solve_status::ok) out.reduced.status = solved;
   return out;
@@ -286,22 +311,27 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
 template <class Sys, class NH, class Ev, class Sol>
 requires detail::is_evaluator<Ev>::value reduced_equations<typename Ev::scalar, NH::n, NH::p>
 reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
-  return detail::reduced_mass_matrix_and_forcing_at<Sys, NH, false>(ev, sol);
+  return detail::flat<typename Ev::scalar>(
+      [&] { return detail::reduced_mass_matrix_and_forcing_at<Sys, NH, false>(ev, sol); });
 }
 
 // u' = M^-1 f by a Cholesky factorization of fixed size; singular if M is not
 // positive definite (a speed that moves no mass), with NaN.
 template <class S, std::size_t N>
 std::pair<Eigen::Matrix<S, int(N), 1>, solve_status> speed_derivatives(const equations_of_motion<S, N>& e) {
-  Eigen::Matrix<S, int(N), 1> ud = Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN());
-  if (e.status != solve_status::ok) return {ud, e.status};
-  const Eigen::LLT<Eigen::Matrix<S, int(N), int(N)>> llt(e.M);
-  if (llt.info() != Eigen::Success) return {ud, solve_status::singular};
-  ud = llt.solve(e.f);
-  if (!detail::all_finite_matrix(ud))
-    return {Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN()),
-            solve_status::not_finite};
-  return {ud, solve_status::ok};
+  using result = std::pair<Eigen::Matrix<S, int(N), 1>, solve_status>;
+  return detail::flat<S>([&]() -> result {
+    Eigen::Matrix<S, int(N), 1> ud =
+        Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN());
+    if (e.status != solve_status::ok) return {ud, e.status};
+    const Eigen::LLT<Eigen::Matrix<S, int(N), int(N)>> llt(e.M);
+    if (llt.info() != Eigen::Success) return {ud, solve_status::singular};
+    ud = llt.solve(e.f);
+    if (!detail::all_finite_matrix(ud))
+      return {Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN()),
+              solve_status::not_finite};
+    return {ud, solve_status::ok};
+  });
 }
 
 // T = sum m v . v / 2 + w . I . w / 2 at the evaluator's state (level::velocity or higher).

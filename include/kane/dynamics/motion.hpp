@@ -13,7 +13,6 @@
 
 #include <cstddef>
 #include <limits>
-#include <type_traits>
 
 #include "kane/dynamics/equations.hpp"
 
@@ -28,15 +27,10 @@ class motion {
 
   explicit motion(const state_type& s) : s_(s) { s_.ud = {}; }
 
-  // Numbers: one function body (the passes, the tables and Eigen's fixed-size
-  // loops inlined); jets (linearize.hpp) keep their calls.
-  template <class X, class DX>
-  KANE_FLATTEN void operator()(const X& x, DX& dxdt, scalar time) requires std::is_floating_point_v<scalar> {
-    step(x, dxdt, time);
-  }
+  // Numbers: one function body (the passes, the tables and Eigen's fixed-size loops inlined).
   template <class X, class DX>
   void operator()(const X& x, DX& dxdt, scalar time) {
-    step(x, dxdt, time);
+    detail::flat<scalar>([&] { step(x, dxdt, time); });
   }
 
   solve_status status() const { return status_; }
@@ -74,15 +68,10 @@ class constrained_motion {
 
   explicit constrained_motion(const state_type& s) : s_(s) { s_.ud = {}; }
 
-  // Numbers: one function body (the passes, the tables and Eigen's fixed-size
-  // loops inlined); jets (linearize.hpp) keep their calls.
-  template <class X, class DX>
-  KANE_FLATTEN void operator()(const X& x, DX& dxdt, scalar time) requires std::is_floating_point_v<scalar> {
-    step(x, dxdt, time);
-  }
+  // Numbers: one function body (the passes, the tables and Eigen's fixed-size loops inlined).
   template <class X, class DX>
   void operator()(const X& x, DX& dxdt, scalar time) {
-    step(x, dxdt, time);
+    detail::flat<scalar>([&] { step(x, dxdt, time); });
   }
 
   solve_status status() const { return status_; }
