@@ -6,3 +6,4 @@
 #include "kane/dynamics/equations.hpp"
 #include "kane/dynamics/generalized_forces.hpp"
 #include "kane/dynamics/motion.hpp"
+#include "kane/dynamics/reduced_equations.hpp"

@@ -106,46 +106,6 @@ struct all_speeds {
   template <auto Nz, class A, class V>
   KANE_ALWAYS_INLINE void add_bias(A&, const V&) const {}
 };
-// The independent speeds of the constraints NH along v~ = v T (seed eq. 22):
-// v~_k = v_ind_k + sum_j v_dep_j A_jk, and v b = sum_j v_dep_j b_j adds to the
-// bias acceleration (u' = T u_ind' + b).
-template <class NH, class S>
-struct independent_speeds {
-  static constexpr std::size_t n = NH::p;
-  const Eigen::Matrix<S, int(NH::m), int(NH::p)>& A;
-  const std::array<S, NH::m>& b;
-  template <auto Nz>
-  static constexpr std::array<bool, n> nonzero() {
-    bool dependent = false;
-    for (std::size_t j = 0; j < NH::m; ++j) dependent = dependent || Nz[NH::dependents[j] - 1];
-    std::array<bool, n> out{};
-    for (std::size_t k = 0; k < n; ++k) out[k] = Nz[NH::independents[k] - 1] || dependent;
-    return out;
-  }
-  template <auto Nz, class V>
-  KANE_ALWAYS_INLINE Eigen::Matrix<S, 3, int(n)> columns(const V& v) const {
-    Eigen::Matrix<S, 3, int(n)> t;
-    static_for<n>([&](auto k) {
-      if constexpr (Nz[NH::independents[k] - 1])
-        t.col(Eigen::Index(k)) = v.col(Eigen::Index(NH::independents[k] - 1));
-      else
-        t.col(Eigen::Index(k)).setZero();
-      static_for<NH::m>([&](auto j) {
-        if constexpr (Nz[NH::dependents[j] - 1])
-          t.col(Eigen::Index(k)) +=
-              v.col(Eigen::Index(NH::dependents[j] - 1)) * A(Eigen::Index(j), Eigen::Index(k));
-      });
-    });
-    return t;
-  }
-  template <auto Nz, class X, class V>
-  KANE_ALWAYS_INLINE void add_bias(X& a0, const V& v) const {
-    static_for<NH::m>([&](auto j) {
-      if constexpr (Nz[NH::dependents[j] - 1]) a0 += v.col(Eigen::Index(NH::dependents[j] - 1)) * b[j];
-    });
-  }
-};
-
 // M and f along the columns Cols; RestRates: the caller's state has u' = 0 (the
 // right-hand sides of motion.hpp), so the bias accelerations are the evaluator's
 // (a - v u' would multiply by zeros); without Forcing, M alone (f stays 0: no
@@ -257,62 +217,6 @@ mass_matrix(const Ev& ev) {
     const auto e = detail::equations_along<Sys, true, false>(ev, detail::all_speeds<n>{});
     return mass_matrix_only<typename Ev::scalar, n>{e.M, e.status};
   });
-}
-
-// Kane's equations of a nonholonomic system (seed eq. 22) for its p independent
-// speeds: with u_dep = A u_ind + B (sol, of the constraints NH at ev's state),
-// u' = T u_ind' + b, T = [1; A] (rows in speed order) and b = u_dep' at u_ind' = 0
-// from the differentiated constraints, C u' + (C' u + c0') = 0; then
-// M~ = T^T M T and f~ = T^T (f - M b): the equations along the nonholonomic partial
-// velocities v~_r (the constraint forces do no work there). u_dep' = A u_ind' + b_dep.
-template <class S, std::size_t N, std::size_t P>
-struct reduced_equations {
-  equations_of_motion<S, P> reduced;   // M~ u_ind' = f~
-  Eigen::Matrix<S, int(N), int(P)> T;  // u' = T u_ind' + b
-  Eigen::Matrix<S, int(N), 1> b;
-};
-namespace detail {
-template <class Sys, class NH, bool RestRates, class Ev, class Sol>
-reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_forcing_at(const Ev& ev,
-                                                                                        const Sol& sol) {
-  using S = typename Ev::scalar;
-  constexpr std::size_t n = NH::n, p = NH::p, m = NH::m;
-  static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
-  const auto ud = detail::speed_rates(ev);
-  reduced_equations<S, n, p> out;
-  out.T.setZero();
-  out.b.setZero();
-  for (std::size_t k = 0; k < p; ++k) out.T(Eigen::Index(NH::independents[k] - 1), Eigen::Index(k)) = S(1);
-  Eigen::Matrix<S, int(m), 1> rest;  // C' u + c0' = dt(c) - C u'
-  detail::static_for<m>([&](auto k) {
-    constexpr auto dc = dt(std::get<k>(NH::equations));
-    rest(Eigen::Index(k)) = detail::eval_scalar(dc, ev);
-  });
-  if constexpr (!RestRates) rest -= sol.C * ud;
-  // b_dep = -C_dep^-1 (C' u + c0'), with the factors of C_dep that solve_constraints found
-  using Dep = detail::dense_right_side<detail::constraint_system<NH>>;
-  detail::table<S, m, 1> right, bd;
-  for (std::size_t k = 0; k < m; ++k) right[k][0] = rest(Eigen::Index(k));
-  const solve_status solved =
-      detail::substitute_structured<Dep>(sol.dependent.m, sol.dependent.factors, right, bd);
-  for (std::size_t j = 0; j < m; ++j) {
-    const auto row = Eigen::Index(NH::dependents[j] - 1);
-    out.T.row(row) = sol.A.row(Eigen::Index(j));
-    out.b(row) = -bd[j][0];
-  }
-  std::array<S, m> b_dep;
-  for (std::size_t j = 0; j < m; ++j) b_dep[j] = -bd[j][0];
-  out.reduced = equations_along<Sys, RestRates, true>(ev, independent_speeds<NH, S>{sol.A, b_dep});
-  if (out.reduced.status == solve_status::ok) out.reduced.status = sol.status;
-  if (out.reduced.status == solve_status::ok) out.reduced.status = solved;
-  return out;
-}
-}  // namespace detail
-template <class Sys, class NH, class Ev, class Sol>
-requires detail::is_evaluator<Ev>::value reduced_equations<typename Ev::scalar, NH::n, NH::p>
-reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
-  return detail::flat<typename Ev::scalar>(
-      [&] { return detail::reduced_mass_matrix_and_forcing_at<Sys, NH, false>(ev, sol); });
 }
 
 // u' = M^-1 f by a Cholesky factorization of fixed size; singular if M is not

@@ -14,7 +14,7 @@
 #include <cstddef>
 #include <limits>
 
-#include "kane/dynamics/equations.hpp"
+#include "kane/dynamics/reduced_equations.hpp"
 
 namespace kane {
 

@@ -73,10 +73,8 @@ class outward_pass {
   static constexpr auto cached = step_coordinates<closure>::value;
   using trig_type = trig<scalar, cached>;
 
-  // NaN until the first update; the pass writes every frame but the roots
-  KANE_ALWAYS_INLINE outward_pass() {
-    fill_nan(trig_.s), fill_nan(trig_.c), fill_nan(c_), fill_nan(w_), fill_nan(a_);
-    init_roots(closure{});
+  KANE_ALWAYS_INLINE outward_pass() {  // NaN until the first update; the pass writes all but the roots
+    fill_nan(trig_.s), fill_nan(trig_.c), fill_nan(c_), fill_nan(w_), fill_nan(a_), init_roots(closure{});
   }
 
   // One pass at the levels asked for, frame after frame.
@@ -298,5 +296,4 @@ class outward_pass {
 };
 
 }  // namespace detail
-
 }  // namespace kane
