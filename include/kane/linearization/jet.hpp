@@ -11,6 +11,7 @@
 #include <cmath>
 #include <concepts>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -20,10 +21,28 @@
 
 namespace kane {
 
+namespace detail {
+// Bytes of the widest vector register of the target (GCC and Clang predefine these).
+#if defined(__AVX512F__)
+inline constexpr std::size_t simd_bytes = 64;
+#elif defined(__AVX__)
+inline constexpr std::size_t simd_bytes = 32;
+#elif defined(__SSE2__) || defined(__ARM_NEON)
+inline constexpr std::size_t simd_bytes = 16;
+#else
+inline constexpr std::size_t simd_bytes = 0;
+#endif
+}  // namespace detail
+
 template <std::floating_point S, std::size_t N>
 struct jet {
+  // The derivatives are worked in chunks of one vector register (a vector type of GCC
+  // and Clang), N rounded up to whole chunks: d[N], ... is padding, never read.
+  static constexpr std::size_t width = detail::simd_bytes > sizeof(S) ? detail::simd_bytes / sizeof(S) : 1,
+                               lanes = (N + width - 1) / width * width;
+  typedef S chunk __attribute__((vector_size(sizeof(S) * width), aligned(alignof(S))));
   S v;
-  std::array<S, N> d;
+  std::array<S, lanes> d;
 
   constexpr jet() : v(), d() {}
   template <class T>
@@ -38,39 +57,62 @@ struct jet {
     return r;
   }
 
-  // (value, f(0), ..., f(N - 1)) unrolled: jet arithmetic inlines into straight-line
-  // code the vectorizer packs, with no loop and no copy of an operand.
+  // f(part) for the parts of the result: a whole chunk at run time (unrolled), one
+  // lane in a constant expression; get(a, part) reads a's derivatives there.
+  struct lane {
+    std::size_t i;
+  };
+  struct block {
+    std::size_t k;
+  };
+  static constexpr S get(const jet& a, lane p) { return a.d[p.i]; }
+  static chunk get(const jet& a, block p) {
+    chunk x;
+    std::memcpy(&x, &a.d[p.k], sizeof x);
+    return x;
+  }
   template <class F>
   static constexpr jet make(S value, F f) {
     jet r{raw{}};
     r.v = value;
+    if (std::is_constant_evaluated()) {
+      for (std::size_t i = 0; i < lanes; ++i) r.d[i] = f(lane{i});
+    } else {
 #pragma GCC unroll 16
-    for (std::size_t i = 0; i < N; ++i) r.d[i] = f(i);
+      for (std::size_t k = 0; k < lanes; k += width) {
+        const chunk x = f(block{k});
+        std::memcpy(&r.d[k], &x, sizeof x);
+      }
+    }
     return r;
   }
   friend constexpr jet operator+(const jet& a, const jet& b) {
-    return make(a.v + b.v, [&](std::size_t i) { return a.d[i] + b.d[i]; });
+    return make(a.v + b.v, [&](auto p) { return get(a, p) + get(b, p); });
   }
   friend constexpr jet operator-(const jet& a, const jet& b) {
-    return make(a.v - b.v, [&](std::size_t i) { return a.d[i] - b.d[i]; });
+    return make(a.v - b.v, [&](auto p) { return get(a, p) - get(b, p); });
   }
   friend constexpr jet operator*(const jet& a, const jet& b) {
-    return make(a.v * b.v, [&](std::size_t i) { return a.d[i] * b.v + a.v * b.d[i]; });
+    return make(a.v * b.v, [&](auto p) { return get(a, p) * b.v + a.v * get(b, p); });
   }
   friend constexpr jet operator/(const jet& a, const jet& b) {
     const S r = S(1) / b.v, q = a.v * r;
-    return make(q, [&](std::size_t i) { return (a.d[i] - q * b.d[i]) * r; });
+    return make(q, [&](auto p) { return (get(a, p) - q * get(b, p)) * r; });
   }
   friend constexpr jet operator+(const jet& a) { return a; }
   friend constexpr jet operator-(const jet& a) {
-    return make(-a.v, [&](std::size_t i) { return -a.d[i]; });
+    return make(-a.v, [&](auto p) { return -get(a, p); });
   }
   constexpr jet& operator+=(const jet& b) { return *this = *this + b; }
   constexpr jet& operator-=(const jet& b) { return *this = *this - b; }
   constexpr jet& operator*=(const jet& b) { return *this = *this * b; }
   constexpr jet& operator/=(const jet& b) { return *this = *this / b; }
 
-  friend constexpr bool operator==(const jet& a, const jet& b) { return a.v == b.v && a.d == b.d; }
+  friend constexpr bool operator==(const jet& a, const jet& b) {
+    bool same = a.v == b.v;
+    for (std::size_t i = 0; i < N; ++i) same = same && a.d[i] == b.d[i];
+    return same;
+  }
   friend constexpr bool operator<(const jet& a, const jet& b) { return a.v < b.v; }
   friend constexpr bool operator>(const jet& a, const jet& b) { return a.v > b.v; }
   friend constexpr bool operator<=(const jet& a, const jet& b) { return a.v <= b.v; }
@@ -78,7 +120,7 @@ struct jet {
 
   // f(v) + f'(v) d
   friend constexpr jet chain(const jet& a, S f, S df) {
-    return make(f, [&](std::size_t i) { return df * a.d[i]; });
+    return make(f, [&](auto p) { return df * get(a, p); });
   }
   friend jet sin(const jet& a) { return chain(a, std::sin(a.v), std::cos(a.v)); }
   friend jet cos(const jet& a) { return chain(a, std::cos(a.v), -std::sin(a.v)); }
@@ -98,18 +140,18 @@ struct jet {
   friend jet atan(const jet& a) { return chain(a, std::atan(a.v), S(1) / (S(1) + a.v * a.v)); }
   friend jet atan2(const jet& y, const jet& x) {
     const S r = S(1) / (x.v * x.v + y.v * y.v);
-    return make(std::atan2(y.v, x.v), [&](std::size_t i) { return (x.v * y.d[i] - y.v * x.d[i]) * r; });
+    return make(std::atan2(y.v, x.v), [&](auto p) { return (x.v * get(y, p) - y.v * get(x, p)) * r; });
   }
   friend jet abs(const jet& a) { return a.v < S(0) ? -a : a; }
   friend jet ldexp(jet a, int e) {
     a.v = std::ldexp(a.v, e);
-    for (S& x : a.d) x = std::ldexp(x, e);
+    for (std::size_t i = 0; i < N; ++i) a.d[i] = std::ldexp(a.d[i], e);
     return a;
   }
   friend jet frexp(const jet& a, int* e) { return ldexp(a, -(std::frexp(a.v, e), *e)); }
   friend bool isfinite(const jet& a) {
     bool f = std::isfinite(a.v);
-    for (S x : a.d) f = f && std::isfinite(x);
+    for (std::size_t i = 0; i < N; ++i) f = f && std::isfinite(a.d[i]);
     return f;
   }
 };
