@@ -29,6 +29,7 @@
 #include "kane/detail/invert.hpp"
 #include "kane/detail/structure.hpp"
 #include "kane/evaluation/status.hpp"
+#include "kane/frames/scalar.hpp"
 
 namespace kane::detail {
 
@@ -102,8 +103,9 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
     return false;
   }();
   if constexpr (coupled) {
-    if (constexpr S lo = pow2<S>(limits::min_exponent / 2), hi = pow2<S>(limits::max_exponent / 2);
-        scale > S(0) && scale <= limits::max() && !(scale >= lo && scale <= hi)) {
+    using real = typename real_type<S>::type;
+    if (constexpr real lo = pow2<real>(limits::min_exponent / 2), hi = pow2<real>(limits::max_exponent / 2);
+        scale > S(0) && scale <= limits::max() && !(scale >= S(lo) && scale <= S(hi))) {
       using std::frexp, std::ldexp;
       int e = 0;
       frexp(scale, &e);
@@ -117,10 +119,11 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
     if constexpr (size == 1) {
       constexpr std::size_t c = Sys::form.order[first], row = Sys::form.row[c];
       if constexpr (Sys::m[row][c] == entry::other) {
-        constexpr S inverse_tol =
-            S(1) / (limits::epsilon() * S(n > 0 ? n : 1));  // |p| > tol as |p| / (eps n) > scale
+        using real = typename real_type<S>::type;
+        constexpr real inverse_tol = real(1) / (std::numeric_limits<real>::epsilon() *
+                                                real(n > 0 ? n : 1));  // |p| > tol as |p| / (eps n) > scale
         const S pivot = m[row][c];
-        out.singular = out.singular || (pivot == pivot && !(abs(pivot) * inverse_tol > scale));
+        out.singular = out.singular || (pivot == pivot && !(abs(pivot) * S(inverse_tol) > scale));
       }
     } else {
       const S f = out.f, tol = limits::epsilon() * S(n) * (scale * f);

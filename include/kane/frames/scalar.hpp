@@ -9,6 +9,12 @@ namespace kane {
 template <class S>
 struct is_scalar : std::bool_constant<std::floating_point<S>> {};
 
+// The real numbers S is built on (S itself; a jet's value type).
+template <class S>
+struct real_type {
+  using type = S;
+};
+
 template <class S>
 concept Scalar = is_scalar<S>::value;
 

@@ -11,7 +11,6 @@
 #include <cmath>
 #include <concepts>
 #include <cstddef>
-#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -36,97 +35,76 @@ inline constexpr std::size_t simd_bytes = 0;
 
 template <std::floating_point S, std::size_t N>
 struct jet {
-  // The derivatives are worked in chunks of one vector register (a vector type of GCC
-  // and Clang), N rounded up to whole chunks: d[N], ... is padding, never read.
+  // The derivatives in chunks of one vector register (a vector type of GCC and Clang),
+  // N rounded up to whole chunks; part(i) reads d_i. Arithmetic works chunk by chunk,
+  // so no jet is a constant expression (Clang does not evaluate vector types there).
   static constexpr std::size_t width = detail::simd_bytes > sizeof(S) ? detail::simd_bytes / sizeof(S) : 1,
-                               lanes = (N + width - 1) / width * width;
+                               chunks = (N + width - 1) / width;
   typedef S chunk __attribute__((vector_size(sizeof(S) * width), aligned(alignof(S))));
   S v;
-  std::array<S, lanes> d;
+  chunk c[chunks];
 
-  constexpr jet() : v(), d() {}
+  jet() : v(), c() {}
   template <class T>
-  requires std::is_arithmetic_v<T>
-  constexpr jet(T value) : v(S(value)), d() {}  // NOLINT: numbers convert as constants
-  struct raw {};
-  constexpr explicit jet(raw) {}  // NOLINT: every part written before it is read
+  requires std::is_arithmetic_v<T> jet(T value) : v(S(value)), c() {}  // NOLINT: numbers convert as constants
   // x_i: the value x seeded in direction i.
-  static constexpr jet variable(S x, std::size_t i) {
+  static jet variable(S x, std::size_t i) {
     jet r(x);
-    r.d[i] = S(1);
+    r.c[i / width][i % width] = S(1);
     return r;
   }
+  S part(std::size_t i) const { return c[i / width][i % width]; }
 
-  // f(part) for the parts of the result: a whole chunk at run time (unrolled), one
-  // lane in a constant expression; get(a, part) reads a's derivatives there.
-  struct lane {
-    std::size_t i;
-  };
-  struct block {
-    std::size_t k;
-  };
-  static constexpr S get(const jet& a, lane p) { return a.d[p.i]; }
-  static chunk get(const jet& a, block p) {
-    chunk x;
-    std::memcpy(&x, &a.d[p.k], sizeof x);
-    return x;
-  }
+  // (value, f(c_0), f(c_1), ...) unrolled: jet arithmetic inlines into straight-line code.
   template <class F>
-  static constexpr jet make(S value, F f) {
-    jet r{raw{}};
+  static jet make(S value, F f) {
+    jet r;
     r.v = value;
-    if (std::is_constant_evaluated()) {
-      for (std::size_t i = 0; i < lanes; ++i) r.d[i] = f(lane{i});
-    } else {
 #pragma GCC unroll 16
-      for (std::size_t k = 0; k < lanes; k += width) {
-        const chunk x = f(block{k});
-        std::memcpy(&r.d[k], &x, sizeof x);
-      }
-    }
+    for (std::size_t k = 0; k < chunks; ++k) r.c[k] = f(k);
     return r;
   }
-  friend constexpr jet operator+(const jet& a, const jet& b) {
-    return make(a.v + b.v, [&](auto p) { return get(a, p) + get(b, p); });
+  friend jet operator+(const jet& a, const jet& b) {
+    return make(a.v + b.v, [&](std::size_t k) { return a.c[k] + b.c[k]; });
   }
-  friend constexpr jet operator-(const jet& a, const jet& b) {
-    return make(a.v - b.v, [&](auto p) { return get(a, p) - get(b, p); });
+  friend jet operator-(const jet& a, const jet& b) {
+    return make(a.v - b.v, [&](std::size_t k) { return a.c[k] - b.c[k]; });
   }
-  friend constexpr jet operator*(const jet& a, const jet& b) {
-    return make(a.v * b.v, [&](auto p) { return get(a, p) * b.v + a.v * get(b, p); });
+  friend jet operator*(const jet& a, const jet& b) {
+    return make(a.v * b.v, [&](std::size_t k) { return a.c[k] * b.v + a.v * b.c[k]; });
   }
-  friend constexpr jet operator/(const jet& a, const jet& b) {
+  friend jet operator/(const jet& a, const jet& b) {
     const S r = S(1) / b.v, q = a.v * r;
-    return make(q, [&](auto p) { return (get(a, p) - q * get(b, p)) * r; });
+    return make(q, [&](std::size_t k) { return (a.c[k] - q * b.c[k]) * r; });
   }
-  friend constexpr jet operator+(const jet& a) { return a; }
-  friend constexpr jet operator-(const jet& a) {
-    return make(-a.v, [&](auto p) { return -get(a, p); });
+  friend jet operator+(const jet& a) { return a; }
+  friend jet operator-(const jet& a) {
+    return make(-a.v, [&](std::size_t k) { return -a.c[k]; });
   }
-  constexpr jet& operator+=(const jet& b) { return *this = *this + b; }
-  constexpr jet& operator-=(const jet& b) { return *this = *this - b; }
-  constexpr jet& operator*=(const jet& b) { return *this = *this * b; }
-  constexpr jet& operator/=(const jet& b) { return *this = *this / b; }
+  jet& operator+=(const jet& b) { return *this = *this + b; }
+  jet& operator-=(const jet& b) { return *this = *this - b; }
+  jet& operator*=(const jet& b) { return *this = *this * b; }
+  jet& operator/=(const jet& b) { return *this = *this / b; }
 
-  friend constexpr bool operator==(const jet& a, const jet& b) {
+  friend bool operator==(const jet& a, const jet& b) {
     bool same = a.v == b.v;
-    for (std::size_t i = 0; i < N; ++i) same = same && a.d[i] == b.d[i];
+    for (std::size_t i = 0; i < N; ++i) same = same && a.part(i) == b.part(i);
     return same;
   }
-  friend constexpr bool operator<(const jet& a, const jet& b) { return a.v < b.v; }
-  friend constexpr bool operator>(const jet& a, const jet& b) { return a.v > b.v; }
-  friend constexpr bool operator<=(const jet& a, const jet& b) { return a.v <= b.v; }
-  friend constexpr bool operator>=(const jet& a, const jet& b) { return a.v >= b.v; }
+  friend bool operator<(const jet& a, const jet& b) { return a.v < b.v; }
+  friend bool operator>(const jet& a, const jet& b) { return a.v > b.v; }
+  friend bool operator<=(const jet& a, const jet& b) { return a.v <= b.v; }
+  friend bool operator>=(const jet& a, const jet& b) { return a.v >= b.v; }
 
   // f(v) + f'(v) d
-  friend constexpr jet chain(const jet& a, S f, S df) {
-    return make(f, [&](auto p) { return df * get(a, p); });
+  friend jet chain(const jet& a, S f, S df) {
+    return make(f, [&](std::size_t k) { return df * a.c[k]; });
   }
   friend jet sin(const jet& a) { return chain(a, std::sin(a.v), std::cos(a.v)); }
   friend jet cos(const jet& a) { return chain(a, std::cos(a.v), -std::sin(a.v)); }
   friend jet tan(const jet& a) {
-    const S c = std::cos(a.v);
-    return chain(a, std::tan(a.v), S(1) / (c * c));
+    const S cos_v = std::cos(a.v);
+    return chain(a, std::tan(a.v), S(1) / (cos_v * cos_v));
   }
   friend jet sqrt(const jet& a) {
     const S r = std::sqrt(a.v);
@@ -140,36 +118,40 @@ struct jet {
   friend jet atan(const jet& a) { return chain(a, std::atan(a.v), S(1) / (S(1) + a.v * a.v)); }
   friend jet atan2(const jet& y, const jet& x) {
     const S r = S(1) / (x.v * x.v + y.v * y.v);
-    return make(std::atan2(y.v, x.v), [&](auto p) { return (x.v * get(y, p) - y.v * get(x, p)) * r; });
+    return make(std::atan2(y.v, x.v), [&](std::size_t k) { return (x.v * y.c[k] - y.v * x.c[k]) * r; });
   }
   friend jet abs(const jet& a) { return a.v < S(0) ? -a : a; }
   friend jet ldexp(jet a, int e) {
     a.v = std::ldexp(a.v, e);
-    for (std::size_t i = 0; i < N; ++i) a.d[i] = std::ldexp(a.d[i], e);
+    for (std::size_t i = 0; i < N; ++i) a.c[i / width][i % width] = std::ldexp(a.part(i), e);
     return a;
   }
   friend jet frexp(const jet& a, int* e) { return ldexp(a, -(std::frexp(a.v, e), *e)); }
   friend bool isfinite(const jet& a) {
     bool f = std::isfinite(a.v);
-    for (std::size_t i = 0; i < N; ++i) f = f && std::isfinite(a.d[i]);
+    for (std::size_t i = 0; i < N; ++i) f = f && std::isfinite(a.part(i));
     return f;
   }
 };
 
 template <class S, std::size_t N>
 struct is_scalar<jet<S, N>> : std::true_type {};
+template <class S, std::size_t N>
+struct real_type<jet<S, N>> {
+  using type = S;
+};
 
 }  // namespace kane
 
 template <class S, std::size_t N>
 class std::numeric_limits<kane::jet<S, N>> : public std::numeric_limits<S> {
  public:
-  static constexpr kane::jet<S, N> epsilon() noexcept { return std::numeric_limits<S>::epsilon(); }
-  static constexpr kane::jet<S, N> quiet_NaN() noexcept { return std::numeric_limits<S>::quiet_NaN(); }
-  static constexpr kane::jet<S, N> infinity() noexcept { return std::numeric_limits<S>::infinity(); }
-  static constexpr kane::jet<S, N> max() noexcept { return std::numeric_limits<S>::max(); }
-  static constexpr kane::jet<S, N> min() noexcept { return std::numeric_limits<S>::min(); }
-  static constexpr kane::jet<S, N> lowest() noexcept { return std::numeric_limits<S>::lowest(); }
+  static kane::jet<S, N> epsilon() noexcept { return std::numeric_limits<S>::epsilon(); }
+  static kane::jet<S, N> quiet_NaN() noexcept { return std::numeric_limits<S>::quiet_NaN(); }
+  static kane::jet<S, N> infinity() noexcept { return std::numeric_limits<S>::infinity(); }
+  static kane::jet<S, N> max() noexcept { return std::numeric_limits<S>::max(); }
+  static kane::jet<S, N> min() noexcept { return std::numeric_limits<S>::min(); }
+  static kane::jet<S, N> lowest() noexcept { return std::numeric_limits<S>::lowest(); }
 };
 
 template <class S, std::size_t N>

@@ -143,8 +143,8 @@ auto linearize(const typename Ev::state_type& s) {
   linear_model<S, nx, In::n> out;
   for (std::size_t i = 0; i < nx; ++i) {
     out.rate(Eigen::Index(i)) = dx[i].v;
-    for (std::size_t j = 0; j < nx; ++j) out.A(Eigen::Index(i), Eigen::Index(j)) = dx[i].d[j];
-    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(i), Eigen::Index(k)) = dx[i].d[nx + k];
+    for (std::size_t j = 0; j < nx; ++j) out.A(Eigen::Index(i), Eigen::Index(j)) = dx[i].part(j);
+    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(i), Eigen::Index(k)) = dx[i].part(nx + k);
   }
   out.status = rhs.status();
   return out;
@@ -167,8 +167,8 @@ auto linearize_constrained(const typename Ev::state_type& s) {
   for (std::size_t i = 0; i < nx; ++i) {
     const J& r = i < qi.size() ? dx[qi[i] - 1] : dx[nq + i - qi.size()];
     out.rate(Eigen::Index(i)) = r.v;
-    for (std::size_t j = 0; j < nx; ++j) out.A(Eigen::Index(i), Eigen::Index(j)) = r.d[j];
-    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(i), Eigen::Index(k)) = r.d[nx + k];
+    for (std::size_t j = 0; j < nx; ++j) out.A(Eigen::Index(i), Eigen::Index(j)) = r.part(j);
+    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(i), Eigen::Index(k)) = r.part(nx + k);
   }
   out.status = status != solve_status::ok ? status : rhs.status();
   return out;
@@ -197,9 +197,9 @@ auto linearize_equations(const typename Ev::state_type& s) {
       out.M(Eigen::Index(r), Eigen::Index(c)) = m.v;
       res += m * J(dx[nq + c].v);
     }
-    for (std::size_t j = 0; j < qi.size(); ++j) out.K(Eigen::Index(r), Eigen::Index(j)) = res.d[j];
-    for (std::size_t c = 0; c < p; ++c) out.C(Eigen::Index(r), Eigen::Index(c)) = res.d[qi.size() + c];
-    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(r), Eigen::Index(k)) = -res.d[nx + k];
+    for (std::size_t j = 0; j < qi.size(); ++j) out.K(Eigen::Index(r), Eigen::Index(j)) = res.part(j);
+    for (std::size_t c = 0; c < p; ++c) out.C(Eigen::Index(r), Eigen::Index(c)) = res.part(qi.size() + c);
+    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(r), Eigen::Index(k)) = -res.part(nx + k);
   }
   out.status = status != solve_status::ok ? status : rhs.status();
   return out;
