@@ -65,6 +65,12 @@ template <class St, class Fr, level L, class Sp, class T>
 struct rebind_evaluator<evaluator<St, Fr, L, Sp>, T> {
   using type = evaluator<typename rebind_state<St, T>::type, Fr, L, Sp>;
 };
+template <class Ev>
+struct pose_evaluator;
+template <class St, class Fr, level L, class Sp>
+struct pose_evaluator<evaluator<St, Fr, L, Sp>> {
+  using type = evaluator<St, Fr, level::pose, Sp>;
+};
 // The state s in jets of N directions, every number constant.
 template <std::size_t N, class St>
 auto lift(const St& s) {
@@ -102,7 +108,36 @@ constexpr auto independent_coordinates() {
   }
   return out;
 }
-// The jet state of x = (q_ind, u_ind) and the inputs at s: q_dep by one Newton step.
+// At s, which closes H: dq_dep = -J_dep^-1 J_ind dq_ind (the implicit function theorem), J the
+// symbolic partial derivatives of H evaluated by one pose pass on numbers, added to q_dep's jets.
+template <class H, class Ev, class JSt>
+solve_status dependent_jets(const typename Ev::state_type& s, JSt& js) {
+  using S = typename Ev::scalar;
+  using J = typename JSt::scalar;
+  using Sys = newton_system<H>;
+  constexpr std::size_t m = H::m;
+  constexpr auto qi = independent_coordinates<H, Ev::state_type::nq>();
+  typename pose_evaluator<Ev>::type ev;
+  ev.update(s);
+  table<S, m, m> jac{};
+  static_for<m * m>([&](auto kj) {
+    constexpr std::size_t k = kj / m, j = kj % m;
+    if constexpr (Sys::m[k][j] == entry::other) jac[k][j] = eval_scalar(H::template jacobian<k, j>(), ev);
+  });
+  const auto factors = factor_structured<Sys>(jac);
+  solve_status status = ev.status();
+  static_for<qi.size()>([&](auto t) {
+    table<S, m, 1> f, x;
+    static_for<m>(
+        [&](auto k) { f[k][0] = eval_scalar(diff(std::get<k>(H::equations), coordinate<qi[t]>{}), ev); });
+    const solve_status solved = substitute_structured<Sys>(jac, factors, f, x);
+    if (status == solve_status::ok) status = solved;
+    static_for<m>([&](auto j) { js.q[H::dependents[j] - 1] -= J::variable(S(0), t) * J(x[j][0]); });
+  });
+  return status;
+}
+// The jet state of x = (q_ind, u_ind) and the inputs at s: q_dep through H (dependent_jets, or
+// one Newton step on jets where inputs may enter H).
 template <class Sys, class NH, class Ev, class H, class In>
 auto constrained_point(const typename Ev::state_type& s, solve_status& status) {
   constexpr std::size_t nq = Ev::state_type::nq;
@@ -113,9 +148,11 @@ auto constrained_point(const typename Ev::state_type& s, solve_status& status) {
   auto js = lift<n>(s);
   for (std::size_t k = 0; k < qi.size(); ++k) js.q[qi[k] - 1] = J::variable(s.q[qi[k] - 1], k);
   seed_inputs<In, J>(js, nx);
-  JEv ev;
   status = solve_status::ok;
-  if constexpr (!std::is_void_v<H>) {  // q_dep -= J^-1 f: at a root, dq_dep = -J^-1 df/dq_ind dq_ind
+  if constexpr (!std::is_void_v<H> && In::n == 0) {
+    status = dependent_jets<H, Ev>(s, js);
+  } else if constexpr (!std::is_void_v<H>) {  // q_dep -= J^-1 f on jets (inputs may enter f)
+    JEv ev;
     const auto r = solve_configuration<H>(ev, js, {J(-1), 1});
     if (r.status != solve_status::not_converged) status = r.status;
   }
