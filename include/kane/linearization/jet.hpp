@@ -7,7 +7,6 @@
 // (an "exact zero" skipped by a solver must have zero derivatives too).
 #pragma once
 
-#include <array>
 #include <cmath>
 #include <concepts>
 #include <cstddef>
@@ -38,6 +37,8 @@ struct jet {
   // The derivatives in chunks of one vector register (a vector type of GCC and Clang),
   // N rounded up to whole chunks; part(i) reads d_i. Arithmetic works chunk by chunk,
   // so no jet is a constant expression (Clang does not evaluate vector types there).
+  // The chunk follows the target (-mavx...): units built for different targets must
+  // not exchange jets.
   static constexpr std::size_t width = detail::simd_bytes > sizeof(S) ? detail::simd_bytes / sizeof(S) : 1,
                                chunks = (N + width - 1) / width;
   typedef S chunk __attribute__((vector_size(sizeof(S) * width), aligned(alignof(S))));
