@@ -155,4 +155,11 @@ TEST_CASE("linearize: a closed loop (four-bar) with and without an input, agains
     }
   }
   CHECK(lin_t.B(1, 0) != 0);  // the torque accelerates the crank
+
+  s.p[0] = std::numeric_limits<double>::quiet_NaN();  // a NaN crank length, on both paths
+  CHECK(kane::linearize_constrained<fourbar_system, fb::rates, fourbar_evaluator, fb::loop>(s).status ==
+        kane::solve_status::not_finite);
+  CHECK(kane::linearize_constrained<fourbar_system, fb::rates, fourbar_evaluator, fb::loop,
+                                    kane::inputs<fp<5>>>(s)
+            .status == kane::solve_status::not_finite);
 }
