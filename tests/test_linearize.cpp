@@ -12,7 +12,6 @@
 #include <kane/linearization.hpp>
 
 #include "../examples/models/disc.hpp"
-#include "../examples/models/fourbar.hpp"
 #include "../examples/models/pendulum3d.hpp"
 
 namespace {
@@ -98,68 +97,4 @@ TEST_CASE("linearize: the upright rolling disc, Kane's closed form") {
     for (int i = 0; i < 8; ++i)
       if (std::abs(ev(i)) > 1e-6) CHECK(std::abs(ev(i) * ev(i) - lambda2) < 1e-12 * std::abs(lambda2));
   }
-}
-
-namespace {
-namespace fb = models::fourbar;
-// The four-bar with masses at the crank tip P (as a body of frame A, so that the crank
-// torque T acts on it) and at the coupler tip Q, gravity -g n2, T = p5 about n3.
-// p1..p4 the lengths a, b, c, d; p5 T, p6 m_P, p7 m_Q, p8 g, p9 the crank's I33 about P.
-template <std::size_t I>
-inline constexpr kane::parameter<I> fp{};
-using fourbar_system =
-    kane::system<kane::rigid_body<fb::A, fb::P, fp<6>, kane::inertia<fb::A, fb::P, fp<9>, fp<9>, fp<9>>>,
-                 kane::particle<fb::Q, fp<7>>, kane::gravity<-fp<8> * kane::e<fb::N, 2>>,
-                 kane::torque<fb::A, fp<5> * kane::e<fb::N, 3>>>;
-using fourbar_state = kane::state<double, 3, 3, 9>;
-using fourbar_evaluator =
-    kane::evaluator<fourbar_state, kane::frames<fb::A, fb::B, fb::C>, kane::level::acceleration, fb::speeds>;
-
-// x' = (q1', q2', q3', u1') of the four-bar at q1, u1 with the loop closed from a guess.
-std::array<double, 4> fourbar_rate(fourbar_state s) {
-  fourbar_evaluator ev;
-  REQUIRE(kane::solve_configuration<fb::loop>(ev, s).status == kane::solve_status::ok);
-  kane::constrained_motion<fourbar_system, fb::rates, fourbar_evaluator> f(s);
-  std::array<double, 4> x{s.q[0], s.q[1], s.q[2], s.u[0]}, dx;
-  f(x, dx, 0.0);
-  return dx;
-}
-}  // namespace
-
-TEST_CASE("linearize: a closed loop (four-bar) with and without an input, against central differences") {
-  fourbar_state s;
-  s.p = {1.0, 2.2, 1.8, 2.5, 0.7, 1.3, 0.9, 9.81, 0.05};
-  s.q = {0.9, 0.6, 1.9};  // a guess; q2, q3 close the loop below
-  s.u = {0.8, 0, 0};
-  fourbar_evaluator ev;
-  REQUIRE(kane::solve_configuration<fb::loop>(ev, s).status == kane::solve_status::ok);
-  // x = (q1, u1): q2, q3 from the loop (one pass on numbers, or a Newton step on jets with an input)
-  const auto lin = kane::linearize_constrained<fourbar_system, fb::rates, fourbar_evaluator, fb::loop>(s);
-  const auto lin_t = kane::linearize_constrained<fourbar_system, fb::rates, fourbar_evaluator, fb::loop,
-                                                 kane::inputs<fp<5>>>(s);
-  REQUIRE(lin.status == kane::solve_status::ok);
-  REQUIRE(lin_t.status == kane::solve_status::ok);
-  CHECK((lin.A - lin_t.A).cwiseAbs().maxCoeff() < 1e-12 * lin.A.cwiseAbs().maxCoeff());
-  const double h = 1e-5;
-  for (int j = 0; j < 3; ++j) {  // q1, u1, T
-    CAPTURE(j);
-    fourbar_state plus = s, minus = s;
-    (j == 0 ? plus.q[0] : j == 1 ? plus.u[0] : plus.p[4]) += h;
-    (j == 0 ? minus.q[0] : j == 1 ? minus.u[0] : minus.p[4]) -= h;
-    const auto up = fourbar_rate(plus), down = fourbar_rate(minus);
-    const int rows[2] = {0, 3};  // q1', u1'
-    for (int i = 0; i < 2; ++i) {
-      const double fd = (up[std::size_t(rows[i])] - down[std::size_t(rows[i])]) / (2 * h);
-      const double exact = j < 2 ? lin.A(i, j) : lin_t.B(i, 0);
-      CHECK(exact == Approx(fd).margin(1e-8).epsilon(1e-7));
-    }
-  }
-  CHECK(lin_t.B(1, 0) != 0);  // the torque accelerates the crank
-
-  s.p[0] = std::numeric_limits<double>::quiet_NaN();  // a NaN crank length, on both paths
-  CHECK(kane::linearize_constrained<fourbar_system, fb::rates, fourbar_evaluator, fb::loop>(s).status ==
-        kane::solve_status::not_finite);
-  CHECK(kane::linearize_constrained<fourbar_system, fb::rates, fourbar_evaluator, fb::loop,
-                                    kane::inputs<fp<5>>>(s)
-            .status == kane::solve_status::not_finite);
 }
