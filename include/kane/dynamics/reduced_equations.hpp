@@ -11,6 +11,7 @@
 #include "kane/detail/inline.hpp"
 #include "kane/dynamics/equations.hpp"
 #include "kane/evaluation/block_solve.hpp"
+#include "kane/evaluation/memo.hpp"
 #include "kane/evaluation/status.hpp"
 #include "kane/evaluation/tables.hpp"
 
@@ -83,10 +84,15 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
   out.b.setZero();
   for (std::size_t k = 0; k < p; ++k) out.T(Eigen::Index(NH::independents[k] - 1), Eigen::Index(k)) = S(1);
   Eigen::Matrix<S, int(m), 1> rest;  // C' u + c0' = dt(c) - C u'
-  detail::static_for<m>([&](auto k) {
-    constexpr auto dc = dt(std::get<k>(NH::equations));
-    rest(Eigen::Index(k)) = detail::eval_scalar(dc, ev);
-  });
+  [&]<std::size_t... K>(std::index_sequence<K...>) {
+    with_common_subexpressions<decltype(dt(std::get<K>(NH::equations)))...>(ev, [&](const auto& e) {
+      detail::static_for<m>([&](auto k) {
+        constexpr auto dc = dt(std::get<k>(NH::equations));
+        rest(Eigen::Index(k)) = detail::eval_scalar(dc, e);
+      });
+    });
+  }
+  (std::make_index_sequence<m>{});
   if constexpr (!RestRates) rest -= sol.C * ud;
   // b_dep = -C_dep^-1 (C' u + c0'), with the factors of C_dep that solve_constraints found
   using Dep = detail::dense_right_side<detail::constraint_system<NH>>;

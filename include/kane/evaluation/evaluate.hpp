@@ -25,8 +25,15 @@ namespace detail {
 template <class X>
 struct is_evaluator : std::false_type {};
 
-template <class Ev, class V>
+template <bool Recall = true, class Ev, class V>
 KANE_ALWAYS_INLINE v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev);
+
+// An evaluator that recalls repeated nodes (memo.hpp) answers for X itself.
+template <class Ev, class X>
+concept recalled = requires {
+  Ev::template recalls<X>;
+}
+&&Ev::template recalls<X>;
 
 // e_Ri of a root frame R (or a unit vector equal to one): components known at compile time.
 template <class V>
@@ -48,10 +55,12 @@ v3<S> cross_unit(const v3<S>& a) {
     return {a.y, -a.x, S(0)};
 }
 
-template <class Ev, class X>
+template <bool Recall = true, class Ev, class X>
 KANE_ALWAYS_INLINE typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
   using S = typename Ev::scalar;
-  if constexpr (coordinate_info<X>::value)
+  if constexpr (Recall && recalled<Ev, X>)
+    return ev.recall_scalar(x);
+  else if constexpr (coordinate_info<X>::value)
     return ev.template coordinate_value<X::index, X::order>();
   else if constexpr (speed_info<X>::value) {
     static_assert(check<!std::is_void_v<typename Ev::speed_set>,
@@ -112,10 +121,12 @@ KANE_ALWAYS_INLINE typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
 }
 
 // Components in the root frame.
-template <class Ev, class V>
+template <bool Recall, class Ev, class V>
 KANE_ALWAYS_INLINE v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev) {
   using S = typename Ev::scalar;
-  if constexpr (is_zero_vector_v<V>)
+  if constexpr (Recall && recalled<Ev, V>)
+    return ev.recall_vector(v);
+  else if constexpr (is_zero_vector_v<V>)
     return {S(0), S(0), S(0)};
   else if constexpr (is_unit<V>::value) {
     using F = lifted_t<typename V::frame, V::index>;  // the highest frame it is a unit vector of

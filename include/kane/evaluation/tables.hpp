@@ -17,6 +17,7 @@
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/evaluator.hpp"
+#include "kane/evaluation/memo.hpp"
 #include "kane/evaluation/status.hpp"
 #include "kane/speeds/constraints.hpp"
 #include "kane/speeds/partial_velocity.hpp"
@@ -176,21 +177,28 @@ KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
   constexpr std::size_t m = NH::m, p = NH::p;
   detail::table<S, m, m> dep{};  // zeros where the structure leaves entries unread
   detail::table<S, m, p + 1> right{}, x;
-  detail::static_for<m * m>([&](auto kj) {
-    constexpr std::size_t k = kj / m, j = kj % m;
-    if constexpr (Sys::m[k][j] == detail::entry::other) {
-      constexpr auto c =
-          Sys::template coefficient<k, NH::dependents[j]>();  // built by the constant evaluator
-      dep[k][j] = detail::eval_scalar(c, ev);
-    }
-  });
-  detail::static_for<m*(p + 1)>([&](auto kj) {
-    constexpr std::size_t k = kj / (p + 1), j = kj % (p + 1);
-    if constexpr (Sys::r[k][j] == detail::entry::other) {
-      constexpr auto c = Sys::template right<k, j>();
-      right[k][j] = detail::eval_scalar(c, ev);
-    }
-  });
+  [&]<std::size_t... I, std::size_t... J>(std::index_sequence<I...>, std::index_sequence<J...>) {
+    detail::with_common_subexpressions<decltype(Sys::template coefficient<I / m, NH::dependents[I % m]>())...,
+                                       decltype(Sys::template right<J / (p + 1), J % (p + 1)>())...>(
+        ev, [&](const auto& e) {
+          detail::static_for<m * m>([&](auto kj) {
+            constexpr std::size_t k = kj / m, j = kj % m;
+            if constexpr (Sys::m[k][j] == detail::entry::other) {
+              constexpr auto c =
+                  Sys::template coefficient<k, NH::dependents[j]>();  // built by the constant evaluator
+              dep[k][j] = detail::eval_scalar(c, e);
+            }
+          });
+          detail::static_for<m*(p + 1)>([&](auto kj) {
+            constexpr std::size_t k = kj / (p + 1), j = kj % (p + 1);
+            if constexpr (Sys::r[k][j] == detail::entry::other) {
+              constexpr auto c = Sys::template right<k, j>();
+              right[k][j] = detail::eval_scalar(c, e);
+            }
+          });
+        });
+  }
+  (std::make_index_sequence<m * m>{}, std::make_index_sequence<m*(p + 1)>{});
   constraint_solution<S, m, p, NH> out;
   detail::static_for<m * m>([&](auto kj) {
     constexpr std::size_t k = kj / m, j = kj % m;

@@ -1,0 +1,89 @@
+// Jets (linearization/jet.hpp) and common subexpressions (evaluation/memo.hpp):
+// the inverse of a matrix of jets against Gauss-Jordan elimination on jets, and
+// the rolling disc's differentiated constraints evaluated on jets with and
+// without recalling their repeated subtrees.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include <kane/linearization.hpp>
+
+#include "../examples/models/disc.hpp"
+
+namespace {
+using J = kane::jet<double, 3>;
+using M4 = Eigen::Matrix<J, 4, 4>;
+
+M4 jet_matrix(double rank_defect) {
+  M4 m;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const double v = std::sin(1.0 + 3 * i + 7 * j) + (i == j ? 2.0 : 0.0);
+      m(i, j) =
+          J(v) + J::variable(0.0, 0) * J(std::cos(i + 2.0 * j)) + J::variable(0.0, 2) * J(0.1 * (i - j));
+    }
+  for (int j = 0; j < 4; ++j) m(3, j) = m(3, j) * J(1 - rank_defect) + (m(0, j) + m(1, j)) * J(rank_defect);
+  return m;
+}
+double max_diff(const M4& a, const M4& b) {
+  double d = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      d = std::max(d, std::abs(a(i, j).v - b(i, j).v));
+      for (std::size_t k = 0; k < 3; ++k) d = std::max(d, std::abs(a(i, j).part(k) - b(i, j).part(k)));
+    }
+  return d;
+}
+}  // namespace
+
+TEST_CASE("jet: a jet is zero when value-initialised, as a double") {
+  const J z{};
+  CHECK(z.v == 0.0);
+  for (std::size_t k = 0; k < 3; ++k) CHECK(z.part(k) == 0.0);
+}
+
+TEST_CASE("jet: m^-1 from the values' inverse and -X dm X equals Gauss-Jordan on jets") {
+  const M4 m = jet_matrix(0.0);
+  M4 a, b;
+  REQUIRE(invert(m, a));                // the jets' overload (argument-dependent lookup)
+  REQUIRE(kane::detail::invert(m, b));  // elimination carried out on jets
+  CHECK(max_diff(a, b) < 1e-13);
+  CHECK(std::abs(a(1, 2).part(1)) == 0);  // no derivative along direction 1: none in m
+  CHECK(std::abs(a(1, 2).part(0)) > 1e-3);
+  // rank 3: both refuse under the same rule
+  const M4 s = jet_matrix(1.0);
+  CHECK_FALSE(invert(s, a));
+  CHECK_FALSE(kane::detail::invert(s, b));
+}
+
+TEST_CASE("memo: repeated subtrees are found once, and recalling them changes no number") {
+  using kane::q;
+  constexpr auto a = q<1> * q<2>;
+  constexpr auto x = a * a + kane::sqrt(a);
+  using plan = kane::detail::memo_plan<decltype(x)>;
+  STATIC_REQUIRE(plan::repeated.n == 1);  // q1 q2; the sum and its square occur once
+  STATIC_REQUIRE(plan::index<std::remove_cvref_t<decltype(a)>>() == 0);
+
+  namespace d = models::disc;
+  using St = kane::state<J, 5, 5, 1>;
+  kane::evaluator<St, kane::frames<d::R>, kane::level::acceleration, d::speeds5> ev;
+  St s;
+  s.q = {J::variable(0.3, 0), J::variable(0.4, 1), J(0.1), J(0.2), J(-0.5)};
+  s.u = {J::variable(0.7, 2), J(-0.2), J(1.3), J(0.4), J(0.6)};
+  s.ud = {J(0.1), J(0.2), J(-0.3), J(0.0), J(0.5)};
+  s.p = {J(0.5)};
+  ev.update(s);
+  REQUIRE(ev.status() == kane::solve_status::ok);
+  constexpr auto c0 = kane::dt(std::get<0>(d::rolling::equations));
+  constexpr auto c1 = kane::dt(std::get<1>(d::rolling::equations));
+  STATIC_REQUIRE(kane::detail::memo_plan<decltype(c0), decltype(c1)>::repeated.n > 0);
+  const J plain0 = kane::detail::eval_scalar(c0, ev), plain1 = kane::detail::eval_scalar(c1, ev);
+  J memo0, memo1;
+  kane::detail::with_common_subexpressions<decltype(c0), decltype(c1)>(ev, [&](const auto& e) {
+    memo0 = kane::detail::eval_scalar(c0, e);
+    memo1 = kane::detail::eval_scalar(c1, e);
+  });
+  CHECK(memo0 == plain0);  // every part, exactly: the same operations on the same numbers
+  CHECK(memo1 == plain1);
+  CHECK(std::abs(plain0.part(0)) + std::abs(plain1.part(2)) >
+        1e-3);  // the derivatives are not trivially zero
+}
