@@ -87,3 +87,37 @@ TEST_CASE("memo: repeated subtrees are found once, and recalling them changes no
   CHECK(std::abs(plain0.part(0)) + std::abs(plain1.part(2)) >
         1e-3);  // the derivatives are not trivially zero
 }
+
+TEST_CASE("held coordinates: the disc's contact position is read by nothing; A's columns of it are zero") {
+  namespace d = models::disc;
+  using St = kane::state<double, 5, 5, 3>;
+  using Ev = kane::evaluator<St, kane::frames<d::R>, kane::level::acceleration, d::speeds5>;
+  // yaw q1, lean q2 and spin q3 turn frames; q4, q5 (the contact point) enter no velocity
+  STATIC_REQUIRE(kane::detail::coordinates_held<d::system, d::rolling, Ev, void>() == 0b00111);
+  STATIC_REQUIRE(kane::detail::directions<d::system, d::rolling, Ev, void>.n == 3);
+  St s;
+  s.q = {0.3, 0.4, 0.1, 0.2, -0.5};
+  s.u = {0.7, -0.2, 1.3, 0, 0};
+  s.p = {0.5, 2.0, 9.81};
+  const auto lin = kane::linearize_constrained<d::system, d::rolling, Ev>(s);
+  REQUIRE(lin.status == kane::solve_status::ok);
+  for (Eigen::Index i = 0; i < lin.A.rows(); ++i) {
+    CHECK(lin.A(i, 3) == 0.0);
+    CHECK(lin.A(i, 4) == 0.0);
+  }
+  // the held columns against central differences of the nonlinear right-hand side
+  kane::constrained_motion<d::system, d::rolling, Ev> f(s);
+  const auto rate = [&](std::array<double, 8> x) {
+    std::array<double, 8> dx;
+    f(x, dx, 0.0);
+    return dx;
+  };
+  const std::array<double, 8> x0{0.3, 0.4, 0.1, 0.2, -0.5, 0.7, -0.2, 1.3};
+  for (std::size_t j : {0u, 1u, 5u}) {
+    auto xp = x0, xm = x0;
+    xp[j] += 1e-6, xm[j] -= 1e-6;
+    const auto fp = rate(xp), fm = rate(xm);
+    for (std::size_t i = 0; i < 8; ++i)
+      CHECK(std::abs((fp[i] - fm[i]) / 2e-6 - lin.A(Eigen::Index(i), Eigen::Index(j))) < 1e-7);
+  }
+}

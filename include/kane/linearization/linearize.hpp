@@ -26,6 +26,7 @@
 
 #include "kane/dynamics/motion.hpp"
 #include "kane/evaluation/configuration.hpp"
+#include "kane/linearization/held_coordinates.hpp"
 #include "kane/linearization/jet.hpp"
 
 namespace kane {
@@ -110,7 +111,7 @@ constexpr auto independent_coordinates() {
 }
 // At s, which closes H: dq_dep = -J_dep^-1 J_ind dq_ind (the implicit function theorem), J the
 // symbolic partial derivatives of H evaluated by one pose pass on numbers, added to q_dep's jets.
-template <class H, class Ev, class JSt>
+template <class H, class Ev, auto Slots, class JSt>
 solve_status dependent_jets(const typename Ev::state_type& s, JSt& js) {
   using S = typename Ev::scalar;
   using J = typename JSt::scalar;
@@ -127,30 +128,38 @@ solve_status dependent_jets(const typename Ev::state_type& s, JSt& js) {
   const auto factors = factor_structured<Sys>(jac);
   solve_status status = ev.status();
   static_for<qi.size()>([&](auto t) {
+    if constexpr (Slots.slot[t] == no_slot) return;  // H does not hold q_t
     table<S, m, 1> f, x;
     static_for<m>(
         [&](auto k) { f[k][0] = eval_scalar(diff(std::get<k>(H::equations), coordinate<qi[t]>{}), ev); });
     const solve_status solved = substitute_structured<Sys>(jac, factors, f, x);
     if (status == solve_status::ok) status = solved;
-    static_for<m>([&](auto j) { js.q[H::dependents[j] - 1] -= J::variable(S(0), t) * J(x[j][0]); });
+    static_for<m>(
+        [&](auto j) { js.q[H::dependents[j] - 1] -= J::variable(S(0), Slots.slot[t]) * J(x[j][0]); });
   });
   return status;
 }
 // The jet state of x = (q_ind, u_ind) and the inputs at s: q_dep through H (dependent_jets, or
 // one Newton step on jets where inputs may enter H).
+// The directions of x = (q_ind, u_ind) that jets carry: held coordinates (held_coordinates.hpp), then u_ind.
+template <class Sys, class NH, class Ev, class H>
+inline constexpr auto directions =
+    coordinate_slots<independent_coordinates<H, Ev::state_type::nq>(), coordinates_held<Sys, NH, Ev, H>()>();
 template <class Sys, class NH, class Ev, class H, class In>
 auto constrained_point(const typename Ev::state_type& s, solve_status& status) {
   constexpr std::size_t nq = Ev::state_type::nq;
   constexpr auto qi = independent_coordinates<H, nq>();
-  constexpr std::size_t nx = qi.size() + NH::p, n = nx + In::n;
+  constexpr auto qs = directions<Sys, NH, Ev, H>;
+  constexpr std::size_t nx = qs.n + NH::p, n = nx + In::n;
   using J = jet<typename Ev::scalar, n>;
   using JEv = typename rebind_evaluator<Ev, J>::type;
   auto js = lift<n>(s);
-  for (std::size_t k = 0; k < qi.size(); ++k) js.q[qi[k] - 1] = J::variable(s.q[qi[k] - 1], k);
+  for (std::size_t k = 0; k < qi.size(); ++k)
+    if (qs.slot[k] != no_slot) js.q[qi[k] - 1] = J::variable(s.q[qi[k] - 1], qs.slot[k]);
   seed_inputs<In, J>(js, nx);
   status = solve_status::ok;
   if constexpr (!std::is_void_v<H> && In::n == 0) {
-    status = dependent_jets<H, Ev>(s, js);
+    status = dependent_jets<H, Ev, qs>(s, js);
   } else if constexpr (!std::is_void_v<H>) {  // q_dep -= J^-1 f on jets (inputs may enter f)
     JEv ev;
     const auto r = solve_configuration<H>(ev, js, {J(-1), 1});
@@ -158,8 +167,7 @@ auto constrained_point(const typename Ev::state_type& s, solve_status& status) {
   }
   std::array<J, nq + NH::p> x{};
   for (std::size_t i = 0; i < nq; ++i) x[i] = js.q[i];
-  for (std::size_t k = 0; k < NH::p; ++k)
-    x[nq + k] = J::variable(s.u[NH::independents[k] - 1], qi.size() + k);
+  for (std::size_t k = 0; k < NH::p; ++k) x[nq + k] = J::variable(s.u[NH::independents[k] - 1], qs.n + k);
   return std::pair{js, x};
 }
 }  // namespace detail
@@ -193,8 +201,9 @@ auto linearize_constrained(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
   constexpr std::size_t nq = Ev::state_type::nq;
   constexpr auto qi = detail::independent_coordinates<H, nq>();
-  constexpr std::size_t nx = qi.size() + NH::p, n = nx + In::n;
-  using J = jet<S, n>;
+  constexpr auto qs = detail::directions<Sys, NH, Ev, H>;
+  constexpr std::size_t nx = qi.size() + NH::p, nj = qs.n + NH::p;
+  using J = jet<S, nj + In::n>;
   solve_status status;
   auto [js, x] = detail::constrained_point<Sys, NH, Ev, H, In>(s, status);
   constrained_motion<Sys, NH, typename detail::rebind_evaluator<Ev, J>::type> rhs(js);
@@ -204,8 +213,11 @@ auto linearize_constrained(const typename Ev::state_type& s) {
   for (std::size_t i = 0; i < nx; ++i) {
     const J& r = i < qi.size() ? dx[qi[i] - 1] : dx[nq + i - qi.size()];
     out.rate(Eigen::Index(i)) = r.v;
-    for (std::size_t j = 0; j < nx; ++j) out.A(Eigen::Index(i), Eigen::Index(j)) = r.part(j);
-    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(i), Eigen::Index(k)) = r.part(nx + k);
+    for (std::size_t j = 0; j < nx; ++j) {
+      const std::size_t d = j < qi.size() ? qs.slot[j] : qs.n + j - qi.size();
+      out.A(Eigen::Index(i), Eigen::Index(j)) = d == detail::no_slot ? S(0) : r.part(d);
+    }
+    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(i), Eigen::Index(k)) = r.part(nj + k);
   }
   out.status = status != solve_status::ok ? status : rhs.status();
   return out;
@@ -217,8 +229,9 @@ auto linearize_equations(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
   constexpr std::size_t nq = Ev::state_type::nq, p = NH::p;
   constexpr auto qi = detail::independent_coordinates<H, nq>();
-  constexpr std::size_t nx = qi.size() + p, n = nx + In::n;
-  using J = jet<S, n>;
+  constexpr auto qs = detail::directions<Sys, NH, Ev, H>;
+  constexpr std::size_t nj = qs.n + p;
+  using J = jet<S, nj + In::n>;
   solve_status status;
   auto [js, x] = detail::constrained_point<Sys, NH, Ev, H, In>(s, status);
   constrained_motion<Sys, NH, typename detail::rebind_evaluator<Ev, J>::type> rhs(js);
@@ -234,9 +247,10 @@ auto linearize_equations(const typename Ev::state_type& s) {
       out.M(Eigen::Index(r), Eigen::Index(c)) = m.v;
       res += m * J(dx[nq + c].v);
     }
-    for (std::size_t j = 0; j < qi.size(); ++j) out.K(Eigen::Index(r), Eigen::Index(j)) = res.part(j);
-    for (std::size_t c = 0; c < p; ++c) out.C(Eigen::Index(r), Eigen::Index(c)) = res.part(qi.size() + c);
-    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(r), Eigen::Index(k)) = -res.part(nx + k);
+    for (std::size_t j = 0; j < qi.size(); ++j)
+      out.K(Eigen::Index(r), Eigen::Index(j)) = qs.slot[j] == detail::no_slot ? S(0) : res.part(qs.slot[j]);
+    for (std::size_t c = 0; c < p; ++c) out.C(Eigen::Index(r), Eigen::Index(c)) = res.part(qs.n + c);
+    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(r), Eigen::Index(k)) = -res.part(nj + k);
   }
   out.status = status != solve_status::ok ? status : rhs.status();
   return out;
