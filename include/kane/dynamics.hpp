@@ -7,3 +7,4 @@
 #include "kane/dynamics/generalized_forces.hpp"
 #include "kane/dynamics/motion.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
+#include "kane/dynamics/terms.hpp"

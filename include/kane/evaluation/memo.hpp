@@ -1,7 +1,7 @@
 // Common subexpressions of a group of expressions evaluated at one state: a
-// compound node without runtime data (an empty type: nodes of one type have one
-// value at a state) that occurs more than once in the group is computed at its
-// first use and read after. Compilers find these on numbers; on jets, whose
+// compound node without runtime data (its leaves empty types: nodes of one type
+// have one value at a state) that occurs more than once in the group is computed
+// at its first use and read after. Compilers find these on numbers; on jets, whose
 // operations stay calls, nothing else does (the time derivatives of constraints
 // repeat whole subtrees: the product and quotient rules).
 #pragma once
@@ -45,8 +45,8 @@ constexpr bool has_children() {
   for_children<X>([&](auto) { any = true; });
   return any;
 }
-// No runtime data: an empty leaf, or a node of such children alone (a * a is not an
-// empty type, its two members being of one type).
+// No runtime data: an empty leaf, or a node of such children alone (a * a holds two
+// members of one empty type, which a compiler need not lay out as an empty type).
 template <class X>
 constexpr bool stateless() {
   if constexpr (is_v<X, call> || !has_children<X>())
@@ -114,7 +114,7 @@ struct memo_plan {
   }
 };
 
-// A value not constructed until assigned (jets zero-fill when constructed).
+// A value not constructed until assigned (a scalar type may fill what it constructs).
 template <class T>
 union cell {
   T value;

@@ -1,0 +1,123 @@
+// The terms of Kane's sums (equations.hpp) for numbers: what the sums evaluate of
+// each item of a system (partial velocities, accelerations, masses, loads: the
+// group whose common subexpressions evaluation/memo.hpp recalls), and the inertia
+// dyadic in the root's components.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include <Eigen/Core>
+
+#include "kane/detail/list.hpp"
+#include "kane/dynamics/bodies.hpp"
+#include "kane/evaluation/block_solve.hpp"
+#include "kane/evaluation/evaluate.hpp"
+#include "kane/evaluation/tables.hpp"
+#include "kane/kinematics/angular_velocity.hpp"
+#include "kane/kinematics/point.hpp"
+
+namespace kane::detail {
+
+// I in the root's components: C (I)_F C^T, C the columns e_F1, e_F2, e_F3; the
+// components that are zero at compile time skip their products, and the result
+// is symmetric by construction (its upper triangle, mirrored).
+inline constexpr std::size_t inertia_at[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};  // i11 i22 i33 i12 i23 i31
+template <class Cs, std::size_t K>
+constexpr auto inertia_column_rows() {  // the j of I_jk not zero at compile time
+  struct rows {
+    std::array<std::size_t, 3> j{};
+    std::size_t n = 0;
+  } out;
+  [&]<std::size_t... J>(std::index_sequence<J...>) {
+    ((!is_zero_v<std::tuple_element_t<inertia_at[J][K], Cs>> ? void(out.j[out.n++] = J) : void()), ...);
+  }
+  (std::make_index_sequence<3>{});
+  return out;
+}
+template <class I, class Ev>
+Eigen::Matrix<typename Ev::scalar, 3, 3> inertia_in_root(const Ev& ev) {
+  using S = typename Ev::scalar;
+  using Cs = std::remove_cvref_t<decltype(I::components)>;
+  std::array<S, 6> v;
+  static_for<6>([&](auto k) {
+    v[k] = is_zero_v<std::tuple_element_t<k, Cs>> ? S(0) : S(eval_scalar(std::get<k>(I::components), ev));
+  });
+  Eigen::Matrix<S, 3, 3> out;
+  if constexpr (std::is_void_v<typename I::frame::tree_parent>) {
+    static_for<9>(
+        [&](auto jk) { out(Eigen::Index(jk / 3), Eigen::Index(jk % 3)) = v[inertia_at[jk / 3][jk % 3]]; });
+  } else {
+    const auto c = ev.template axes<typename I::frame>();
+    Eigen::Matrix<S, 3, 3> p;  // C I
+    static_for<9>([&](auto rk) {
+      constexpr std::size_t r = rk / 3, k = rk % 3;
+      constexpr auto rows = inertia_column_rows<Cs, k>();
+      const auto term = [&](auto t) {
+        constexpr std::size_t j = rows.j[t];
+        return S(c(Eigen::Index(r), Eigen::Index(j)) * v[inertia_at[j][k]]);
+      };
+      if constexpr (rows.n == 0) {
+        p(Eigen::Index(r), Eigen::Index(k)) = S(0);
+      } else {
+        S sum = term(index_c<0>{});
+        static_for<rows.n - 1>([&](auto t) { sum += term(index_c<t + 1>{}); });
+        p(Eigen::Index(r), Eigen::Index(k)) = sum;
+      }
+    });
+    static_for<9>([&](auto rs) {
+      constexpr std::size_t r = rs / 3, s = rs % 3;
+      if constexpr (r <= s) {
+        const S x = p(Eigen::Index(r), 0) * c(Eigen::Index(s), 0) +
+                    p(Eigen::Index(r), 1) * c(Eigen::Index(s), 1) +
+                    p(Eigen::Index(r), 2) * c(Eigen::Index(s), 2);
+        out(Eigen::Index(r), Eigen::Index(s)) = x, out(Eigen::Index(s), Eigen::Index(r)) = x;
+      }
+    });
+  }
+  return out;
+}
+// What the equations evaluate of an item X of the system: partial velocities, then
+// accelerations, masses, inertias and loads.
+template <class Sp, class V, class = std::make_index_sequence<Sp::n>>
+struct columns_of;
+template <class Sp, class V, std::size_t... C>
+struct columns_of<Sp, V, std::index_sequence<C...>> {
+  using type = list<std::remove_cvref_t<decltype(column_of<Sp, C + 1>(std::declval<const V&>()))>...>;
+};
+template <class Sp, class V>
+using columns_t = typename columns_of<Sp, V>::type;
+template <class R, class Sp, class X>
+auto terms_of() {
+  if constexpr (is_particle<X> || is_body<X>) {
+    using P = typename point_of_mass<X>::type;
+    using mass_terms =
+        typename concat<columns_t<Sp, decltype(velocity<R, P>())>,
+                        list<decltype(acceleration<R, P>()), std::remove_cvref_t<decltype(X::mass)>>>::type;
+    if constexpr (is_body<X>) {
+      using B = typename X::frame;
+      return typename concat<
+          mass_terms, columns_t<Sp, decltype(angular_velocity<R, B>())>,
+          list<decltype(angular_acceleration<R, B>()), decltype(angular_velocity<R, B>())>>::type{};
+    } else
+      return mass_terms{};
+  } else if constexpr (is_force<X>)
+    return typename concat<columns_t<Sp, decltype(velocity<R, typename X::point>())>,
+                           list<std::remove_cvref_t<decltype(X::vector)>>>::type{};
+  else if constexpr (is_torque<X>)
+    return typename concat<columns_t<Sp, decltype(angular_velocity<R, typename X::frame>())>,
+                           list<std::remove_cvref_t<decltype(X::vector)>>>::type{};
+  else if constexpr (is_gravity<X>)
+    return list<std::remove_cvref_t<decltype(X::vector)>>{};
+  else
+    return list<>{};
+}
+template <class R, class Sp, class... X>
+auto system_terms(list<X...>) {
+  return typename concat<decltype(terms_of<R, Sp, X>())...>::type{};
+}
+
+}  // namespace kane::detail
