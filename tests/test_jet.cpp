@@ -60,8 +60,11 @@ TEST_CASE("memo: repeated subtrees are found once, and recalling them changes no
   constexpr auto a = q<1> * q<2>;
   constexpr auto x = a * a + kane::sqrt(a);
   using plan = kane::detail::memo_plan<decltype(x)>;
-  STATIC_REQUIRE(plan::repeated.n == 1);  // q1 q2; the sum and its square occur once
-  STATIC_REQUIRE(plan::index<std::remove_cvref_t<decltype(a)>>() == 0);
+  // q1 q2; the sum and its square occur once. (g++ with -fsanitize=null cannot compare the nodes' keys
+  // at compile time: there no node is recalled.)
+  constexpr bool on = kane::detail::keys_compare;
+  STATIC_REQUIRE(plan::repeated.n == (on ? 1 : 0));
+  STATIC_REQUIRE((!on || plan::index<std::remove_cvref_t<decltype(a)>>() == 0));
 
   namespace d = models::disc;
   using St = kane::state<J, 5, 5, 1>;
@@ -75,7 +78,7 @@ TEST_CASE("memo: repeated subtrees are found once, and recalling them changes no
   REQUIRE(ev.status() == kane::solve_status::ok);
   constexpr auto c0 = kane::dt(std::get<0>(d::rolling::equations));
   constexpr auto c1 = kane::dt(std::get<1>(d::rolling::equations));
-  STATIC_REQUIRE(kane::detail::memo_plan<decltype(c0), decltype(c1)>::repeated.n > 0);
+  STATIC_REQUIRE((kane::detail::memo_plan<decltype(c0), decltype(c1)>::repeated.n > 0) == on);
   const J plain0 = kane::detail::eval_scalar(c0, ev), plain1 = kane::detail::eval_scalar(c1, ev);
   J memo0, memo1;
   kane::detail::with_common_subexpressions<decltype(c0), decltype(c1)>(ev, [&](const auto& e) {

@@ -22,6 +22,13 @@ template <class X>
 struct node_key {
   static constexpr char id = 0;
 };
+// Whether addresses of two variables compare in a constant expression (g++ with
+// -fsanitize=null does not fold them): where not, no node is recalled.
+template <class A>
+inline constexpr bool keys_compare_for = requires {
+  typename std::integral_constant<bool, (&node_key<A>::id != &node_key<A*>::id)>;
+};
+inline constexpr bool keys_compare = keys_compare_for<int>;
 
 // The children of a node kind that computes (a quantity is its vector v).
 template <class X, class F>
@@ -99,7 +106,7 @@ struct memo_plan {
   };
   static constexpr nodes repeated = [] {
     node_set<bound> all;
-    (collect_nodes<std::remove_cvref_t<X>>(all), ...);
+    if constexpr (keys_compare) (collect_nodes<std::remove_cvref_t<X>>(all), ...);
     nodes out;
     for (std::size_t i = 0; i < all.n; ++i)
       if (all.repeated[i])
@@ -108,6 +115,7 @@ struct memo_plan {
   }();
   template <class Y>
   static constexpr std::size_t index() {  // repeated.n: not recalled
+    if constexpr (!keys_compare) return 0;
     for (std::size_t i = 0; i < repeated.n; ++i)
       if (repeated.key[i] == &node_key<Y>::id) return i;
     return repeated.n;
