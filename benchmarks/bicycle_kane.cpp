@@ -1,7 +1,8 @@
 // kane's Whipple bicycle (bicycle.hpp, models/bicycle.hpp): kane_rates is the integrator's
 // right-hand side kane::constrained_motion, built once with the parameters and called per
-// state; kane_A is kane::linearize_constrained (jets of the 8 directions of x_ind through
-// the evaluator, the pitch by one Newton step on jets) at the input's state.
+// state; kane_A is kane::linearize_constrained (jets of the 6 directions of x_ind that the
+// equations read, none for the contact position q1, q2; the pitch's jet from the holonomic
+// constraint's partial derivatives) at the input's state.
 #include "../examples/models/bicycle.hpp"
 #include "bicycle.hpp"
 
