@@ -42,13 +42,29 @@ template <class R, class X, class Ev>
 Eigen::Matrix<typename Ev::scalar, 3, 1> in_root(const X& x, const Ev& ev) {
   return express_in<R>(x, ev).eigen();
 }
-// Which partial velocities of x may be nonzero (the others are zero at every state).
+// What each partial velocity v_r of x is at every state: 0 (zero), +-(i + 1) (+-e_Ri of the
+// root R: the sums add a number to one component), or general_column.
+inline constexpr int general_column = 4;
+template <class V>
+constexpr int column_kind() {
+  if constexpr (is_zero_v<V> || is_zero_vector_v<V>)
+    return 0;
+  else if constexpr (root_unit<V>::value)
+    return V::index;
+  else if constexpr (is_vneg<V>::value) {
+    using U = std::remove_cvref_t<decltype(std::declval<const V&>().v)>;
+    if constexpr (root_unit<U>::value)
+      return -U::index;
+    else
+      return general_column;
+  } else
+    return general_column;
+}
 template <class Sp, class X>
-constexpr std::array<bool, Sp::n> nonzero_columns() {
+constexpr std::array<int, Sp::n> nonzero_columns() {
   return []<std::size_t... R>(std::index_sequence<R...>) {
-    return std::array<bool, Sp::n>{!(
-        is_zero_v<std::remove_cvref_t<decltype(column_of<Sp, R + 1>(std::declval<const X&>()))>> ||
-        is_zero_vector_v<std::remove_cvref_t<decltype(column_of<Sp, R + 1>(std::declval<const X&>()))>>)...};
+    return std::array<int, Sp::n>{
+        column_kind<std::remove_cvref_t<decltype(column_of<Sp, R + 1>(std::declval<const X&>()))>>()...};
   }
   (std::make_index_sequence<Sp::n>{});
 }
@@ -82,7 +98,9 @@ struct all_speeds {
   static constexpr std::size_t n = N;
   template <auto Nz>
   static constexpr std::array<bool, n> nonzero() {
-    return Nz;
+    std::array<bool, n> out{};
+    for (std::size_t k = 0; k < n; ++k) out[k] = Nz[k] != 0;
+    return out;
   }
   template <auto Nz, class V>
   KANE_ALWAYS_INLINE const V& columns(const V& v) const {

@@ -43,9 +43,14 @@ struct independent_speeds {
       else
         t.col(Eigen::Index(k)).setZero();
       static_for<NH::m>([&](auto j) {
-        if constexpr (Nz[NH::dependents[j] - 1])
+        constexpr int kind = Nz[NH::dependents[j] - 1];
+        if constexpr (kind == general_column)
           t.col(Eigen::Index(k)) +=
               v.col(Eigen::Index(NH::dependents[j] - 1)) * A(Eigen::Index(j), Eigen::Index(k));
+        else if constexpr (kind > 0)
+          t(kind - 1, Eigen::Index(k)) += A(Eigen::Index(j), Eigen::Index(k));
+        else if constexpr (kind < 0)
+          t(-kind - 1, Eigen::Index(k)) -= A(Eigen::Index(j), Eigen::Index(k));
       });
     });
     return t;
@@ -53,7 +58,13 @@ struct independent_speeds {
   template <auto Nz, class X, class V>
   KANE_ALWAYS_INLINE void add_bias(X& a0, const V& v) const {
     static_for<NH::m>([&](auto j) {
-      if constexpr (Nz[NH::dependents[j] - 1]) a0 += v.col(Eigen::Index(NH::dependents[j] - 1)) * b[j];
+      constexpr int kind = Nz[NH::dependents[j] - 1];
+      if constexpr (kind == general_column)
+        a0 += v.col(Eigen::Index(NH::dependents[j] - 1)) * b[j];
+      else if constexpr (kind > 0)
+        a0(kind - 1) += b[j];
+      else if constexpr (kind < 0)
+        a0(-kind - 1) -= b[j];
     });
   }
 };
