@@ -112,7 +112,7 @@ using near_singular_nh =
     kane::nonholonomic<S3, kane::dependent<2, 3>, k*(u<2> + u<3> + u<1>), k*(u<2> + u<3>)+k * d * u<3> - k>;
 }  // namespace
 
-TEST_CASE("numbers: W of s Y is W of Y / s for s = 1e-300, 1e+300 and powers of two; not finite at 1e-310",
+TEST_CASE("numbers: W of s Y is W of Y / s for s = 1e-300, 1e+300 and powers of two, not finite at 1e-310",
           "[numbers]") {
   check_scaled_kinematic_equations<identity_speeds>(Eigen::Matrix2d::Identity());
   Eigen::Matrix2d triangular, coupled;

@@ -117,7 +117,7 @@ TEST_CASE("quaternion: w from finite differences of direction cosines along the 
   }
 }
 
-TEST_CASE("quaternion: Euler parameters are normalised on update; zero or NaN gives not_finite") {
+TEST_CASE("quaternion: Euler parameters are normalised on update, zero or NaN gives not_finite") {
   const auto& c = body[0];
   state s = at(c);
   for (int i = 0; i < 4; ++i) s.q[i] *= 2.5;
