@@ -91,7 +91,8 @@ TEST_CASE("memo: repeated subtrees are found once, and recalling them changes no
         1e-3);  // the derivatives are not trivially zero
 }
 
-TEST_CASE("held coordinates: the disc's contact position is read by nothing, and A's columns of it are zero") {
+TEST_CASE(
+    "held coordinates: the disc's contact position is read by nothing, and A's columns of it are zero") {
   namespace d = models::disc;
   using St = kane::state<double, 5, 5, 3>;
   using Ev = kane::evaluator<St, kane::frames<d::R>, kane::level::acceleration, d::speeds5>;
