@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -89,6 +90,16 @@ TEST_CASE("kinematics: the chain N -z-> A -x-> B -y-> C against SymPy") {
     CHECK(near(kane::express<N>(kane::acceleration<N, R>(), ev), c.a_N, 1e-13));
   }
 }
+
+// The outward pass skips the numbers of e_F1, e_F2, e_F3 in N that are 0 or 1 at every state
+// (detail/patterned.hpp): N -z-> A keeps e_A3 = n3 and zero third components of e_A1, e_A2;
+// a turn about A's x (y) keeps e_A1 (e_A2) and mixes the other two columns.
+static_assert(kane::detail::turned_columns({1, 0, 0, 0, 1, 0, 0, 0, 1}, 2) ==
+              std::array<int, 9>{2, 2, 0, 2, 2, 0, 0, 0, 1});
+static_assert(kane::detail::turned_columns({2, 2, 0, 2, 2, 0, 0, 0, 1}, 0) ==
+              std::array<int, 9>{2, 2, 0, 2, 2, 2, 2, 2, 2});
+static_assert(kane::detail::turned_columns({2, 2, 0, 2, 2, 0, 0, 0, 1}, 1) ==
+              std::array<int, 9>{2, 2, 2, 2, 2, 0, 2, 2, 2});
 
 TEST_CASE("kinematics: the double pendulum against SymPy and closed forms") {
   using St = kane::state<double, 2, 2, 2>;

@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "kane/detail/list.hpp"
+#include "kane/detail/patterned.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
 #include "kane/detail/v3.hpp"
@@ -110,6 +111,13 @@ class outward_pass {
 
   template <class F>
   static constexpr bool is_edge = !std::is_void_v<typename F::tree_parent>;
+  template <class F>
+  static constexpr bool below_root() {
+    if constexpr (is_edge<F>)
+      return !is_edge<typename F::tree_parent>;
+    else
+      return false;
+  }
 
   template <class... F>
   KANE_ALWAYS_INLINE void init_roots(list<F...>) {
@@ -137,6 +145,39 @@ class outward_pass {
   KANE_ALWAYS_INLINE vec3 column(int j) const {
     static_assert(check<!spin_edge<F>, error::a_spinning_frame_has_no_known_axes_but_its_spin_axis<F>>);
     return load3(c_[index<F>()].data() + 3 * j);
+  }
+
+  // The principal axis (0, 1, 2) an edge turns about, else -1; the pattern (patterned.hpp) of
+  // e_F1, e_F2, e_F3 in R: a turn about a principal axis mixes two of the parent's columns.
+  template <class F>
+  static constexpr int principal() {
+    if constexpr (!is_edge<F> || spin_edge<F> || matrix_edge<F>)
+      return -1;
+    else
+      return unit_axis<typename F::step::axis>::principal;
+  }
+  template <class F>
+  static constexpr std::array<int, 9> column_pattern() {
+    if constexpr (!is_edge<F>)
+      return {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    else if constexpr (principal<F>() >= 0)
+      return turned_columns(column_pattern<typename F::tree_parent>(), principal<F>());
+    else
+      return {any_value, any_value, any_value, any_value, any_value,
+              any_value, any_value, any_value, any_value};
+  }
+  // The pattern of k (edge_axis) in R
+  template <class F>
+  static constexpr std::array<int, 3> axis_pattern() {
+    constexpr auto k = unit_axis<typename F::step::axis>::value;
+    constexpr int p = unit_axis<typename F::step::axis>::principal;
+    if constexpr (!is_edge<typename F::tree_parent>)
+      return {pattern_of(k[0]), pattern_of(k[1]), pattern_of(k[2])};
+    else if constexpr (p >= 0) {
+      constexpr auto pp = column_pattern<typename F::tree_parent>();
+      return {pp[3 * p], pp[3 * p + 1], pp[3 * p + 2]};
+    } else
+      return {any_value, any_value, any_value};
   }
 
   // The axis k of the edge above F, in the root's components (fixed in both frames).
@@ -178,22 +219,45 @@ class outward_pass {
     else
       return eval_scalar(angle_rate<F, D>(), rates);
   }
-  // x + theta^(D) k
+  // x + theta^(D) k (below the root, whose w and alpha are zero: theta^(D) k)
   template <class F, std::size_t D, class Rates>
   KANE_ALWAYS_INLINE vec3 turned(const vec3& x, const Rates& rates) const {
-    if constexpr (turns<F, D>)
-      return x + angle_rate_value<F, D>(rates) * edge_axis<F>();
+    if constexpr (turns<F, D>) {
+      constexpr auto kp = axis_pattern<F>();
+      constexpr bool first = below_root<F>();
+      const scalar r = angle_rate_value<F, D>(rates);
+      const vec3 k = edge_axis<F>();
+      const auto add = [&](const scalar& xi, auto i, const scalar& ki) -> scalar {
+        if constexpr (first)
+          return times<kp[i]>(r, ki);
+        else if constexpr (kp[i] == 0)
+          return xi;
+        else
+          return xi + times<kp[i]>(r, ki);
+      };
+      return {add(x.x, index_c<0>{}, k.x), add(x.y, index_c<1>{}, k.y), add(x.z, index_c<2>{}, k.z)};
+    } else if constexpr (below_root<F>())
+      return {scalar(0), scalar(0), scalar(0)};
     else
       return x;
+  }
+  // w x k (k = edge_axis)
+  template <class F>
+  KANE_ALWAYS_INLINE vec3 cross_axis(const vec3& w) const {
+    constexpr auto kp = axis_pattern<F>();
+    const vec3 k = edge_axis<F>();
+    return {minus<kp[2], kp[1]>(w.y, k.z, w.z, k.y), minus<kp[0], kp[2]>(w.z, k.x, w.x, k.z),
+            minus<kp[1], kp[0]>(w.x, k.y, w.y, k.x)};
   }
   // ^R alpha^F = ^R alpha^P + theta'' k + theta' ^R w^P x k
   template <class F, class Rates>
   KANE_ALWAYS_INLINE vec3 alpha_below(const Rates& rates) const {
     constexpr std::size_t ip = index<typename F::tree_parent>();
     const vec3 ap = load3(a_[ip].data());
-    if constexpr (turns<F, 1>)
-      return turned<F, 2>(ap, rates) +
-             angle_rate_value<F, 1>(rates) * cross3(load3(w_[ip].data()), edge_axis<F>());
+    if constexpr (below_root<F>())
+      return turned<F, 2>(ap, rates);
+    else if constexpr (turns<F, 1>)
+      return turned<F, 2>(ap, rates) + angle_rate_value<F, 1>(rates) * cross_axis<F>(load3(w_[ip].data()));
     else
       return ap;
   }
@@ -254,10 +318,14 @@ class outward_pass {
           cf[3 * a + a] = c, cf[3 * a + b] = s;
           cf[3 * b + a] = -s, cf[3 * b + b] = c;
         } else {
-          const vec3 ea = column<P>(a), eb = column<P>(b);
-          store3(cf + 3 * p, column<P>(p));
-          store3(cf + 3 * a, c * ea + s * eb);
-          store3(cf + 3 * b, c * eb - s * ea);
+          constexpr auto pp = column_pattern<P>();
+          const scalar* ep = c_[index<P>()].data();
+          static_for<3>([&](auto i) {
+            constexpr int x = pp[3 * a + i], y = pp[3 * b + i];
+            cf[3 * p + i] = ep[3 * p + i];
+            cf[3 * a + i] = plus<x, y>(c, ep[3 * a + i], s, ep[3 * b + i]);
+            cf[3 * b + i] = minus<y, x>(c, ep[3 * b + i], s, ep[3 * a + i]);
+          });
         }
       } else {  // e_Fj = sum_k (^P P^F)_jk e_Pk
         const matrix3 e = elementary<scalar, K>(c, s);
@@ -272,7 +340,9 @@ class outward_pass {
 
   template <class F, class Rates>
   KANE_ALWAYS_INLINE void velocity_edge(const Rates& rates) {
-    if constexpr (is_edge<F> && matrix_edge<F>)
+    if constexpr (matrix_edge<F> && below_root<F>())
+      store3(w_[index<F>()].data(), matrix_edge_part<F, 0>(rates));
+    else if constexpr (is_edge<F> && matrix_edge<F>)
       store3(w_[index<F>()].data(),
              load3(w_[index<typename F::tree_parent>()].data()) + matrix_edge_part<F, 0>(rates));
     else if constexpr (is_edge<F>)
@@ -282,7 +352,9 @@ class outward_pass {
   // ^R alpha^F = ^R alpha^P + ^F d(^P w^F)/dt + ^R w^P x ^P w^F
   template <class F, class Rates>
   KANE_ALWAYS_INLINE void acceleration_edge(const Rates& rates) {
-    if constexpr (is_edge<F> && matrix_edge<F>) {
+    if constexpr (matrix_edge<F> && below_root<F>()) {
+      store3(a_[index<F>()].data(), matrix_edge_part<F, 1>(rates));
+    } else if constexpr (is_edge<F> && matrix_edge<F>) {
       constexpr std::size_t ip = index<typename F::tree_parent>();
       const vec3 wp = load3(w_[ip].data()), we = load3(w_[index<F>()].data()) - wp;
       store3(a_[index<F>()].data(), load3(a_[ip].data()) + matrix_edge_part<F, 1>(rates) + cross3(wp, we));
