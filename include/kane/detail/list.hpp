@@ -1,10 +1,22 @@
-// Type lists and the few operations kane needs on them (plain C++20).
+// Type lists and the few operations kane needs on them (plain C++20), and a loop
+// unrolled at compile time.
 #pragma once
 
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 
 namespace kane::detail {
+
+template <std::size_t I>
+using index_c = std::integral_constant<std::size_t, I>;
+
+// f(index_c<0>{}), ..., f(index_c<N - 1>{})
+template <std::size_t N, class F>
+constexpr void static_for(F&& f) {
+  [&]<std::size_t... I>(std::index_sequence<I...>) { (f(index_c<I>{}), ...); }
+  (std::make_index_sequence<N>{});
+}
 
 template <class... T>
 struct list {};

@@ -27,21 +27,12 @@
 
 #include "kane/detail/inline.hpp"
 #include "kane/detail/invert.hpp"
+#include "kane/detail/list.hpp"
 #include "kane/detail/structure.hpp"
 #include "kane/evaluation/status.hpp"
 #include "kane/frames/scalar.hpp"
 
 namespace kane::detail {
-
-template <std::size_t I>
-using index_c = std::integral_constant<std::size_t, I>;
-
-// f(index_c<0>{}), ..., f(index_c<N - 1>{})
-template <std::size_t N, class F>
-constexpr void static_for(F&& f) {
-  [&]<std::size_t... I>(std::index_sequence<I...>) { (f(index_c<I>{}), ...); }
-  (std::make_index_sequence<N>{});
-}
 
 template <class S, std::size_t R, std::size_t C>
 using table = std::array<std::array<S, C>, R>;
@@ -60,7 +51,8 @@ constexpr S pow2(int e) {
 template <class S, std::size_t N>
 struct structured_factors {
   table<S, N, N> inverse;
-  S scale, f;
+  S scale;
+  typename real_type<S>::type f;  // a number (on jets: no derivatives)
   bool singular;
 };
 // A matrix of a known zero pattern and its factors: more right-hand sides later.
@@ -96,14 +88,14 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
     }
   });
   const S scale = out.scale;
-  out.f = S(1);  // 2^-e with 2^(e-1) <= scale < 2^e, e clamped so that f is normal
+  using real = typename real_type<S>::type;
+  out.f = real(1);  // 2^-e with 2^(e-1) <= scale < 2^e, e clamped so that f is normal
   constexpr bool coupled = [] {
     for (std::size_t b = 0; b < Sys::form.count; ++b)
       if (Sys::form.start[b + 1] - Sys::form.start[b] > 1) return true;
     return false;
   }();
   if constexpr (coupled) {
-    using real = typename real_type<S>::type;
     if (constexpr real lo = pow2<real>(limits::min_exponent / 2), hi = pow2<real>(limits::max_exponent / 2);
         scale > S(0) && scale <= limits::max() && !(scale >= S(lo) && scale <= S(hi))) {
       using std::frexp, std::ldexp;
@@ -111,7 +103,7 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
       frexp(scale, &e);
       if (e < limits::min_exponent - 2) e = limits::min_exponent - 2;  // a subnormal scale
       if (e > limits::max_exponent - 2) e = limits::max_exponent - 2;
-      out.f = ldexp(S(1), -e);
+      out.f = ldexp(real(1), -e);
     }
   }
   static_for<Sys::form.count>([&](auto b) {
@@ -119,20 +111,22 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
     if constexpr (size == 1) {
       constexpr std::size_t c = Sys::form.order[first], row = Sys::form.row[c];
       if constexpr (Sys::m[row][c] == entry::other) {
-        using real = typename real_type<S>::type;
         constexpr real inverse_tol = real(1) / (std::numeric_limits<real>::epsilon() *
                                                 real(n > 0 ? n : 1));  // |p| > tol as |p| / (eps n) > scale
         const S pivot = m[row][c];
         out.singular = out.singular || (pivot == pivot && !(abs(pivot) * S(inverse_tol) > scale));
       }
     } else {
-      const S f = out.f, tol = limits::epsilon() * S(n) * (scale * f);
+      const real f = out.f;
+      const S tol = limits::epsilon() * S(n) * (scale * f);
       Eigen::Matrix<S, int(size), int(size)> block, inverse;
       static_for<size * size>([&](auto ab) {
-        constexpr std::size_t a = ab / size, e = ab % size;
-        block(a, e) = value(index_c<Sys::form.row[Sys::form.order[first + a]]>{},
-                            index_c<Sys::form.order[first + e]>{}) *
-                      f;
+        constexpr std::size_t a = ab / size, e = ab % size, row = Sys::form.row[Sys::form.order[first + a]],
+                              col = Sys::form.order[first + e];
+        if constexpr (Sys::m[row][col] == entry::one)
+          block(a, e) = S(f);
+        else
+          block(a, e) = m[row][col] * f;
       });
       if (!invert(block, inverse, tol)) {
         out.singular = out.singular || block.allFinite();
@@ -157,7 +151,6 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
                                                       table<S, Sys::n, Sys::k>& x) {
   using limits = std::numeric_limits<S>;
   constexpr std::size_t n = Sys::n, k = Sys::k;
-  auto value = [&](auto i, auto j) { return entry_value<Sys>(m, i, j); };
   auto rhs = [&](auto i, auto j) -> S {
     if constexpr (Sys::r[i][j] == entry::zero)
       return S(0);
@@ -177,8 +170,11 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
       constexpr std::size_t row = Sys::form.row[c];
       S t = rhs(index_c<row>{}, j);
       static_for<n>([&](auto d) {
-        if constexpr (Sys::form.block[d] != b && Sys::m[row][d] != entry::zero && Sys::x[d][j] != entry::zero)
-          t -= value(index_c<row>{}, d) * x[d][j];
+        if constexpr (Sys::form.block[d] != b && Sys::m[row][d] == entry::one && Sys::x[d][j] != entry::zero)
+          t -= x[d][j];
+        else if constexpr (Sys::form.block[d] != b && Sys::m[row][d] != entry::zero &&
+                           Sys::x[d][j] != entry::zero)
+          t -= m[row][d] * x[d][j];
       });
       return t;
     };
