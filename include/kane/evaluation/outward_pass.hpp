@@ -166,6 +166,12 @@ class outward_pass {
       return {any_value, any_value, any_value, any_value, any_value,
               any_value, any_value, any_value, any_value};
   }
+  template <std::size_t N>
+  static constexpr bool known(const std::array<int, N>& pattern) {
+    for (int x : pattern)
+      if (x != any_value) return true;
+    return false;
+  }
   // The pattern of k (edge_axis) in R
   template <class F>
   static constexpr std::array<int, 3> axis_pattern() {
@@ -222,7 +228,9 @@ class outward_pass {
   // x + theta^(D) k (below the root, whose w and alpha are zero: theta^(D) k)
   template <class F, std::size_t D, class Rates>
   KANE_ALWAYS_INLINE vec3 turned(const vec3& x, const Rates& rates) const {
-    if constexpr (turns<F, D>) {
+    if constexpr (turns<F, D> && !below_root<F>() && !known(axis_pattern<F>())) {
+      return x + angle_rate_value<F, D>(rates) * edge_axis<F>();
+    } else if constexpr (turns<F, D>) {
       constexpr auto kp = axis_pattern<F>();
       constexpr bool first = below_root<F>();
       const scalar r = angle_rate_value<F, D>(rates);
@@ -246,6 +254,7 @@ class outward_pass {
   KANE_ALWAYS_INLINE vec3 cross_axis(const vec3& w) const {
     constexpr auto kp = axis_pattern<F>();
     const vec3 k = edge_axis<F>();
+    if constexpr (!known(kp)) return cross3(w, k);
     return {minus<kp[2], kp[1]>(w.y, k.z, w.z, k.y), minus<kp[0], kp[2]>(w.z, k.x, w.x, k.z),
             minus<kp[1], kp[0]>(w.x, k.y, w.y, k.x)};
   }
@@ -317,6 +326,11 @@ class outward_pass {
           cf[3 * p + p] = scalar(1);
           cf[3 * a + a] = c, cf[3 * a + b] = s;
           cf[3 * b + a] = -s, cf[3 * b + b] = c;
+        } else if constexpr (!known(column_pattern<P>())) {
+          const vec3 ea = column<P>(a), eb = column<P>(b);
+          store3(cf + 3 * p, column<P>(p));
+          store3(cf + 3 * a, c * ea + s * eb);
+          store3(cf + 3 * b, c * eb - s * ea);
         } else {
           constexpr auto pp = column_pattern<P>();
           const scalar* ep = c_[index<P>()].data();
