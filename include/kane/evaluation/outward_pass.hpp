@@ -166,11 +166,13 @@ class outward_pass {
       return {any_value, any_value, any_value, any_value, any_value,
               any_value, any_value, any_value, any_value};
   }
+  // Whether the per-component path pays: a known 0 or 1, or a scalar whose operations the
+  // compiler does not see through (jets: the vector form makes temporaries).
   template <std::size_t N>
   static constexpr bool known(const std::array<int, N>& pattern) {
-    for (int x : pattern)
-      if (x != any_value) return true;
-    return false;
+    bool any_known = !std::is_floating_point_v<scalar>;
+    for (int x : pattern) any_known = any_known || x != any_value;
+    return any_known;
   }
   // The pattern of k (edge_axis) in R
   template <class F>
