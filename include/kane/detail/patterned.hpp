@@ -6,8 +6,11 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/list.hpp"
+#include "kane/detail/v3.hpp"
 
 namespace kane::detail {
 
@@ -42,6 +45,54 @@ KANE_ALWAYS_INLINE S minus(const S& a, const S& x, const S& b, const S& y) {
     return -times<Y>(b, y);
   else
     return times<X>(a, x) - times<Y>(b, y);
+}
+
+// Whether the per-component forms below pay for S: a known 0 or 1, or a scalar whose operations
+// the compiler does not see through (jets: the vector form makes temporaries).
+template <class S, std::size_t N>
+constexpr bool per_component(const std::array<int, N>& pattern) {
+  bool any_known = !std::is_floating_point_v<S>;
+  for (int x : pattern) any_known = any_known || x != any_value;
+  return any_known;
+}
+// x + r k, or r k alone (Alone), k of pattern K
+template <std::array<int, 3> K, bool Alone, class S>
+KANE_ALWAYS_INLINE v3<S> add_along(const v3<S>& x, const S& r, const v3<S>& k) {
+  const auto one = [&](const S& xi, auto i, const S& ki) -> S {
+    if constexpr (Alone)
+      return times<K[i]>(r, ki);
+    else if constexpr (K[i] == 0)
+      return xi;
+    else
+      return xi + times<K[i]>(r, ki);
+  };
+  return {one(x.x, index_c<0>{}, k.x), one(x.y, index_c<1>{}, k.y), one(x.z, index_c<2>{}, k.z)};
+}
+// w x k, k of pattern K
+template <std::array<int, 3> K, class S>
+KANE_ALWAYS_INLINE v3<S> cross_along(const v3<S>& w, const v3<S>& k) {
+  return {minus<K[2], K[1]>(w.y, k.z, w.z, k.y), minus<K[0], K[2]>(w.z, k.x, w.x, k.z),
+          minus<K[1], K[0]>(w.x, k.y, w.y, k.x)};
+}
+
+// e_Fp = e_Pp, e_Fa = c e_Pa + s e_Pb, e_Fb = c e_Pb - s e_Pa (a, b after p): the columns out of a
+// frame turned about the principal axis p of its parent, whose columns in are of pattern P.
+template <std::array<int, 9> P, int p, class S>
+KANE_ALWAYS_INLINE void turn_columns(S* out, const S* in, const S& c, const S& s) {
+  constexpr int a = (p + 1) % 3, b = (p + 2) % 3;
+  if constexpr (!per_component<S>(P)) {
+    const v3<S> ea = load3(in + 3 * a), eb = load3(in + 3 * b);
+    store3(out + 3 * p, load3(in + 3 * p));
+    store3(out + 3 * a, c * ea + s * eb);
+    store3(out + 3 * b, c * eb - s * ea);
+  } else
+    static_for<3>([&](auto i) {
+      constexpr int x = P[3 * a + i], y = P[3 * b + i];
+      constexpr int z = P[3 * p + i];
+      out[3 * p + i] = z == any_value ? in[3 * p + i] : S(z);  // a known 0 or 1 written, not copied
+      out[3 * a + i] = plus<x, y>(c, in[3 * a + i], s, in[3 * b + i]);
+      out[3 * b + i] = minus<y, x>(c, in[3 * b + i], s, in[3 * a + i]);
+    });
 }
 
 // Columns e_1, e_2, e_3 (9 numbers, column after column) turned about their own e_p:

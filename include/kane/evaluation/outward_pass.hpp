@@ -18,6 +18,7 @@
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
 #include "kane/detail/v3.hpp"
+#include "kane/evaluation/edge_structure.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/frames/frame.hpp"
 #include "kane/frames/orientation.hpp"
@@ -111,13 +112,6 @@ class outward_pass {
 
   template <class F>
   static constexpr bool is_edge = !std::is_void_v<typename F::tree_parent>;
-  template <class F>
-  static constexpr bool below_root() {
-    if constexpr (is_edge<F>)
-      return !is_edge<typename F::tree_parent>;
-    else
-      return false;
-  }
 
   template <class... F>
   KANE_ALWAYS_INLINE void init_roots(list<F...>) {
@@ -147,47 +141,6 @@ class outward_pass {
     return load3(c_[index<F>()].data() + 3 * j);
   }
 
-  // The principal axis (0, 1, 2) an edge turns about, else -1; the pattern (patterned.hpp) of
-  // e_F1, e_F2, e_F3 in R: a turn about a principal axis mixes two of the parent's columns.
-  template <class F>
-  static constexpr int principal() {
-    if constexpr (!is_edge<F> || spin_edge<F> || matrix_edge<F>)
-      return -1;
-    else
-      return unit_axis<typename F::step::axis>::principal;
-  }
-  template <class F>
-  static constexpr std::array<int, 9> column_pattern() {
-    if constexpr (!is_edge<F>)
-      return {1, 0, 0, 0, 1, 0, 0, 0, 1};
-    else if constexpr (principal<F>() >= 0)
-      return turned_columns(column_pattern<typename F::tree_parent>(), principal<F>());
-    else
-      return {any_value, any_value, any_value, any_value, any_value,
-              any_value, any_value, any_value, any_value};
-  }
-  // Whether the per-component path pays: a known 0 or 1, or a scalar whose operations the
-  // compiler does not see through (jets: the vector form makes temporaries).
-  template <std::size_t N>
-  static constexpr bool known(const std::array<int, N>& pattern) {
-    bool any_known = !std::is_floating_point_v<scalar>;
-    for (int x : pattern) any_known = any_known || x != any_value;
-    return any_known;
-  }
-  // The pattern of k (edge_axis) in R
-  template <class F>
-  static constexpr std::array<int, 3> axis_pattern() {
-    constexpr auto k = unit_axis<typename F::step::axis>::value;
-    constexpr int p = unit_axis<typename F::step::axis>::principal;
-    if constexpr (!is_edge<typename F::tree_parent>)
-      return {pattern_of(k[0]), pattern_of(k[1]), pattern_of(k[2])};
-    else if constexpr (p >= 0) {
-      constexpr auto pp = column_pattern<typename F::tree_parent>();
-      return {pp[3 * p], pp[3 * p + 1], pp[3 * p + 2]};
-    } else
-      return {any_value, any_value, any_value};
-  }
-
   // The axis k of the edge above F, in the root's components (fixed in both frames).
   template <class F>
   KANE_ALWAYS_INLINE vec3 edge_axis() const {
@@ -207,19 +160,6 @@ class outward_pass {
     }
   }
 
-  // theta^(D) of the edge above F: q^(D) for a bare coordinate, else dt^D(theta) from the rates;
-  // u and u' for a spin.
-  template <class F, std::size_t D>
-  static constexpr auto angle_rate() {
-    if constexpr (spin_edge<F>)
-      return speed<F::step::speed_index, D - 1>{};
-    else if constexpr (D == 1)
-      return ddt(F::step::angle);
-    else
-      return ddt(ddt(F::step::angle));
-  }
-  template <class F, std::size_t D>
-  static constexpr bool turns = !std::is_same_v<std::remove_cv_t<decltype(angle_rate<F, D>())>, zero_t>;
   template <class F, std::size_t D, class Rates>
   KANE_ALWAYS_INLINE scalar angle_rate_value(const Rates& rates) const {
     if constexpr (F::step::coordinate_index != 0)
@@ -230,35 +170,22 @@ class outward_pass {
   // x + theta^(D) k (below the root, whose w and alpha are zero: theta^(D) k)
   template <class F, std::size_t D, class Rates>
   KANE_ALWAYS_INLINE vec3 turned(const vec3& x, const Rates& rates) const {
-    if constexpr (turns<F, D> && !below_root<F>() && !known(axis_pattern<F>())) {
-      return x + angle_rate_value<F, D>(rates) * edge_axis<F>();
-    } else if constexpr (turns<F, D>) {
-      constexpr auto kp = axis_pattern<F>();
-      constexpr bool first = below_root<F>();
-      const scalar r = angle_rate_value<F, D>(rates);
-      const vec3 k = edge_axis<F>();
-      const auto add = [&](const scalar& xi, auto i, const scalar& ki) -> scalar {
-        if constexpr (first)
-          return times<kp[i]>(r, ki);
-        else if constexpr (kp[i] == 0)
-          return xi;
-        else
-          return xi + times<kp[i]>(r, ki);
-      };
-      return {add(x.x, index_c<0>{}, k.x), add(x.y, index_c<1>{}, k.y), add(x.z, index_c<2>{}, k.z)};
-    } else if constexpr (below_root<F>())
+    if constexpr (!turns<F, D> && below_root<F>())
       return {scalar(0), scalar(0), scalar(0)};
-    else
+    else if constexpr (!turns<F, D>)
       return x;
+    else if constexpr (below_root<F>() || per_component<scalar>(axis_pattern<F>()))
+      return add_along<axis_pattern<F>(), below_root<F>()>(x, angle_rate_value<F, D>(rates), edge_axis<F>());
+    else
+      return x + angle_rate_value<F, D>(rates) * edge_axis<F>();
   }
   // w x k (k = edge_axis)
   template <class F>
   KANE_ALWAYS_INLINE vec3 cross_axis(const vec3& w) const {
-    constexpr auto kp = axis_pattern<F>();
-    const vec3 k = edge_axis<F>();
-    if constexpr (!known(kp)) return cross3(w, k);
-    return {minus<kp[2], kp[1]>(w.y, k.z, w.z, k.y), minus<kp[0], kp[2]>(w.z, k.x, w.x, k.z),
-            minus<kp[1], kp[0]>(w.x, k.y, w.y, k.x)};
+    if constexpr (per_component<scalar>(axis_pattern<F>()))
+      return cross_along<axis_pattern<F>()>(w, edge_axis<F>());
+    else
+      return cross3(w, edge_axis<F>());
   }
   // ^R alpha^F = ^R alpha^P + theta'' k + theta' ^R w^P x k
   template <class F, class Rates>
@@ -321,28 +248,13 @@ class outward_pass {
         c = cos(a), s = sin(a);
       }
       scalar* cf = c_[index<F>()].data();
-      if constexpr (p >= 0) {
-        constexpr int a = (p + 1) % 3, b = (p + 2) % 3;  // e_Fa = c e_Pa + s e_Pb, e_Fb = c e_Pb - s e_Pa
-        if constexpr (!is_edge<P>) {                     // the parent's axes are the identity
-          c_[index<F>()] = {};
-          cf[3 * p + p] = scalar(1);
-          cf[3 * a + a] = c, cf[3 * a + b] = s;
-          cf[3 * b + a] = -s, cf[3 * b + b] = c;
-        } else if constexpr (!known(column_pattern<P>())) {
-          const vec3 ea = column<P>(a), eb = column<P>(b);
-          store3(cf + 3 * p, column<P>(p));
-          store3(cf + 3 * a, c * ea + s * eb);
-          store3(cf + 3 * b, c * eb - s * ea);
-        } else {
-          constexpr auto pp = column_pattern<P>();
-          const scalar* ep = c_[index<P>()].data();
-          static_for<3>([&](auto i) {
-            constexpr int x = pp[3 * a + i], y = pp[3 * b + i];
-            cf[3 * p + i] = ep[3 * p + i];
-            cf[3 * a + i] = plus<x, y>(c, ep[3 * a + i], s, ep[3 * b + i]);
-            cf[3 * b + i] = minus<y, x>(c, ep[3 * b + i], s, ep[3 * a + i]);
-          });
-        }
+      if constexpr (p >= 0 && !is_edge<P>) {  // the parent's axes are the identity
+        constexpr int a = (p + 1) % 3, b = (p + 2) % 3;
+        c_[index<F>()] = {};
+        cf[3 * p + p] = scalar(1), cf[3 * a + a] = c, cf[3 * a + b] = s, cf[3 * b + a] = -s,
+                   cf[3 * b + b] = c;
+      } else if constexpr (p >= 0) {
+        turn_columns<column_pattern<P>(), p>(cf, axes<P>().data(), c, s);
       } else {  // e_Fj = sum_k (^P P^F)_jk e_Pk
         const matrix3 e = elementary<scalar, K>(c, s);
         Eigen::Map<matrix3> m(cf);
