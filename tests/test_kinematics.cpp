@@ -94,12 +94,17 @@ TEST_CASE("kinematics: the chain N -z-> A -x-> B -y-> C against SymPy") {
 // The outward pass skips the numbers of e_F1, e_F2, e_F3 in N that are 0 or 1 at every state
 // (detail/patterned.hpp): N -z-> A keeps e_A3 = n3 and zero third components of e_A1, e_A2;
 // a turn about A's x (y) keeps e_A1 (e_A2) and mixes the other two columns.
-static_assert(kane::detail::turned_columns({1, 0, 0, 0, 1, 0, 0, 0, 1}, 2) ==
-              std::array<int, 9>{2, 2, 0, 2, 2, 0, 0, 0, 1});
-static_assert(kane::detail::turned_columns({2, 2, 0, 2, 2, 0, 0, 0, 1}, 0) ==
-              std::array<int, 9>{2, 2, 0, 2, 2, 2, 2, 2, 2});
-static_assert(kane::detail::turned_columns({2, 2, 0, 2, 2, 0, 0, 0, 1}, 1) ==
-              std::array<int, 9>{2, 2, 2, 2, 2, 0, 2, 2, 2});
+namespace patterns {
+using enum kane::detail::entry;
+using columns = std::array<kane::detail::entry, 9>;
+constexpr columns identity{one, zero, zero, zero, one, zero, zero, zero, one};
+constexpr columns about_z{other, other, zero, other, other, zero, zero, zero, one};
+static_assert(kane::detail::turned_columns(identity, 2) == about_z);
+static_assert(kane::detail::turned_columns(about_z, 0) ==
+              columns{other, other, zero, other, other, other, other, other, other});
+static_assert(kane::detail::turned_columns(about_z, 1) ==
+              columns{other, other, other, other, other, zero, other, other, other});
+}  // namespace patterns
 
 TEST_CASE("kinematics: the double pendulum against SymPy and closed forms") {
   using St = kane::state<double, 2, 2, 2>;

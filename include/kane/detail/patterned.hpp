@@ -1,5 +1,5 @@
 // Arithmetic with factors known at compile time to be 0 or 1 at every state
-// (pattern 0 or 1; any_value otherwise): such factors are not multiplied and
+// (their entry, detail/structure.hpp: zero, one or other): such factors are not multiplied and
 // such terms not added. A compiler cannot drop x * 0.0 or x + 0.0 itself (NaN,
 // infinities and -0.0), and on jets it sees no constants at all.
 #pragma once
@@ -10,38 +10,40 @@
 
 #include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
+#include "kane/detail/structure.hpp"
 #include "kane/detail/v3.hpp"
 
 namespace kane::detail {
 
-inline constexpr int any_value = 2;
-constexpr int pattern_of(double c) { return c == 0.0 ? 0 : c == 1.0 ? 1 : any_value; }
+constexpr entry entry_of_number(double c) {
+  return c == 0.0 ? entry::zero : c == 1.0 ? entry::one : entry::other;
+}
 
 // x y, y of pattern Y
-template <int Y, class S>
+template <entry Y, class S>
 KANE_ALWAYS_INLINE S times(const S& x, const S& y) {
-  if constexpr (Y == 0)
+  if constexpr (Y == entry::zero)
     return S(0);
-  else if constexpr (Y == 1)
+  else if constexpr (Y == entry::one)
     return x;
   else
     return x * y;
 }
 // a x + b y and a x - b y, x and y of patterns X and Y
-template <int X, int Y, class S>
+template <entry X, entry Y, class S>
 KANE_ALWAYS_INLINE S plus(const S& a, const S& x, const S& b, const S& y) {
-  if constexpr (Y == 0)
+  if constexpr (Y == entry::zero)
     return times<X>(a, x);
-  else if constexpr (X == 0)
+  else if constexpr (X == entry::zero)
     return times<Y>(b, y);
   else
     return times<X>(a, x) + times<Y>(b, y);
 }
-template <int X, int Y, class S>
+template <entry X, entry Y, class S>
 KANE_ALWAYS_INLINE S minus(const S& a, const S& x, const S& b, const S& y) {
-  if constexpr (Y == 0)
+  if constexpr (Y == entry::zero)
     return times<X>(a, x);
-  else if constexpr (X == 0)
+  else if constexpr (X == entry::zero)
     return -times<Y>(b, y);
   else
     return times<X>(a, x) - times<Y>(b, y);
@@ -50,18 +52,18 @@ KANE_ALWAYS_INLINE S minus(const S& a, const S& x, const S& b, const S& y) {
 // Whether the per-component forms below pay for S: a known 0 or 1, or a scalar whose operations
 // the compiler does not see through (jets: the vector form makes temporaries).
 template <class S, std::size_t N>
-constexpr bool per_component(const std::array<int, N>& pattern) {
+constexpr bool per_component(const std::array<entry, N>& pattern) {
   bool any_known = !std::is_floating_point_v<S>;
-  for (int x : pattern) any_known = any_known || x != any_value;
+  for (entry x : pattern) any_known = any_known || x != entry::other;
   return any_known;
 }
 // x + r k, or r k alone (Alone), k of pattern K
-template <std::array<int, 3> K, bool Alone, class S>
+template <std::array<entry, 3> K, bool Alone, class S>
 KANE_ALWAYS_INLINE v3<S> add_along(const v3<S>& x, const S& r, const v3<S>& k) {
   const auto one = [&](const S& xi, auto i, const S& ki) -> S {
     if constexpr (Alone)
       return times<K[i]>(r, ki);
-    else if constexpr (K[i] == 0)
+    else if constexpr (K[i] == entry::zero)
       return xi;
     else
       return xi + times<K[i]>(r, ki);
@@ -69,7 +71,7 @@ KANE_ALWAYS_INLINE v3<S> add_along(const v3<S>& x, const S& r, const v3<S>& k) {
   return {one(x.x, index_c<0>{}, k.x), one(x.y, index_c<1>{}, k.y), one(x.z, index_c<2>{}, k.z)};
 }
 // w x k, k of pattern K
-template <std::array<int, 3> K, class S>
+template <std::array<entry, 3> K, class S>
 KANE_ALWAYS_INLINE v3<S> cross_along(const v3<S>& w, const v3<S>& k) {
   return {minus<K[2], K[1]>(w.y, k.z, w.z, k.y), minus<K[0], K[2]>(w.z, k.x, w.x, k.z),
           minus<K[1], K[0]>(w.x, k.y, w.y, k.x)};
@@ -77,7 +79,7 @@ KANE_ALWAYS_INLINE v3<S> cross_along(const v3<S>& w, const v3<S>& k) {
 
 // e_Fp = e_Pp, e_Fa = c e_Pa + s e_Pb, e_Fb = c e_Pb - s e_Pa (a, b after p): the columns out of a
 // frame turned about the principal axis p of its parent, whose columns in are of pattern P.
-template <std::array<int, 9> P, int p, class S>
+template <std::array<entry, 9> P, int p, class S>
 KANE_ALWAYS_INLINE void turn_columns(S* out, const S* in, const S& c, const S& s) {
   constexpr int a = (p + 1) % 3, b = (p + 2) % 3;
   if constexpr (!per_component<S>(P)) {
@@ -87,9 +89,10 @@ KANE_ALWAYS_INLINE void turn_columns(S* out, const S* in, const S& c, const S& s
     store3(out + 3 * b, c * eb - s * ea);
   } else
     static_for<3>([&](auto i) {
-      constexpr int x = P[3 * a + i], y = P[3 * b + i];
-      constexpr int z = P[3 * p + i];
-      out[3 * p + i] = z == any_value ? in[3 * p + i] : S(z);  // a known 0 or 1 written, not copied
+      constexpr entry x = P[3 * a + i], y = P[3 * b + i];
+      constexpr entry z = P[3 * p + i];
+      out[3 * p + i] =
+          z == entry::other ? in[3 * p + i] : S(z == entry::one);  // a known 0 or 1 written, not copied
       out[3 * a + i] = plus<x, y>(c, in[3 * a + i], s, in[3 * b + i]);
       out[3 * b + i] = minus<y, x>(c, in[3 * b + i], s, in[3 * a + i]);
     });
@@ -97,12 +100,13 @@ KANE_ALWAYS_INLINE void turn_columns(S* out, const S* in, const S& c, const S& s
 
 // Columns e_1, e_2, e_3 (9 numbers, column after column) turned about their own e_p:
 // e_p stays, e_a = c e_a + s e_b and e_b = c e_b - s e_a mix (a, b the other two).
-constexpr std::array<int, 9> turned_columns(const std::array<int, 9>& parent, int axis) {
-  std::array<int, 9> out{};
+constexpr std::array<entry, 9> turned_columns(const std::array<entry, 9>& parent, int axis) {
+  std::array<entry, 9> out{};
   const auto p = std::size_t(axis), a = (p + 1) % 3, b = (p + 2) % 3;
   for (std::size_t i = 0; i < 3; ++i) {
     out[3 * p + i] = parent[3 * p + i];
-    out[3 * a + i] = out[3 * b + i] = parent[3 * a + i] == 0 && parent[3 * b + i] == 0 ? 0 : any_value;
+    out[3 * a + i] = out[3 * b + i] =
+        parent[3 * a + i] == entry::zero && parent[3 * b + i] == entry::zero ? entry::zero : entry::other;
   }
   return out;
 }

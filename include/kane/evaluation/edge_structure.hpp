@@ -28,28 +28,28 @@ constexpr bool below_root() {
 // e_F1, e_F2, e_F3 in the root, column after column: a turn about a principal axis keeps one of
 // the parent's columns and mixes the other two.
 template <class F>
-constexpr std::array<int, 9> column_pattern() {
+constexpr std::array<entry, 9> column_pattern() {
+  using enum entry;
   if constexpr (std::is_void_v<typename F::tree_parent>)
-    return {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    return {one, zero, zero, zero, one, zero, zero, zero, one};
   else if constexpr (!spin_edge<F> && !matrix_edge<F> && edge_principal<F>() >= 0)
     return turned_columns(column_pattern<typename F::tree_parent>(), edge_principal<F>());
   else
-    return {any_value, any_value, any_value, any_value, any_value,
-            any_value, any_value, any_value, any_value};
+    return {other, other, other, other, other, other, other, other, other};
 }
 
 // The axis k of the edge above F in the root: constant below the root, else a column of the parent.
 template <class F>
-constexpr std::array<int, 3> axis_pattern() {
+constexpr std::array<entry, 3> axis_pattern() {
   constexpr auto k = unit_axis<typename F::step::axis>::value;
   constexpr int p = unit_axis<typename F::step::axis>::principal;
   if constexpr (below_root<F>())
-    return {pattern_of(k[0]), pattern_of(k[1]), pattern_of(k[2])};
+    return {entry_of_number(k[0]), entry_of_number(k[1]), entry_of_number(k[2])};
   else if constexpr (p >= 0) {
     constexpr auto pp = column_pattern<typename F::tree_parent>();
     return {pp[std::size_t(3 * p)], pp[std::size_t(3 * p + 1)], pp[std::size_t(3 * p + 2)]};
   } else
-    return {any_value, any_value, any_value};
+    return {entry::other, entry::other, entry::other};
 }
 
 // theta^(D) of the edge above F: q^(D) for a bare coordinate, else dt^D(theta); u and u' for a spin.
