@@ -1,13 +1,15 @@
 // The inverse of a small fixed-size matrix by Gauss-Jordan elimination with
 // full pivoting. Rank as Eigen's FullPivLU decides it: a pivot counts if it
 // exceeds eps * n times the largest pivot (the first), or a given threshold.
-// A 2 x 2 matrix is inverted in closed form under the same rule.
+// A 2 x 2 matrix is inverted in closed form under the same rule. The solves of a
+// coupled block and of a positive definite system that jets overload.
 #pragma once
 
 #include <cmath>
 #include <cstddef>
 #include <limits>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 namespace kane::detail {
@@ -57,6 +59,28 @@ bool invert(const Eigen::Matrix<S, N, N>& m, Eigen::Matrix<S, N, N>& inv, S tol 
   // [m | I] is now [P | m^-1 permuted]: g(row_of[c], c) = 1, so row c of m^-1 is row row_of[c].
   for (int c = 0; c < N; ++c)
     for (int j = 0; j < N; ++j) inv(c, j) = g[row_of[c]][N + j];
+  return true;
+}
+
+// A coupled block B of a structured solve (block_solve.hpp): what the factorization keeps
+// (B^-1) and y = B^-1 t. Jets overload both (jet.hpp).
+template <class S, int N>
+bool factor_block(const Eigen::Matrix<S, N, N>& b, Eigen::Matrix<S, N, N>& inv, S tol) {
+  return invert(b, inv, tol);
+}
+template <class S, int N>
+Eigen::Matrix<S, N, 1> solve_block(const Eigen::Matrix<S, N, N>& inv, const Eigen::Matrix<S, N, N>&,
+                                   const Eigen::Matrix<S, N, 1>& t) {
+  return inv * t;
+}
+// x = m^-1 f for a symmetric m by Cholesky (Eigen's LLT); false if m is not positive definite.
+// Jets overload it (jet.hpp).
+template <class S, int N>
+bool solve_positive_definite(const Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<S, N, 1>& f,
+                             Eigen::Matrix<S, N, 1>& x) {
+  const Eigen::LLT<Eigen::Matrix<S, N, N>> llt(m);
+  if (llt.info() != Eigen::Success) return false;
+  x = llt.solve(f);
   return true;
 }
 

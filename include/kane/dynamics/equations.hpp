@@ -15,11 +15,11 @@
 #include <type_traits>
 #include <utility>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/invert.hpp"
 #include "kane/dynamics/bodies.hpp"
 #include "kane/dynamics/terms.hpp"
 #include "kane/evaluation/evaluate.hpp"
@@ -242,9 +242,8 @@ std::pair<Eigen::Matrix<S, int(N), 1>, solve_status> speed_derivatives(const equ
     Eigen::Matrix<S, int(N), 1> ud =
         Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN());
     if (e.status != solve_status::ok) return {ud, e.status};
-    const Eigen::LLT<Eigen::Matrix<S, int(N), int(N)>> llt(e.M);
-    if (llt.info() != Eigen::Success) return {ud, solve_status::singular};
-    ud = llt.solve(e.f);
+    using detail::solve_positive_definite;  // jets: theirs (argument-dependent lookup)
+    if (!solve_positive_definite(e.M, e.f, ud)) return {ud, solve_status::singular};
     if (!detail::all_finite_matrix(ud))
       return {Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN()),
               solve_status::not_finite};

@@ -71,6 +71,22 @@ KANE_ALWAYS_INLINE S entry_value(const table<S, Sys::n, Sys::n>& m, index_c<I>, 
     return m[I][J];
 }
 
+// f M_B of the coupled block of size unknowns from the place first of the block order.
+template <class Sys, std::size_t First, std::size_t Size, class S>
+KANE_ALWAYS_INLINE Eigen::Matrix<S, int(Size), int(Size)> scaled_block(const table<S, Sys::n, Sys::n>& m,
+                                                                       typename real_type<S>::type f) {
+  Eigen::Matrix<S, int(Size), int(Size)> block;
+  static_for<Size * Size>([&](auto ab) {
+    constexpr std::size_t a = ab / Size, e = ab % Size, row = Sys::form.row[Sys::form.order[First + a]],
+                          col = Sys::form.order[First + e];
+    if constexpr (Sys::m[row][col] == entry::one)
+      block(a, e) = S(f);
+    else
+      block(a, e) = m[row][col] * f;
+  });
+  return block;
+}
+
 // Sys: static constexpr n, m (pattern n x n), form (blocks_of(m)).
 template <class Sys, class S>
 KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S, Sys::n, Sys::n>& m) {
@@ -119,16 +135,9 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
     } else {
       const real f = out.f;
       const S tol = limits::epsilon() * S(n) * (scale * f);
-      Eigen::Matrix<S, int(size), int(size)> block, inverse;
-      static_for<size * size>([&](auto ab) {
-        constexpr std::size_t a = ab / size, e = ab % size, row = Sys::form.row[Sys::form.order[first + a]],
-                              col = Sys::form.order[first + e];
-        if constexpr (Sys::m[row][col] == entry::one)
-          block(a, e) = S(f);
-        else
-          block(a, e) = m[row][col] * f;
-      });
-      if (!invert(block, inverse, tol)) {
+      const auto block = scaled_block<Sys, first, size>(m, f);
+      Eigen::Matrix<S, int(size), int(size)> inverse;
+      if (!factor_block(block, inverse, tol)) {
         out.singular = out.singular || block.allFinite();
         inverse.setConstant(limits::quiet_NaN());
       }
@@ -190,6 +199,7 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
         }
       });
     } else {
+      const auto block = scaled_block<Sys, first, size>(m, fac.f);
       Eigen::Matrix<S, int(size), int(size)> inverse;  // (f M_B)^-1
       static_for<size * size>([&](auto ab) {
         constexpr std::size_t a = ab / size, e = ab % size;
@@ -201,7 +211,7 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
           static_for<size>([&](auto a) {
             t(Eigen::Index(a)) = reduced(index_c<Sys::form.order[first + a]>{}, j) * fac.f;
           });
-          const Eigen::Matrix<S, int(size), 1> y = inverse * t;  // (f M)^-1 f t
+          const Eigen::Matrix<S, int(size), 1> y = solve_block(inverse, block, t);  // (f M)^-1 f t
           static_for<size>([&](auto a) { x[Sys::form.order[first + a]][j] = y(Eigen::Index(a)); });
         }
       });

@@ -13,6 +13,7 @@
 #include <limits>
 #include <type_traits>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "kane/detail/invert.hpp"
@@ -177,6 +178,79 @@ bool invert(const Eigen::Matrix<jet<S, D>, N, N>& m, Eigen::Matrix<jet<S, D>, N,
       inv(I(i), I(j)).v = x(I(i), I(j));
       for (std::size_t q = 0; q < chunks; ++q) inv(I(i), I(j)).c[q] = -xdmx[i][j][q];
     }
+  return true;
+}
+
+// A coupled block B of a structured solve on jets: the inverse X of its values alone
+// (factor_block), then y = X t and dy = X (dt - dB y) (solve_block), one chunk at a time.
+template <class S, std::size_t D, int N>
+bool factor_block(const Eigen::Matrix<jet<S, D>, N, N>& b, Eigen::Matrix<jet<S, D>, N, N>& inv, jet<S, D> tol) {
+  Eigen::Matrix<S, N, N> v, x;
+  for (Eigen::Index i = 0; i < N; ++i)
+    for (Eigen::Index j = 0; j < N; ++j) v(i, j) = b(i, j).v;
+  if (!detail::invert(v, x, tol.v)) return false;
+  for (Eigen::Index i = 0; i < N; ++i)
+    for (Eigen::Index j = 0; j < N; ++j) inv(i, j) = jet<S, D>(x(i, j));
+  return true;
+}
+template <class S, std::size_t D, int N>
+Eigen::Matrix<jet<S, D>, N, 1> solve_block(const Eigen::Matrix<jet<S, D>, N, N>& inv,
+                                           const Eigen::Matrix<jet<S, D>, N, N>& b,
+                                           const Eigen::Matrix<jet<S, D>, N, 1>& t) {
+  using J = jet<S, D>;
+  using I = Eigen::Index;
+  constexpr std::size_t n = std::size_t(N), chunks = J::chunks;
+  S y[n] = {};
+  typename J::chunk r[n][chunks];
+  for (std::size_t i = 0; i < n; ++i)
+#pragma GCC unroll 8
+    for (std::size_t k = 0; k < n; ++k) y[i] += inv(I(i), I(k)).v * t(I(k)).v;
+  for (std::size_t i = 0; i < n; ++i)
+#pragma GCC unroll 16
+    for (std::size_t q = 0; q < chunks; ++q) {
+      r[i][q] = t(I(i)).c[q];
+#pragma GCC unroll 8
+      for (std::size_t k = 0; k < n; ++k) r[i][q] -= b(I(i), I(k)).c[q] * y[k];
+    }
+  Eigen::Matrix<J, N, 1> out;
+  for (std::size_t i = 0; i < n; ++i) {
+    out(I(i)).v = y[i];
+#pragma GCC unroll 16
+    for (std::size_t q = 0; q < chunks; ++q) {
+      typename J::chunk d = {};
+#pragma GCC unroll 8
+      for (std::size_t k = 0; k < n; ++k) d += inv(I(i), I(k)).v * r[k][q];
+      out(I(i)).c[q] = d;
+    }
+  }
+  return out;
+}
+// x = m^-1 f on jets: Cholesky of the values, then M dx = df - dM x for each direction.
+template <class S, std::size_t D, int N>
+bool solve_positive_definite(const Eigen::Matrix<jet<S, D>, N, N>& m, const Eigen::Matrix<jet<S, D>, N, 1>& f,
+                             Eigen::Matrix<jet<S, D>, N, 1>& x) {
+  using I = Eigen::Index;
+  Eigen::Matrix<S, N, N> mv;
+  Eigen::Matrix<S, N, 1> fv;
+  for (I i = 0; i < N; ++i) {
+    fv(i) = f(i).v;
+    for (I j = 0; j < N; ++j) mv(i, j) = m(i, j).v;
+  }
+  const Eigen::LLT<Eigen::Matrix<S, N, N>> llt(mv);
+  if (llt.info() != Eigen::Success) return false;
+  const Eigen::Matrix<S, N, 1> xv = llt.solve(fv);
+  Eigen::Matrix<S, N, int(D)> r;
+  for (I i = 0; i < N; ++i)
+    for (std::size_t d = 0; d < D; ++d) {
+      S ri = f(i).part(d);
+      for (I k = 0; k < N; ++k) ri -= m(i, k).part(d) * xv(k);
+      r(i, I(d)) = ri;
+    }
+  llt.solveInPlace(r);
+  for (I i = 0; i < N; ++i) {
+    x(i) = jet<S, D>(xv(i));
+    for (std::size_t d = 0; d < D; ++d) x(i).c[d / jet<S, D>::width][d % jet<S, D>::width] = r(i, I(d));
+  }
   return true;
 }
 
