@@ -1,5 +1,5 @@
-// The inverse of a small fixed-size matrix by Gauss-Jordan elimination with
-// full pivoting. Rank as Eigen's FullPivLU decides it: a pivot counts if it
+// The inverse of a small fixed-size matrix by LU elimination with full
+// pivoting. Rank as Eigen's FullPivLU decides it: a pivot counts if it
 // exceeds eps * n times the largest pivot (the first), or a given threshold.
 // A 2 x 2 matrix is inverted in closed form under the same rule. The solves of a
 // coupled block and of a positive definite system that jets overload.
@@ -8,15 +8,15 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 namespace kane::detail {
 
-// inv = m^-1 and true, or false if a pivot is not above tol (m finite). Rows
-// of [m | I] are eliminated in place; exact zeros are skipped. tol < 0: the
-// relative rule above.
+// inv = m^-1 and true, or false if a pivot is not above tol (m finite). tol < 0:
+// the relative rule above.
 template <class S, int N>
 bool invert(const Eigen::Matrix<S, N, N>& m, Eigen::Matrix<S, N, N>& inv, S tol = S(-1)) {
   using std::abs;
@@ -30,35 +30,50 @@ bool invert(const Eigen::Matrix<S, N, N>& m, Eigen::Matrix<S, N, N>& inv, S tol 
     inv << d * r, -b * r, -c * r, a * r;
     return true;
   }
+  // P m Q = L U with full pivoting (the pivot of step k the largest |entry| left, moved to
+  // (k, k)); then m^-1 = Q U^-1 L^-1 P, one column of P at a time.
   constexpr std::size_t n = static_cast<std::size_t>(N);  // array bounds are sizes
-  S g[n][2 * n];
-  for (int i = 0; i < N; ++i)
-    for (int j = 0; j < N; ++j) g[i][j] = m(i, j), g[i][N + j] = S(i == j);
-  int rows[n], cols[n];  // the rows and columns not pivoted yet: rows[0 .. N-k), cols[0 .. N-k)
-  for (int i = 0; i < N; ++i) rows[i] = cols[i] = i;
-  int row_of[n]{};  // row_of[c]: the row whose pivot eliminated column c
-  for (int k = 0, left = N; k < N; ++k, --left) {
-    int bi = 0, bj = 0;
+  S a[n][n];
+  std::size_t p[n], q[n];  // row k of P m Q is row p[k] of m; column k is column q[k]
+  for (std::size_t i = 0; i < n; ++i) {
+    p[i] = q[i] = i;
+    for (std::size_t j = 0; j < n; ++j) a[i][j] = m(Eigen::Index(i), Eigen::Index(j));
+  }
+  S r[n];  // 1 / u_kk
+#pragma GCC unroll 8
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t bi = k, bj = k;
     S best = S(-1);
-    for (int i = 0; i < left; ++i)
-      for (int j = 0; j < left; ++j)
-        if (const S a = abs(g[rows[i]][cols[j]]); a > best) best = a, bi = i, bj = j;
+    for (std::size_t i = k; i < n; ++i)
+      for (std::size_t j = k; j < n; ++j)
+        if (const S x = abs(a[i][j]); x > best) best = x, bi = i, bj = j;
     if (k == 0 && tol < S(0)) tol = std::numeric_limits<S>::epsilon() * S(N) * best;
     if (!(best > tol)) return false;
-    const int r = rows[bi], c = cols[bj];
-    rows[bi] = rows[left - 1], cols[bj] = cols[left - 1];
-    row_of[c] = r;
-    const S p = S(1) / g[r][c];
-    for (S& x : g[r]) x *= p;
-    for (int i = 0; i < N; ++i) {
-      const S f = g[i][c];
-      if (i == r || f == S(0)) continue;
-      for (int j = 0; j < 2 * N; ++j) g[i][j] -= f * g[r][j];
+    for (std::size_t j = 0; j < n; ++j) std::swap(a[k][j], a[bi][j]);
+    for (std::size_t i = 0; i < n; ++i) std::swap(a[i][k], a[i][bj]);
+    std::swap(p[k], p[bi]), std::swap(q[k], q[bj]);
+    r[k] = S(1) / a[k][k];
+    for (std::size_t i = k + 1; i < n; ++i) {
+      const S l = a[i][k] * r[k];
+      a[i][k] = l;
+      for (std::size_t j = k + 1; j < n; ++j) a[i][j] -= l * a[k][j];
     }
   }
-  // [m | I] is now [P | m^-1 permuted]: g(row_of[c], c) = 1, so row c of m^-1 is row row_of[c].
-  for (int c = 0; c < N; ++c)
-    for (int j = 0; j < N; ++j) inv(c, j) = g[row_of[c]][N + j];
+#pragma GCC unroll 8
+  for (std::size_t c = 0; c < n; ++c) {  // column c of m^-1: L z = P e_c, U y = z, x = Q y
+    S y[n];
+    for (std::size_t i = 0; i < n; ++i) {
+      S t = S(p[i] == c);
+      for (std::size_t j = 0; j < i; ++j) t -= a[i][j] * y[j];
+      y[i] = t;
+    }
+    for (std::size_t i = n; i-- > 0;) {
+      S t = y[i];
+      for (std::size_t j = i + 1; j < n; ++j) t -= a[i][j] * y[j];
+      y[i] = t * r[i];
+    }
+    for (std::size_t i = 0; i < n; ++i) inv(Eigen::Index(q[i]), Eigen::Index(c)) = y[i];
+  }
   return true;
 }
 

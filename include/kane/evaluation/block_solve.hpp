@@ -1,6 +1,6 @@
 // X = M^-1 R for a small M whose zero pattern and block form are known at
 // compile time (structure.hpp): substitution block after block, a division
-// for a block of one unknown (none for an exact one), a Gauss-Jordan inverse
+// for a block of one unknown (none for an exact one), an inverse by LU with full pivoting
 // only for a coupled block. Zeros and ones of M, R and X are never touched.
 //
 // Rank rule: a pivot counts if |pivot| > eps * n * max |M_ij|. A block of one
