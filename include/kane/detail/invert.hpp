@@ -85,8 +85,8 @@ bool factor_block(const Eigen::Matrix<S, N, N>& b, Eigen::Matrix<S, N, N>& inv, 
 }
 template <class S, int N>
 Eigen::Matrix<S, N, 1> solve_block(const Eigen::Matrix<S, N, N>& inv, const Eigen::Matrix<S, N, N>&,
-                                   const Eigen::Matrix<S, N, 1>& t) {
-  return inv * t;
+                                   const Eigen::Matrix<S, N, 1>& rhs) {
+  return inv * rhs;
 }
 // x = m^-1 f for a symmetric m by Cholesky (Eigen's LLT); false if m is not positive definite.
 // Jets overload it (jet.hpp).

@@ -35,27 +35,27 @@ struct v3 {
 };
 
 template <class S>
-constexpr v3<S> operator+(const v3<S>& a, const v3<S>& b) {
+KANE_ALWAYS_INLINE constexpr v3<S> operator+(const v3<S>& a, const v3<S>& b) {
   return {a.x + b.x, a.y + b.y, a.z + b.z};
 }
 template <class S>
-constexpr v3<S> operator-(const v3<S>& a, const v3<S>& b) {
+KANE_ALWAYS_INLINE constexpr v3<S> operator-(const v3<S>& a, const v3<S>& b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
 template <class S>
-constexpr v3<S> operator-(const v3<S>& a) {
+KANE_ALWAYS_INLINE constexpr v3<S> operator-(const v3<S>& a) {
   return {-a.x, -a.y, -a.z};
 }
 template <class S>
-constexpr v3<S> operator*(const S& s, const v3<S>& a) {
+KANE_ALWAYS_INLINE constexpr v3<S> operator*(const S& s, const v3<S>& a) {
   return {s * a.x, s * a.y, s * a.z};
 }
 template <class S>
-constexpr v3<S> cross3(const v3<S>& a, const v3<S>& b) {
+KANE_ALWAYS_INLINE constexpr v3<S> cross3(const v3<S>& a, const v3<S>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 template <class S>
-constexpr S dot3(const v3<S>& a, const v3<S>& b) {
+KANE_ALWAYS_INLINE constexpr S dot3(const v3<S>& a, const v3<S>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 template <class S>

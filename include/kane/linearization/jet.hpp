@@ -184,7 +184,8 @@ bool invert(const Eigen::Matrix<jet<S, D>, N, N>& m, Eigen::Matrix<jet<S, D>, N,
 // A coupled block B of a structured solve on jets: the inverse X of its values alone
 // (factor_block), then y = X t and dy = X (dt - dB y) (solve_block), one chunk at a time.
 template <class S, std::size_t D, int N>
-bool factor_block(const Eigen::Matrix<jet<S, D>, N, N>& b, Eigen::Matrix<jet<S, D>, N, N>& inv, jet<S, D> tol) {
+bool factor_block(const Eigen::Matrix<jet<S, D>, N, N>& b, Eigen::Matrix<jet<S, D>, N, N>& inv,
+                  jet<S, D> tol) {
   Eigen::Matrix<S, N, N> v, x;
   for (Eigen::Index i = 0; i < N; ++i)
     for (Eigen::Index j = 0; j < N; ++j) v(i, j) = b(i, j).v;
@@ -196,7 +197,7 @@ bool factor_block(const Eigen::Matrix<jet<S, D>, N, N>& b, Eigen::Matrix<jet<S, 
 template <class S, std::size_t D, int N>
 Eigen::Matrix<jet<S, D>, N, 1> solve_block(const Eigen::Matrix<jet<S, D>, N, N>& inv,
                                            const Eigen::Matrix<jet<S, D>, N, N>& b,
-                                           const Eigen::Matrix<jet<S, D>, N, 1>& t) {
+                                           const Eigen::Matrix<jet<S, D>, N, 1>& rhs) {
   using J = jet<S, D>;
   using I = Eigen::Index;
   constexpr std::size_t n = std::size_t(N), chunks = J::chunks;
@@ -204,11 +205,11 @@ Eigen::Matrix<jet<S, D>, N, 1> solve_block(const Eigen::Matrix<jet<S, D>, N, N>&
   typename J::chunk r[n][chunks];
   for (std::size_t i = 0; i < n; ++i)
 #pragma GCC unroll 8
-    for (std::size_t k = 0; k < n; ++k) y[i] += inv(I(i), I(k)).v * t(I(k)).v;
+    for (std::size_t k = 0; k < n; ++k) y[i] += inv(I(i), I(k)).v * rhs(I(k)).v;
   for (std::size_t i = 0; i < n; ++i)
 #pragma GCC unroll 16
     for (std::size_t q = 0; q < chunks; ++q) {
-      r[i][q] = t(I(i)).c[q];
+      r[i][q] = rhs(I(i)).c[q];
 #pragma GCC unroll 8
       for (std::size_t k = 0; k < n; ++k) r[i][q] -= b(I(i), I(k)).c[q] * y[k];
     }
