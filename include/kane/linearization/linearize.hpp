@@ -76,14 +76,11 @@ struct pose_evaluator<evaluator<St, Fr, L, Sp>> {
 template <std::size_t N, class St>
 auto lift(const St& s) {
   using J = jet<typename St::scalar, N>;
-  typename rebind_state<St, J>::type out;
-  const auto copy = [](auto& to, const auto& from) {
-    for (std::size_t i = 0; i < from.size(); ++i) to[i] = J(from[i]);
+  const auto up = [](const auto& a) {  // built in place: no zeros written first
+    return [&]<std::size_t... I>(std::index_sequence<I...>) { return std::array<J, sizeof...(I)>{J(a[I])...}; }
+    (std::make_index_sequence<std::tuple_size_v<std::remove_cvref_t<decltype(a)>>>{});
   };
-  copy(out.q, s.q), copy(out.qd, s.qd), copy(out.qdd, s.qdd), copy(out.u, s.u), copy(out.ud, s.ud);
-  copy(out.p, s.p);
-  out.t = J(s.t);
-  return out;
+  return typename rebind_state<St, J>::type{up(s.q), up(s.qd), up(s.qdd), up(s.u), up(s.ud), up(s.p), J(s.t)};
 }
 template <class In, class J, class St>
 void seed_inputs(St& s, std::size_t first) {
@@ -153,7 +150,11 @@ auto constrained_point(const typename Ev::state_type& s, solve_status& status) {
   constexpr std::size_t nx = qs.n + NH::p, n = nx + In::n;
   using J = jet<typename Ev::scalar, n>;
   using JEv = typename rebind_evaluator<Ev, J>::type;
-  auto js = lift<n>(s);
+  struct {
+    decltype(lift<n>(s)) js;
+    std::array<J, nq + NH::p> x;
+  } out{lift<n>(s), {}};  // built and returned in place
+  auto& [js, x] = out;
   for (std::size_t k = 0; k < qi.size(); ++k)
     if (qs.slot[k] != no_slot) js.q[qi[k] - 1] = J::variable(s.q[qi[k] - 1], qs.slot[k]);
   seed_inputs<In, J>(js, nx);
@@ -165,10 +166,9 @@ auto constrained_point(const typename Ev::state_type& s, solve_status& status) {
     const auto r = solve_configuration<H>(ev, js, {J(-1), 1});
     if (r.status != solve_status::not_converged) status = r.status;
   }
-  std::array<J, nq + NH::p> x{};
   for (std::size_t i = 0; i < nq; ++i) x[i] = js.q[i];
   for (std::size_t k = 0; k < NH::p; ++k) x[nq + k] = J::variable(s.u[NH::independents[k] - 1], qs.n + k);
-  return std::pair{js, x};
+  return out;
 }
 }  // namespace detail
 
