@@ -40,10 +40,11 @@ struct jet {
   // N rounded up to whole chunks; part(i) reads d_i. Arithmetic works chunk by chunk,
   // so no jet is a constant expression (Clang does not evaluate vector types there).
   // The chunk follows the target (-mavx...): units built for different targets must
-  // not exchange jets.
+  // not exchange jets. Chunks keep their natural alignment (their size), so none
+  // straddles a cache line (the bicycle's A with 8-byte alignment: 14-16 % slower).
   static constexpr std::size_t width = detail::simd_bytes > sizeof(S) ? detail::simd_bytes / sizeof(S) : 1,
                                chunks = (N + width - 1) / width;
-  typedef S chunk __attribute__((vector_size(sizeof(S) * width), aligned(alignof(S))));
+  typedef S chunk __attribute__((vector_size(sizeof(S) * width)));
   S v;
   chunk c[chunks];
 

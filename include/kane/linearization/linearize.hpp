@@ -77,7 +77,9 @@ template <std::size_t N, class St>
 auto lift(const St& s) {
   using J = jet<typename St::scalar, N>;
   const auto up = [](const auto& a) {  // built in place: no zeros written first
-    return [&]<std::size_t... I>(std::index_sequence<I...>) { return std::array<J, sizeof...(I)>{J(a[I])...}; }
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+      return std::array<J, sizeof...(I)>{J(a[I])...};
+    }
     (std::make_index_sequence<std::tuple_size_v<std::remove_cvref_t<decltype(a)>>>{});
   };
   return typename rebind_state<St, J>::type{up(s.q), up(s.qd), up(s.qdd), up(s.u), up(s.ud), up(s.p), J(s.t)};
