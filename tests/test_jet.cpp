@@ -1,5 +1,6 @@
 // Jets (linearization/jet.hpp) and common subexpressions (evaluation/memo.hpp):
-// the inverse of a matrix of jets against Gauss-Jordan elimination on jets, and
+// the inverse of a matrix of jets against Gauss-Jordan elimination on jets, the
+// block and positive definite solves of jets against elimination and Cholesky on jets, and
 // the rolling disc's differentiated constraints evaluated on jets with and
 // without recalling their repeated subtrees.
 #include <catch2/catch.hpp>
@@ -53,6 +54,40 @@ TEST_CASE("jet: m^-1 from the values' inverse and -X dm X equals Gauss-Jordan on
   const M4 s = jet_matrix(1.0);
   CHECK_FALSE(invert(s, a));
   CHECK_FALSE(kane::detail::invert(s, b));
+}
+
+TEST_CASE("jet: the solves that jets overload equal elimination and Cholesky carried out on jets") {
+  // a coupled block: y = X t from the values' inverse, dy = X (dt - dB y), against B^-1 t on jets
+  const M4 m = jet_matrix(0.0);
+  Eigen::Matrix<J, 4, 1> t, y;
+  for (int i = 0; i < 4; ++i) t(i) = J(1.0 + i) + J::variable(0.0, 1) * J(0.5 * i - 1) + J::variable(0.0, 2);
+  M4 x, inverse;
+  REQUIRE(factor_block(m, x, J(-1)));  // the jets' overloads (argument-dependent lookup)
+  REQUIRE(kane::detail::invert(m, inverse));
+  y = solve_block(x, m, t);
+  const Eigen::Matrix<J, 4, 1> expected = inverse * t;
+  for (int i = 0; i < 4; ++i) {
+    CHECK(std::abs(y(i).v - expected(i).v) < 1e-13);
+    for (std::size_t k = 0; k < 3; ++k) CHECK(std::abs(y(i).part(k) - expected(i).part(k)) < 1e-12);
+  }
+  const M4 s = jet_matrix(1.0);
+  CHECK_FALSE(factor_block(s, x, J(-1)));
+  // positive definite: Cholesky of the values and M dx = df - dM x, against Eigen's LLT on jets
+  const M4 spd = m.transpose() * m;
+  Eigen::Matrix<J, 4, 1> u = Eigen::Matrix<J, 4, 1>::Constant(J(7.0));
+  REQUIRE(solve_positive_definite(spd, t, u));
+  const Eigen::Matrix<J, 4, 1> llt = Eigen::LLT<M4>(spd).solve(t);
+  for (int i = 0; i < 4; ++i) {
+    CHECK(std::abs(u(i).v - llt(i).v) < 1e-12);
+    for (std::size_t k = 0; k < 3; ++k) CHECK(std::abs(u(i).part(k) - llt(i).part(k)) < 1e-11);
+  }
+  // not positive definite: false, and x untouched
+  M4 indefinite = spd;
+  indefinite(2, 2) = J(-1.0);
+  u.setConstant(J(7.0));
+  CHECK_FALSE(solve_positive_definite(indefinite, t, u));
+  CHECK(u(0).v == 7.0);
+  CHECK(u(0).part(1) == 0.0);
 }
 
 TEST_CASE("memo: repeated subtrees are found once, and recalling them changes no number") {
