@@ -143,45 +143,6 @@ struct jet {
   }
 };
 
-// m^-1 of jets (found by argument-dependent lookup beside detail::invert): the
-// inverse X of the values under its rank rule, then d(m^-1) = -X dm X, one
-// chunk of directions at a time.
-template <class S, std::size_t D, int N>
-bool invert(const Eigen::Matrix<jet<S, D>, N, N>& m, Eigen::Matrix<jet<S, D>, N, N>& inv,
-            jet<S, D> tol = jet<S, D>(-1)) {
-  using J = jet<S, D>;
-  using chunk = typename J::chunk;
-  using I = Eigen::Index;
-  constexpr std::size_t n = std::size_t(N), chunks = J::chunks;
-  Eigen::Matrix<S, N, N> v, x;
-  for (I i = 0; i < N; ++i)
-    for (I j = 0; j < N; ++j) v(i, j) = m(i, j).v;
-  if (!detail::invert(v, x, tol.v)) return false;
-  chunk xdm[n][n][chunks] = {}, xdmx[n][n][chunks] = {};
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t k = 0; k < n; ++k) {
-      const S a = x(I(i), I(k));
-#pragma GCC unroll 8
-      for (std::size_t j = 0; j < n; ++j)
-#pragma GCC unroll 16
-        for (std::size_t q = 0; q < chunks; ++q) xdm[i][j][q] += a * m(I(k), I(j)).c[q];
-    }
-  for (std::size_t k = 0; k < n; ++k)
-    for (std::size_t j = 0; j < n; ++j) {
-      const S a = x(I(k), I(j));
-#pragma GCC unroll 8
-      for (std::size_t i = 0; i < n; ++i)
-#pragma GCC unroll 16
-        for (std::size_t q = 0; q < chunks; ++q) xdmx[i][j][q] += xdm[i][k][q] * a;
-    }
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) {
-      inv(I(i), I(j)).v = x(I(i), I(j));
-      for (std::size_t q = 0; q < chunks; ++q) inv(I(i), I(j)).c[q] = -xdmx[i][j][q];
-    }
-  return true;
-}
-
 // A coupled block B of a structured solve on jets: the inverse X of its values alone
 // (factor_block), then y = X t and dy = X (dt - dB y) (solve_block), one chunk at a time.
 template <class S, std::size_t D, int N>
