@@ -226,11 +226,11 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
                               : fac.singular                ? solve_status::singular
                               : residue == S(0)             ? solve_status::ok
                                                             : solve_status::not_finite;
-  if (status != solve_status::ok)
-    static_for<n * k>([&](auto cj) {
-      constexpr std::size_t c = cj / k, j = cj % k;
-      if constexpr (Sys::x[c][j] == entry::other) x[c][j] = limits::quiet_NaN();
-    });
+  const auto spoil = nan_unless<S>(status == solve_status::ok);
+  static_for<n * k>([&](auto cj) {
+    constexpr std::size_t c = cj / k, j = cj % k;
+    if constexpr (Sys::x[c][j] == entry::other) spoil(x[c][j]);
+  });
   return status;
 }
 

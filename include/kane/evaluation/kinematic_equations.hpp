@@ -155,13 +155,12 @@ class kinematic_equations {
       }
     });
     if (status_ == solve_status::ok && !finite) status_ = solve_status::not_finite;
-    if (status_ != solve_status::ok)
-      static_for<nq * nq>([&](auto rc) {
-        constexpr std::size_t r = rc / nq, c = rc % nq;
-        if constexpr (system::x[r][c] == entry::other)
-          kde_w_[r][c] = std::numeric_limits<scalar>::quiet_NaN();
-        if constexpr (c == 0 && system::offset[r]) kde_x_[r] = std::numeric_limits<scalar>::quiet_NaN();
-      });
+    const auto spoil = nan_unless<scalar>(status_ == solve_status::ok);
+    static_for<nq * nq>([&](auto rc) {
+      constexpr std::size_t r = rc / nq, c = rc % nq;
+      if constexpr (system::x[r][c] == entry::other) spoil(kde_w_[r][c]);
+      if constexpr (c == 0 && system::offset[r]) spoil(kde_x_[r]);
+    });
   }
   // q' (NaN if status_ is not ok; not_finite if q' = W u + X overflows).
   KANE_ALWAYS_INLINE void solve_rates(const St& s) {

@@ -84,9 +84,10 @@ class outward_pass {
   KANE_ALWAYS_INLINE void pass(const trig_type& t, const Rates& rates) {
     pass_over<Pose, Velocity, Acceleration>(closure{}, t, rates);
   }
-  // element by element: a wide copy of values just written narrowly would stall
+  // element by element (a wide copy of values just written narrowly would stall) and unrolled
+  // (after a loop g++ no longer forwards the pass's stores to the reads that follow)
   KANE_ALWAYS_INLINE void store_trig(const trig_type& t) {
-    for (std::size_t k = 0; k < trig_type::size; ++k) trig_.s[k] = t.s[k], trig_.c[k] = t.c[k];
+    detail::static_for<trig_type::size>([&](auto k) { trig_.s[k] = t.s[k], trig_.c[k] = t.c[k]; });
   }
   const trig_type& cached_trig() const { return trig_; }
 

@@ -10,7 +10,11 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
+#include <type_traits>
 #include <utility>
+
+#include "kane/detail/inline.hpp"
 
 #if (defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__)) && \
     !defined(KANE_ALLOW_FAST_MATH)
@@ -30,6 +34,22 @@ constexpr S nonfinite_residue(const std::array<S, N>& a) {
   [&]<std::size_t... I>(std::index_sequence<I...>) { ((sum += a[I] - a[I]), ...); }
   (std::make_index_sequence<N>{});
   return sum;
+}
+// spoil(x) makes x (an S or a matrix of S) NaN unless ok: for numbers a product
+// by 1 or NaN (no branch, so the results need not merge), else a store.
+template <class S>
+KANE_ALWAYS_INLINE auto nan_unless(bool ok) {
+  if constexpr (std::is_floating_point_v<S>)
+    return [factor = ok ? S(1) : std::numeric_limits<S>::quiet_NaN()](auto& x) { x *= factor; };
+  else
+    return [ok](auto& x) {
+      if (ok) return;
+      const S nan = std::numeric_limits<S>::quiet_NaN();
+      if constexpr (requires { x.setConstant(nan); })
+        x.setConstant(nan);
+      else
+        x = nan;
+    };
 }
 template <class S, std::size_t N>
 constexpr bool all_finite(const std::array<S, N>& a) {

@@ -222,10 +222,8 @@ KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
     for (std::size_t j = 0; j < p; ++j) out.A(row, static_cast<Eigen::Index>(j)) = -x[k][j];
     out.B(row) = -x[k][p];
   }
-  if (out.status != solve_status::ok) {
-    out.A.setConstant(std::numeric_limits<S>::quiet_NaN());
-    out.B.setConstant(std::numeric_limits<S>::quiet_NaN());
-  }
+  const auto spoil = detail::nan_unless<S>(out.status == solve_status::ok);
+  spoil(out.A), spoil(out.B);
   return out;
 }
 
