@@ -1,7 +1,8 @@
 // Jets (linearization/jet.hpp) and common subexpressions (evaluation/memo.hpp):
 // the block and positive definite solves of jets against elimination and Cholesky
-// carried out on jets, and the rolling disc's differentiated constraints evaluated
-// on jets with and without recalling their repeated subtrees.
+// carried out on jets, nan_unless on numbers, jets and matrices, and the rolling
+// disc's differentiated constraints evaluated on jets with and without recalling
+// their repeated subtrees.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -135,4 +136,33 @@ TEST_CASE(
     for (std::size_t i = 0; i < 8; ++i)
       CHECK(std::abs((fp[i] - fm[i]) / 2e-6 - lin.A(Eigen::Index(i), Eigen::Index(j))) < 1e-7);
   }
+}
+
+TEST_CASE("nan_unless: numbers keep every bit when ok and all matrices and jets turn NaN when not") {
+  using kane::detail::nan_unless;
+  double z = -0.0, inf = HUGE_VAL, a = 2.5;
+  const auto keep = nan_unless<double>(true);
+  keep(z), keep(inf), keep(a);
+  CHECK(std::signbit(z));
+  CHECK(z == 0.0);
+  CHECK(inf == HUGE_VAL);
+  CHECK(a == 2.5);
+  nan_unless<double>(false)(a);
+  CHECK(std::isnan(a));
+  Eigen::Matrix<double, 2, 3> m = Eigen::Matrix<double, 2, 3>::Constant(-1.5);
+  keep(m);
+  CHECK(m(1, 2) == -1.5);
+  nan_unless<double>(false)(m);
+  CHECK(m.array().isNaN().all());
+  J j = J(3.0) + J::variable(0.0, 1);
+  nan_unless<J>(true)(j);
+  CHECK(j.v == 3.0);
+  CHECK(j.part(1) == 1.0);
+  nan_unless<J>(false)(j);
+  CHECK(std::isnan(j.v));
+  Eigen::Matrix<J, 2, 2> mj = Eigen::Matrix<J, 2, 2>::Constant(J(4.0));
+  nan_unless<J>(true)(mj);
+  CHECK(mj(1, 0).v == 4.0);
+  nan_unless<J>(false)(mj);
+  for (int i = 0; i < 4; ++i) CHECK(std::isnan(mj(i).v));
 }
