@@ -170,7 +170,8 @@ class kinematic_equations {
       qd_ = apply<true, nd>(s.u);
     }
     if (status_ == solve_status::ok && !all_finite(qd_)) status_ = solve_status::not_finite;
-    if (status_ != solve_status::ok) qd_.fill(std::numeric_limits<scalar>::quiet_NaN());
+    if (status_ != solve_status::ok)  // a branch, as for q'': as products (nan_unless) they measured slower
+      qd_.fill(std::numeric_limits<scalar>::quiet_NaN());
   }
   // (W v)_c (+ X_c) for v zero beyond its first Cols entries, skipping the zeros of W and X.
   template <std::size_t C, bool Offset, std::size_t Cols, class V>

@@ -223,7 +223,8 @@ KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
     out.B(row) = -x[k][p];
   }
   const auto spoil = detail::nan_unless<S>(out.status == solve_status::ok);
-  spoil(out.A), spoil(out.B);
+  spoil(out.A);
+  spoil(out.B);
   return out;
 }
 
