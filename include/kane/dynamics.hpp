@@ -5,6 +5,7 @@
 #include "kane/dynamics/bodies.hpp"
 #include "kane/dynamics/equations.hpp"
 #include "kane/dynamics/generalized_forces.hpp"
+#include "kane/dynamics/inverse_dynamics.hpp"
 #include "kane/dynamics/motion.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
 #include "kane/dynamics/terms.hpp"

@@ -21,6 +21,9 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/invert.hpp"
 #include "kane/dynamics/bodies.hpp"
+#include "kane/dynamics/crba.hpp"
+#include "kane/dynamics/joint_form.hpp"
+#include "kane/dynamics/rnea.hpp"
 #include "kane/dynamics/terms.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/memo.hpp"
@@ -201,9 +204,36 @@ equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, 
     out.status = solve_status::not_finite;
   return out;
 }
+template <class Sys, class Ev>
+using joint_form_of = joint_form<Sys, typename Ev::root, speeds_of<Ev>>;
+template <class Sys, class Ev>
+inline constexpr bool recursive_form = joint_form_of<Sys, Ev>::table.local;
+// M by composite bodies and f by inward sums (crba.hpp, rnea.hpp); without Forcing, f = 0.
+template <class Sys, bool Forcing, class Ev>
+equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n> recursive_equations(const Ev& ev) {
+  using S = typename Ev::scalar;
+  using JF = joint_form_of<Sys, Ev>;
+  constexpr std::size_t n = speeds_of<Ev>::n;
+  static_assert(detail::forces_checked<Sys>(typename Sys::items{}));
+  equations_of_motion<S, n> out{Eigen::Matrix<S, int(n), int(n)>(), Eigen::Matrix<S, int(n), 1>::Zero(),
+                                ev.status()};
+  const body_frames<JF, Ev> bf(ev);
+  composite_mass_matrix<JF, Sys>(bf, ev, out.M);
+  if constexpr (Forcing) {
+    joint_forces<true, JF, Sys>(bf, ev, out.f);
+    out.f = -out.f;
+  }
+  if (out.status == solve_status::ok &&
+      !(detail::all_finite_matrix(out.M) && detail::all_finite_matrix(out.f)))
+    out.status = solve_status::not_finite;
+  return out;
+}
 template <class Sys, bool RestRates, class Ev>
 equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n> mass_matrix_and_forcing_at(const Ev& ev) {
-  return equations_along<Sys, RestRates, true>(ev, all_speeds<speeds_of<Ev>::n>{});
+  if constexpr (recursive_form<Sys, Ev>)
+    return recursive_equations<Sys, true>(ev);
+  else
+    return equations_along<Sys, RestRates, true>(ev, all_speeds<speeds_of<Ev>::n>{});
 }
 }  // namespace detail
 
@@ -228,7 +258,12 @@ requires detail::is_evaluator<Ev>::value mass_matrix_only<typename Ev::scalar, d
 mass_matrix(const Ev& ev) {
   constexpr std::size_t n = detail::speeds_of<Ev>::n;
   return detail::flat<typename Ev::scalar>([&] {
-    const auto e = detail::equations_along<Sys, true, false>(ev, detail::all_speeds<n>{});
+    const auto e = [&] {
+      if constexpr (detail::recursive_form<Sys, Ev>)
+        return detail::recursive_equations<Sys, false>(ev);
+      else
+        return detail::equations_along<Sys, true, false>(ev, detail::all_speeds<n>{});
+    }();
     return mass_matrix_only<typename Ev::scalar, n>{e.M, e.status};
   });
 }

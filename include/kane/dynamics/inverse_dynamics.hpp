@@ -1,0 +1,78 @@
+// Entry points of the dynamics at the evaluator's state, each with the status of
+// the evaluator (or not_finite, or singular):
+//
+//   kane::inverse_dynamics<Sys>(ev)  tau = M u' - f: the generalized forces that,
+//                                    added to the system's loads, give the state's u'
+//   kane::forcing<Sys>(ev)           f alone (tau at u' = 0 is -f, the bias)
+//   kane::forward_dynamics<Sys>(ev)  u' = M^-1 f
+//
+// For a system of joint form (joint_form.hpp) tau and f come from one outward and
+// one inward pass (rnea.hpp) and M from composite bodies (crba.hpp); otherwise
+// from Kane's sums (equations.hpp). Each returns {value, status}; when the status
+// is not ok the value is NaN.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <utility>
+
+#include <Eigen/Core>
+
+#include "kane/detail/inline.hpp"
+#include "kane/dynamics/equations.hpp"
+
+namespace kane {
+
+namespace detail {
+template <class S, std::size_t N>
+using speed_values = std::pair<Eigen::Matrix<S, int(N), 1>, solve_status>;
+
+// tau at the state's u' (Rest false) or at u' = 0 (Rest true).
+template <class Sys, bool Rest, class Ev>
+speed_values<typename Ev::scalar, speeds_of<Ev>::n> inverse_at(const Ev& ev) {
+  using S = typename Ev::scalar;
+  constexpr std::size_t n = speeds_of<Ev>::n;
+  Eigen::Matrix<S, int(n), 1> tau;
+  if constexpr (recursive_form<Sys, Ev>) {
+    static_assert(forces_checked<Sys>(typename Sys::items{}));
+    using JF = joint_form_of<Sys, Ev>;
+    const body_frames<JF, Ev> bf(ev);
+    joint_forces<Rest, JF, Sys>(bf, ev, tau);
+  } else {
+    const auto e = mass_matrix_and_forcing_at<Sys, false>(ev);
+    if constexpr (Rest)
+      tau = -e.f;
+    else
+      tau = e.M * speed_rates(ev) - e.f;
+  }
+  solve_status status = ev.status();
+  if (status == solve_status::ok && !all_finite_matrix(tau)) status = solve_status::not_finite;
+  if (status != solve_status::ok) tau.setConstant(std::numeric_limits<S>::quiet_NaN());
+  return {tau, status};
+}
+}  // namespace detail
+
+template <class Sys, class Ev>
+requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, detail::speeds_of<Ev>::n>
+inverse_dynamics(const Ev& ev) {
+  return detail::flat<typename Ev::scalar>([&] { return detail::inverse_at<Sys, false>(ev); });
+}
+
+template <class Sys, class Ev>
+requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, detail::speeds_of<Ev>::n>
+forcing(const Ev& ev) {
+  return detail::flat<typename Ev::scalar>([&] {
+    auto out = detail::inverse_at<Sys, true>(ev);
+    out.first = -out.first;
+    return out;
+  });
+}
+
+template <class Sys, class Ev>
+requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, detail::speeds_of<Ev>::n>
+forward_dynamics(const Ev& ev) {
+  return detail::flat<typename Ev::scalar>(
+      [&] { return speed_derivatives(detail::mass_matrix_and_forcing_at<Sys, false>(ev)); });
+}
+
+}  // namespace kane

@@ -1,0 +1,321 @@
+// When Kane's sums regroup over the tree (crba.hpp, rnea.hpp): the joint form
+// of a system, decided at compile time.
+//
+// Every speed u_r = q_r' turns exactly one edge of the frame tree, a simple
+// rotation by q_r about an axis k_r (the other edges turn by constant angles);
+// every point of the system (mass centres, particles, points of forces) is a
+// chain of vectors, each fixed in a frame, from the root's origin, the frames
+// of each chain ordered down one path of the tree. Then, for every item below
+// the edge of u_r,
+//   w_r = k_r,   v_r(P) = k_r x (P - X_r) = k_r x P + X_r x k_r,
+// with X_r the point of the chain where its vectors below the edge begin;
+// when every item below the edge has the same X_r, the partial velocities of
+// u_r are one screw S_r = (k_r, X_r x k_r): the composite-body sums hold.
+// The tables are constexpr arrays over the frames and points (indices, not
+// types), so their cost grows like the model, not like its square.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+
+#include "kane/detail/list.hpp"
+#include "kane/detail/tree.hpp"
+#include "kane/dynamics/bodies.hpp"
+#include "kane/kinematics/derivative.hpp"
+#include "kane/kinematics/edges.hpp"
+#include "kane/kinematics/point.hpp"
+#include "kane/speeds/generalized_speeds.hpp"
+
+namespace kane::detail {
+
+struct no_frame {};     // the zero vector: fixed in every frame
+struct mixed_frame {};  // fixed in no one frame (or not constant)
+
+template <class S>
+inline constexpr bool constant_scalar =
+    std::is_same_v<std::remove_cv_t<decltype(ddt(std::declval<S>()))>, zero_t>;
+
+// The frame a vector expression is fixed in: sums of constants times unit vectors of one frame.
+template <class V>
+struct fixed_frame_of {
+  using type = mixed_frame;
+};
+template <>
+struct fixed_frame_of<zero_vector> {
+  using type = no_frame;
+};
+template <class F, int I>
+struct fixed_frame_of<unit<F, I>> {
+  using type = F;
+};
+template <class S, class V>
+struct fixed_frame_of<scaled<S, V>> {
+  using type = std::conditional_t<constant_scalar<S>, typename fixed_frame_of<V>::type, mixed_frame>;
+};
+template <class V>
+struct fixed_frame_of<vneg<V>> : fixed_frame_of<V> {};
+template <class A, class B>
+struct joined_fixed_frame {
+  using type = std::conditional_t<
+      std::is_same_v<A, no_frame>, B,
+      std::conditional_t<std::is_same_v<B, no_frame> || std::is_same_v<A, B>, A, mixed_frame>>;
+};
+template <class L, class R>
+struct fixed_frame_of<vsum<L, R>>
+    : joined_fixed_frame<typename fixed_frame_of<L>::type, typename fixed_frame_of<R>::type> {};
+template <class L, class R>
+struct fixed_frame_of<vdiff<L, R>>
+    : joined_fixed_frame<typename fixed_frame_of<L>::type, typename fixed_frame_of<R>::type> {};
+
+// The frame the vector from P's predecessor to P is fixed in (no_frame for an origin).
+template <class P>
+struct segment_frame {
+  using type = typename fixed_frame_of<std::remove_cv_t<decltype(P::position)>>::type;
+};
+template <class F>
+struct segment_frame<origin<F>> {
+  using type = no_frame;
+};
+
+template <class T, class... Ts>
+constexpr int index_in(list<Ts...>) {
+  int i = 0, found = -1;
+  ((std::is_same_v<T, Ts> ? void(found = i) : void(), ++i), ...);
+  return found;
+}
+
+// The point of an item (its mass centre, its particle, the point of a force), or void.
+template <class X>
+struct item_point {
+  using type = void;
+};
+template <class X>
+requires(is_particle<X> || is_force<X>) struct item_point<X> {
+  using type = typename X::point;
+};
+template <class X>
+requires is_body<X>
+struct item_point<X> {
+  using type = typename X::centre;
+};
+// The frame of a body or a torque, or void.
+template <class X>
+struct item_frame {
+  using type = void;
+};
+template <class X>
+requires(is_body<X> || is_torque<X>) struct item_frame<X> {
+  using type = typename X::frame;
+};
+
+template <class... P>
+struct point_closure {
+  using type =
+      typename unique<typename concat<typename reverse<typename point_chain<P>::type>::type...>::type>::type;
+};
+template <template <class> class M, class L>
+struct map_items;
+template <template <class> class M, class... T>
+struct map_items<M, list<T...>> {
+  using type = list<typename M<T>::type...>;
+};
+template <template <class...> class M, class L>
+struct apply_list;
+template <template <class...> class M, class... T>
+struct apply_list<M, list<T...>> : M<T...> {};
+template <class L>
+struct not_void;
+template <class... T>
+struct not_void<list<T...>> {
+  using type = typename concat<
+      std::conditional_t<std::is_void_v<T> || std::is_same_v<T, no_frame>, list<>, list<T>>...>::type;
+};
+
+// The kind of the edge above F: 1 + r for a simple rotation by q_r, 0 for a constant edge, -1 else.
+template <class F>
+constexpr int edge_kind() {
+  if constexpr (std::is_void_v<typename F::tree_parent>)
+    return 0;
+  else if constexpr (spin_edge<F> || matrix_edge<F>)
+    return -1;
+  else if constexpr (F::step::coordinate_index != 0)
+    return int(F::step::coordinate_index);
+  else
+    return constant_edge<F>() ? 0 : -1;
+}
+
+// What the recursive sums need of the items of Sys, in a tree of root R, with n speeds u_r = q_r'.
+template <std::size_t NF, std::size_t NP, std::size_t NI, std::size_t N>
+struct joint_table {
+  bool holds = false;
+  std::array<int, NF> parent{};       // index of the tree parent (-1: the root)
+  std::array<int, NF> speed{};        // r - 1 of the edge's q_r (-1: a constant edge)
+  std::array<int, NP> from{};         // index of the predecessor point (-1: the origin)
+  std::array<int, NP> segment{};      // frame of the vector to the point (-1: none)
+  std::array<int, NP> attach{};       // the deepest frame of the point's chain (0: the root)
+  std::array<int, NI> item_frame{};   // the frame whose edges move the item (-1: not moved)
+  std::array<int, NI> item_point{};   // its point (-1: none)
+  std::array<int, N> joint_frame{};   // the frame turned by u_r
+  std::array<int, N> joint_point{};   // X_r, a point index (-1: no point below the edge)
+  std::array<int, N> parent_speed{};  // the nearest speed above u_r's edge (-1: none)
+  // Body coordinates: every frame F has an origin o_F (X_r of its edge, its parent's for a
+  // constant edge, O for the root); every point P is located from o_G in G's components
+  // (G = frame[P]); o_F from o_P in P's, an item of F from o_F in F's.
+  bool local = false;
+  std::array<int, NF> origin{};
+  std::array<int, NP> frame{};
+
+  constexpr bool below(int f, int g) const {  // g is f or an ancestor of f
+    for (; f >= 0; f = parent[std::size_t(f)])
+      if (f == g) return true;
+    return false;
+  }
+  // The point where the chain of P first has a vector fixed at or below frame g (P if none).
+  constexpr int joint_of(int p, int g) const {
+    int x = p;
+    for (int c = p; c >= 0 && from[std::size_t(c)] >= 0; c = from[std::size_t(c)])
+      if (segment[std::size_t(c)] >= 0 && below(segment[std::size_t(c)], g)) x = from[std::size_t(c)];
+    return x;
+  }
+};
+
+template <class T>
+constexpr bool local_origins(T& t) {
+  bool ok = true;
+  for (std::size_t f = 1; f < t.origin.size(); ++f) {
+    const int r = t.speed[f];
+    t.origin[f] = r >= 0 ? t.joint_point[std::size_t(r)] : t.origin[std::size_t(t.parent[f])];
+    ok = ok && t.origin[f] >= 0;
+  }
+  for (std::size_t p = 0; p < t.frame.size() && ok; ++p) {
+    const int from = t.from[p], g = t.segment[p];
+    if (from < 0)
+      t.frame[p] = 0;
+    else if (g < 0)
+      t.frame[p] = t.frame[std::size_t(from)];
+    else {
+      ok = from == t.origin[std::size_t(g)] || t.frame[std::size_t(from)] == g;
+      t.frame[p] = g;
+    }
+  }
+  for (std::size_t f = 1; f < t.origin.size() && ok; ++f) {
+    const int o = t.origin[f], op = t.origin[std::size_t(t.parent[f])];
+    ok = o == op || t.frame[std::size_t(o)] == t.parent[f];
+  }
+  for (std::size_t i = 0; i < t.item_frame.size() && ok; ++i) {
+    const int f = t.item_frame[i], p = t.item_point[i];
+    ok = f <= 0 || p < 0 || p == t.origin[std::size_t(f)] || t.frame[std::size_t(p)] == f;
+  }
+  return ok;
+}
+template <class Sys, class R, class Sp>
+struct joint_form {
+  using items = typename Sys::items;
+  using points = typename not_void<typename map_items<item_point, items>::type>::type;
+  using all_points = typename apply_list<point_closure, points>::type;
+  using segment_frames = typename map_items<segment_frame, all_points>::type;
+  static constexpr bool fixed_segments = []<class... G>(list<G...>) {
+    return (!std::is_same_v<G, mixed_frame> && ...);
+  }(segment_frames{});
+  using item_frames = typename not_void<typename map_items<item_frame, items>::type>::type;
+  using frame_list = typename apply_list<
+      closure,
+      std::conditional_t<fixed_segments,
+                         typename concat<list<R>, item_frames, typename not_void<segment_frames>::type>::type,
+                         list<R>>>::type;
+  static constexpr std::size_t nf = size<frame_list>::value, np = size<all_points>::value,
+                               ni = size<items>::value, n = Sp::n;
+
+  static constexpr auto table = [] {
+    joint_table<nf, np, ni, n> t;
+    if constexpr (!fixed_segments || !std::is_same_v<Sp, qdot_speeds<n>>)
+      return t;
+    else {
+      bool ok = true;
+      std::array<int, n> edges{};
+      [&]<class... F>(list<F...>) {
+        std::size_t i = 0;
+        (
+            [&] {
+              constexpr int kind = edge_kind<F>();
+              t.parent[i] = index_in<typename F::tree_parent>(frame_list{});
+              t.speed[i] = kind - 1;
+              ok = ok && kind >= 0 && kind <= int(n) && (i == 0) == std::is_void_v<typename F::tree_parent>;
+              if (kind > 0) ++edges[std::size_t(kind - 1)], t.joint_frame[std::size_t(kind - 1)] = int(i);
+              ++i;
+            }(),
+            ...);
+      }(frame_list{});
+      for (int e : edges) ok = ok && e == 1;
+      [&]<class... P>(list<P...>) {
+        std::size_t i = 0;
+        (
+            [&] {
+              if constexpr (requires { typename P::fixed_frame; })  // one origin, fixed in R
+                ok = ok && i == 0 && std::is_same_v<typename P::fixed_frame, R>, t.from[i] = -1;
+              else
+                t.from[i] = index_in<typename P::from>(all_points{});
+              using G = typename segment_frame<P>::type;
+              t.segment[i] = std::is_same_v<G, no_frame> ? -1 : index_in<G>(frame_list{});
+              ++i;
+            }(),
+            ...);
+      }(all_points{});
+      if (!ok) return t;
+      // the frames of each chain down one path: attach is the deepest
+      for (std::size_t p = 0; p < np; ++p) {
+        const int f = t.from[p] < 0 ? 0 : t.attach[std::size_t(t.from[p])], g = t.segment[p];
+        ok = ok && (g < 0 || t.below(g, f));
+        t.attach[p] = g < 0 ? f : g;
+      }
+      [&]<class... X>(list<X...>) {
+        std::size_t i = 0;
+        (
+            [&] {
+              using P = typename item_point<X>::type;
+              using F = typename item_frame<X>::type;
+              const int p = std::is_void_v<P> ? -1 : index_in<P>(all_points{});
+              const int f = std::is_void_v<F> ? -1 : index_in<F>(frame_list{});
+              t.item_frame[i] = f >= 0 ? f : p >= 0 ? t.attach[std::size_t(p)] : -1;
+              t.item_point[i] = p;
+              if (f >= 0 && p >= 0) ok = ok && t.below(f, t.attach[std::size_t(p)]);  // a body's centre
+              ++i;
+            }(),
+            ...);
+      }(items{});
+      // one joint point X_r for every item below the edge of u_r
+      for (std::size_t r = 0; r < n && ok; ++r) {
+        const int g = t.joint_frame[r];
+        int x = -1;
+        [&]<class... X>(list<X...>) {
+          std::size_t i = 0;
+          (
+              [&] {
+                using P = typename item_point<X>::type;
+                if constexpr (!std::is_void_v<P>) {
+                  const int p = index_in<P>(all_points{}), f = t.item_frame[i];
+                  if (f >= 0 && t.below(f, g)) {
+                    const int y = t.joint_of(p, g);
+                    ok = ok && (x < 0 || x == y);
+                    x = y;
+                  }
+                }
+                ++i;
+              }(),
+              ...);
+        }(items{});
+        t.joint_point[r] = x;
+        int a = t.parent[std::size_t(g)];
+        while (a >= 0 && t.speed[std::size_t(a)] < 0) a = t.parent[std::size_t(a)];
+        t.parent_speed[r] = a < 0 ? -1 : t.speed[std::size_t(a)];
+      }
+      t.holds = ok;
+      if (ok) t.local = local_origins(t);
+      return t;
+    }
+  }();
+  static constexpr bool holds = table.holds;
+};
+
+}  // namespace kane::detail

@@ -1,0 +1,117 @@
+// Inverse dynamics by inward sums (the recursive Newton-Euler algorithm):
+// Kane's -(F_r + F*_r) = sum over items of v_r . (m a - R) + w_r . (I alpha +
+// w x I w - T), regrouped. In a system of joint form (joint_form.hpp) every item
+// below the edge of u_r turns about k_r through o_r, so
+//   M u' - f = tau,   tau_r = k_r . n_r,
+// with n_r the moment about o_r of the items below the edge. In body coordinates
+// (body_frames.hpp), outward: w_F = E^T w_P + u k, alpha_F = E^T alpha_P + u' k +
+// u (E^T w_P) x k, a_F = E^T (a_P + alpha_P x t + w_P x (w_P x t)), a_O = -g
+// (gravity as an acceleration of the base); per item f = m a_C - R,
+// n = I alpha + w x I w - T + c x f about o_F; inward: f_P += E f, n_P += E n + t x E f.
+// At u' = 0 (Rest) tau = -f. Cost: O(n).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <tuple>
+
+#include <Eigen/Core>
+
+#include "kane/detail/inline.hpp"
+#include "kane/detail/v3.hpp"
+#include "kane/dynamics/body_frames.hpp"
+#include "kane/dynamics/crba.hpp"
+
+namespace kane::detail {
+
+// u_r (Order 1) or u_r' (Order 2) of the evaluator's state, u_r = q_r'.
+template <std::size_t Order, class Ev>
+KANE_ALWAYS_INLINE typename Ev::scalar joint_rate(const Ev& ev, std::size_t r) {
+  const auto& s = ev.state();
+  if constexpr (std::is_void_v<typename Ev::speed_set>)
+    return Order == 1 ? s.qd[r] : s.qdd[r];
+  else
+    return Order == 1 ? s.u[r] : s.ud[r];
+}
+
+// tau = M u' - f of the joint-form system Sys (u' of the state, or 0 with Rest).
+template <bool Rest, class JF, class Sys, class Ev, class Out>
+KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev, Out& tau) {
+  using S = typename Ev::scalar;
+  using vec = v3<S>;
+  using frames = typename JF::frame_list;
+  constexpr auto& t = JF::table;
+  constexpr std::size_t nf = JF::nf;
+  const vec zero{S(0), S(0), S(0)};
+  std::array<vec, nf> w, alpha, a, n, f;
+  w[0] = zero, alpha[0] = zero, a[0] = zero;
+  [&]<class... X>(list<X...>) {
+    (
+        [&] {
+          if constexpr (is_gravity<X>) a[0] = a[0] - eval_vector<false>(X::vector, ev);
+        }(),
+        ...);
+  }(typename Sys::items{});
+  static_for<nf - 1>([&](auto i) {
+    constexpr std::size_t g = i + 1, p = std::size_t(t.parent[g]);
+    constexpr int r = t.speed[g];
+    const auto& e = std::get<g>(bf.e);
+    const vec& o = bf.offset[g];
+    const vec wp = e.down(w[p]);
+    if constexpr (p == 0)
+      a[g] = e.down(a[p]);
+    else
+      a[g] = e.down(a[p] + cross3(alpha[p], o) + cross3(w[p], cross3(w[p], o)));
+    if constexpr (r < 0)
+      w[g] = wp, alpha[g] = e.down(alpha[p]);
+    else {
+      const vec k = joint_axis_in_frame<typename at<frames, g>::type, S>();
+      const S u = joint_rate<1>(ev, std::size_t(r));
+      w[g] = wp + u * k;
+      alpha[g] = e.down(alpha[p]) + u * cross3(wp, k);
+      if constexpr (!Rest) alpha[g] = alpha[g] + joint_rate<2>(ev, std::size_t(r)) * k;
+    }
+    n[g] = zero, f[g] = zero;
+  });
+  [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) {
+    (
+        [&] {
+          constexpr int g = t.item_frame[I];
+          if constexpr (!is_gravity<X> && g > 0) {
+            using F = typename at<frames, std::size_t(g)>::type;
+            const vec c = bf.template local<t.item_point[I], g>();
+            if constexpr (is_particle<X> || is_body<X>) {
+              const vec& wg = w[std::size_t(g)];
+              const vec& ag = alpha[std::size_t(g)];
+              const vec fc = S(eval_scalar(X::mass, ev)) *
+                             (a[std::size_t(g)] + cross3(ag, c) + cross3(wg, cross3(wg, c)));
+              f[std::size_t(g)] = f[std::size_t(g)] + fc;
+              n[std::size_t(g)] = n[std::size_t(g)] + cross3(c, fc);
+              if constexpr (is_body<X>) {
+                const sym3<S> ic = body_inertia<X>(ev);
+                n[std::size_t(g)] = n[std::size_t(g)] + sym_times(ic, ag) + cross3(wg, sym_times(ic, wg));
+              }
+            } else if constexpr (is_force<X>) {
+              const vec r = in_frame<F>(eval_vector<false>(X::vector, ev), ev);
+              f[std::size_t(g)] = f[std::size_t(g)] - r, n[std::size_t(g)] = n[std::size_t(g)] - cross3(c, r);
+            } else if constexpr (is_torque<X>) {
+              n[std::size_t(g)] = n[std::size_t(g)] - in_frame<F>(eval_vector<false>(X::vector, ev), ev);
+            }
+          }
+        }(),
+        ...);
+  }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
+  static_for<nf - 1>([&](auto j) {  // leaves first
+    constexpr std::size_t g = nf - 1 - j, p = std::size_t(t.parent[g]);
+    constexpr int r = t.speed[g];
+    if constexpr (r >= 0)
+      tau(Eigen::Index(r)) = dot3(joint_axis_in_frame<typename at<frames, g>::type, S>(), n[g]);
+    if constexpr (p > 0) {
+      const auto& e = std::get<g>(bf.e);
+      const vec fp = e.up(f[g]);
+      f[p] = f[p] + fp, n[p] = n[p] + e.up(n[g]) + cross3(bf.offset[g], fp);
+    }
+  });
+}
+
+}  // namespace kane::detail
