@@ -49,6 +49,79 @@ KANE_ALWAYS_INLINE S minus(const S& a, const S& x, const S& b, const S& y) {
     return times<X>(a, x) - times<Y>(b, y);
 }
 
+template <std::size_t I, class S>
+KANE_ALWAYS_INLINE const S& get3(const v3<S>& a) {
+  if constexpr (I == 0)
+    return a.x;
+  else if constexpr (I == 1)
+    return a.y;
+  else
+    return a.z;
+}
+// a b, a and b of patterns A and B
+template <entry A, entry B, class S>
+KANE_ALWAYS_INLINE S product(const S& a, const S& b) {
+  if constexpr (A == entry::zero || B == entry::zero)
+    return S(0);
+  else if constexpr (A == entry::one)
+    return B == entry::one ? S(1) : b;
+  else
+    return times<B>(a, b);
+}
+// x + a b and x - a b (x alone where a b is 0)
+template <entry A, entry B, class S>
+KANE_ALWAYS_INLINE S plus_product(const S& x, const S& a, const S& b) {
+  if constexpr (A == entry::zero || B == entry::zero)
+    return x;
+  else
+    return x + product<A, B>(a, b);
+}
+template <entry A, entry B, class S>
+KANE_ALWAYS_INLINE S minus_product(const S& x, const S& a, const S& b) {
+  if constexpr (A == entry::zero || B == entry::zero)
+    return x;
+  else
+    return x - product<A, B>(a, b);
+}
+// k . x, k of pattern K
+template <std::array<entry, 3> K, class S>
+KANE_ALWAYS_INLINE S dot_along(const v3<S>& x, const v3<S>& k) {
+  constexpr std::size_t first = K[0] != entry::zero   ? 0
+                                : K[1] != entry::zero ? 1
+                                : K[2] != entry::zero ? 2
+                                                      : 3;
+  if constexpr (first == 3)
+    return S(0);
+  else {
+    S out = times<K[first]>(get3<first>(x), get3<first>(k));
+    static_for<3>([&](auto j) {
+      if constexpr (j > first) out = plus_product<entry::other, K[j]>(out, get3<j>(x), get3<j>(k));
+    });
+    return out;
+  }
+}
+// A k, A symmetric (11 22 33 12 23 31), k of pattern K
+template <std::array<entry, 3> K, class S>
+KANE_ALWAYS_INLINE v3<S> symmetric_along(const std::array<S, 6>& a, const v3<S>& k) {
+  return {dot_along<K>(v3<S>{a[0], a[3], a[5]}, k), dot_along<K>(v3<S>{a[3], a[1], a[4]}, k),
+          dot_along<K>(v3<S>{a[5], a[4], a[2]}, k)};
+}
+// k x x, k of pattern K
+template <std::array<entry, 3> K, class S>
+KANE_ALWAYS_INLINE v3<S> cross_from(const v3<S>& k, const v3<S>& x) {
+  return {minus<K[1], K[2]>(x.z, k.y, x.y, k.z), minus<K[2], K[0]>(x.x, k.z, x.z, k.x),
+          minus<K[0], K[1]>(x.y, k.x, x.x, k.y)};
+}
+constexpr bool all_zero(const std::array<entry, 3>& k) {
+  return k[0] == entry::zero && k[1] == entry::zero && k[2] == entry::zero;
+}
+// The pattern of r k: k's, its ones unknown.
+constexpr std::array<entry, 3> scaled_pattern(const std::array<entry, 3>& k) {
+  std::array<entry, 3> out{};
+  for (std::size_t i = 0; i < 3; ++i) out[i] = k[i] == entry::zero ? entry::zero : entry::other;
+  return out;
+}
+
 // Whether the per-component forms below pay for S: a known 0 or 1, or a scalar whose operations
 // the compiler does not see through (jets: the vector form makes temporaries).
 template <class S, std::size_t N>

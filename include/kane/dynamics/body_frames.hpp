@@ -19,6 +19,7 @@
 
 #include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
+#include "kane/detail/patterned.hpp"
 #include "kane/detail/v3.hpp"
 #include "kane/dynamics/joint_form.hpp"
 #include "kane/evaluation/evaluate.hpp"
@@ -138,6 +139,26 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> own_components(const V& v, const Ev& 
     return -own_components(v.v, ev);
 }
 
+// Which of those components are 0 or 1 at every state.
+template <class V>
+constexpr std::array<entry, 3> own_pattern() {
+  constexpr auto sum = [](std::array<entry, 3> a, std::array<entry, 3> b) {
+    for (std::size_t i = 0; i < 3; ++i)
+      a[i] = a[i] == entry::zero && b[i] == entry::zero ? entry::zero : entry::other;
+    return a;
+  };
+  if constexpr (is_zero_vector_v<V>)
+    return {entry::zero, entry::zero, entry::zero};
+  else if constexpr (is_unit<V>::value)
+    return {V::index == 1 ? entry::one : entry::zero, V::index == 2 ? entry::one : entry::zero,
+            V::index == 3 ? entry::one : entry::zero};
+  else if constexpr (is_v<V, scaled> || is_v<V, vneg>)
+    return scaled_pattern(own_pattern<std::remove_cv_t<decltype(std::declval<const V&>().v)>>());
+  else
+    return sum(own_pattern<std::remove_cv_t<decltype(std::declval<const V&>().l)>>(),
+               own_pattern<std::remove_cv_t<decltype(std::declval<const V&>().r)>>());
+}
+
 // The edge of F as a screw in F: its axis k_F (a unit vector of F), 0 for a constant edge.
 template <class F, class S>
 KANE_ALWAYS_INLINE v3<S> joint_axis_in_frame() {
@@ -149,6 +170,17 @@ KANE_ALWAYS_INLINE v3<S> joint_axis_in_frame() {
   }
 }
 
+// The pattern of the axis of F's edge in F.
+template <class F>
+constexpr std::array<entry, 3> joint_axis_pattern() {
+  if constexpr (std::is_void_v<typename F::tree_parent> || edge_kind<F>() <= 0)
+    return {entry::zero, entry::zero, entry::zero};
+  else {
+    constexpr auto k = unit_axis<typename F::step::axis>::value;
+    return {entry_of_number(k[0]), entry_of_number(k[1]), entry_of_number(k[2])};
+  }
+}
+
 template <class JF, class Ev, class Frames = typename JF::frame_list>
 struct body_frames;
 template <class JF, class Ev, class... F>
@@ -157,6 +189,39 @@ struct body_frames<JF, Ev, list<F...>> {
   using vec = v3<S>;
   static constexpr auto& t = JF::table;
   static constexpr std::size_t nf = JF::nf, np = JF::np;
+
+  static constexpr auto pos_pattern = []<class... P>(list<P...>) {
+    std::array<std::array<entry, 3>, np> out{};
+    std::size_t i = 0;
+    (
+        [&] {
+          const int from = t.from[i], g = t.segment[i];
+          constexpr auto own = own_pattern<std::remove_cv_t<decltype(P::position)>>();
+          if (from < 0)
+            out[i] = {entry::zero, entry::zero, entry::zero};
+          else if (g < 0)
+            out[i] = out[std::size_t(from)];
+          else if (from == t.origin[std::size_t(g)])
+            out[i] = own;
+          else
+            for (std::size_t j = 0; j < 3; ++j)
+              out[i][j] = out[std::size_t(from)][j] == entry::zero && own[j] == entry::zero ? entry::zero
+                                                                                            : entry::other;
+          ++i;
+        }(),
+        ...);
+    return out;
+  }(typename JF::all_points{});
+  // The patterns of t_F and of local<P, F>().
+  static constexpr std::array<entry, 3> offset_pattern(std::size_t f) {
+    const int o = t.origin[f];
+    if (f == 0 || o == t.origin[std::size_t(t.parent[f])]) return {entry::zero, entry::zero, entry::zero};
+    return pos_pattern[std::size_t(o)];
+  }
+  static constexpr std::array<entry, 3> local_pattern(int p, int f) {
+    if (p < 0 || p == t.origin[std::size_t(f)]) return {entry::zero, entry::zero, entry::zero};
+    return pos_pattern[std::size_t(p)];
+  }
 
   std::tuple<turn<S, turn_axis<F>()>...> e;  // e[0], the root's, unused
   std::array<vec, np> pos;                   // P from o of its frame, in its components

@@ -31,26 +31,53 @@ struct composite_inertia {
   v3<S> h;
   sym3<S> i;  // about the frame's origin
 
+  // m at c (of pattern C) with the inertia ic about c (none: a particle)
+  template <std::array<entry, 3> C, bool Inertia>
   KANE_ALWAYS_INLINE void add_mass(const S& m, const v3<S>& c, const sym3<S>& ic) {
-    const v3<S> mc = m * c;
-    mass = mass + m, h = h + mc;
-    i[0] = i[0] + ic[0] + mc.y * c.y + mc.z * c.z, i[1] = i[1] + ic[1] + mc.z * c.z + mc.x * c.x;
-    i[2] = i[2] + ic[2] + mc.x * c.x + mc.y * c.y, i[3] = i[3] + ic[3] - mc.x * c.y;
-    i[4] = i[4] + ic[4] - mc.y * c.z, i[5] = i[5] + ic[5] - mc.z * c.x;
+    constexpr auto mp = scaled_pattern(C);
+    const v3<S> mc{product<entry::other, C[0]>(m, c.x), product<entry::other, C[1]>(m, c.y),
+                   product<entry::other, C[2]>(m, c.z)};
+    mass = mass + m;
+    h = {plus_product<entry::one, mp[0]>(h.x, S(1), mc.x), plus_product<entry::one, mp[1]>(h.y, S(1), mc.y),
+         plus_product<entry::one, mp[2]>(h.z, S(1), mc.z)};
+    sym3<S> j = i;
+    if constexpr (Inertia)
+      for (std::size_t k = 0; k < 6; ++k) j[k] = j[k] + ic[k];
+    i[0] = plus_product<mp[2], C[2]>(plus_product<mp[1], C[1]>(j[0], mc.y, c.y), mc.z, c.z);
+    i[1] = plus_product<mp[0], C[0]>(plus_product<mp[2], C[2]>(j[1], mc.z, c.z), mc.x, c.x);
+    i[2] = plus_product<mp[1], C[1]>(plus_product<mp[0], C[0]>(j[2], mc.x, c.x), mc.y, c.y);
+    i[3] = minus_product<mp[0], C[1]>(j[3], mc.x, c.y);
+    i[4] = minus_product<mp[1], C[2]>(j[4], mc.y, c.z);
+    i[5] = minus_product<mp[2], C[0]>(j[5], mc.z, c.x);
   }
-  // o's inertia, turned by E and moved by t
-  template <class Turn>
+  // o's inertia, turned by E and moved by t (of pattern T):
+  // I += E I E^T + (2 t.h' + m |t|^2) 1 - (t h' + h' t) - m t t, h += h' + m t
+  template <std::array<entry, 3> T, class Turn>
   KANE_ALWAYS_INLINE void add(const composite_inertia& o, const Turn& e, const v3<S>& t) {
-    const v3<S> h1 = e.up(o.h), mt = o.mass * t;
+    const v3<S> h1 = e.up(o.h);
     const sym3<S> i1 = e.up(o.i);
-    const S d = S(2) * dot3(t, h1) + dot3(mt, t);
-    mass = mass + o.mass, h = h + h1 + mt;
-    i[0] = i[0] + i1[0] + d - S(2) * t.x * h1.x - mt.x * t.x;
-    i[1] = i[1] + i1[1] + d - S(2) * t.y * h1.y - mt.y * t.y;
-    i[2] = i[2] + i1[2] + d - S(2) * t.z * h1.z - mt.z * t.z;
-    i[3] = i[3] + i1[3] - t.x * h1.y - h1.x * t.y - mt.x * t.y;
-    i[4] = i[4] + i1[4] - t.y * h1.z - h1.y * t.z - mt.y * t.z;
-    i[5] = i[5] + i1[5] - t.z * h1.x - h1.z * t.x - mt.z * t.x;
+    mass = mass + o.mass;
+    for (std::size_t k = 0; k < 6; ++k) i[k] = i[k] + i1[k];
+    h = h + h1;
+    if constexpr (!all_zero(T)) {
+      constexpr auto mp = scaled_pattern(T);
+      const v3<S> mt{product<entry::other, T[0]>(o.mass, t.x), product<entry::other, T[1]>(o.mass, t.y),
+                     product<entry::other, T[2]>(o.mass, t.z)};
+      const v3<S> g = {S(2) * h1.x + mt.x, S(2) * h1.y + mt.y, S(2) * h1.z + mt.z};  // 2 h' + m t
+      const S d = dot_along<T>(g, t);
+      h = {plus_product<entry::one, mp[0]>(h.x, S(1), mt.x), plus_product<entry::one, mp[1]>(h.y, S(1), mt.y),
+           plus_product<entry::one, mp[2]>(h.z, S(1), mt.z)};
+      i[0] = minus_product<T[0], entry::other>(i[0] + d, t.x, g.x);
+      i[1] = minus_product<T[1], entry::other>(i[1] + d, t.y, g.y);
+      i[2] = minus_product<T[2], entry::other>(i[2] + d, t.z, g.z);
+      // -(t h' + h' t) - m t t = -(t g + h' t - ...): off-diagonal t_a h'_b + h'_a t_b + m t_a t_b
+      i[3] = minus_product<T[1], entry::other>(minus_product<T[0], entry::other>(i[3], t.x, h1.y + mt.y), t.y,
+                                               h1.x);
+      i[4] = minus_product<T[2], entry::other>(minus_product<T[1], entry::other>(i[4], t.y, h1.z + mt.z), t.z,
+                                               h1.y);
+      i[5] = minus_product<T[0], entry::other>(minus_product<T[2], entry::other>(i[5], t.z, h1.x + mt.x), t.x,
+                                               h1.z);
+    }
   }
 };
 
@@ -70,6 +97,9 @@ KANE_ALWAYS_INLINE sym3<typename Ev::scalar> body_inertia(const Ev& ev) {
   return o;
 }
 
+template <class JF, std::size_t F>
+using frame_at = typename at<typename JF::frame_list, F>::type;
+
 // The force (n about o_F, f) in F's components carried to the frames above F: M_rs = k_r . n there.
 template <class JF, std::size_t F, class BF, class S, class Out>
 KANE_ALWAYS_INLINE void column_up(const BF& bf, v3<S> n, v3<S> f, Out& M, Eigen::Index s) {
@@ -77,12 +107,14 @@ KANE_ALWAYS_INLINE void column_up(const BF& bf, v3<S> n, v3<S> f, Out& M, Eigen:
   constexpr int p = t.parent[F];
   if constexpr (p > 0) {
     const auto& e = std::get<F>(bf.e);
+    constexpr auto T = BF::offset_pattern(F);
     f = e.up(f);
-    n = e.up(n) + cross3(bf.offset[F], f);
+    n = e.up(n);
+    if constexpr (!all_zero(T)) n = n + cross_from<T>(bf.offset[F], f);
     constexpr int r = t.speed[std::size_t(p)];
     if constexpr (r >= 0) {
-      const S x =
-          dot3(joint_axis_in_frame<typename at<typename JF::frame_list, std::size_t(p)>::type, S>(), n);
+      using P = frame_at<JF, std::size_t(p)>;
+      const S x = dot_along<joint_axis_pattern<P>()>(n, joint_axis_in_frame<P, S>());
       M(Eigen::Index(r), s) = x, M(s, Eigen::Index(r)) = x;
     }
     column_up<JF, std::size_t(p)>(bf, n, f, M, s);
@@ -103,27 +135,34 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
         [&] {
           constexpr int f = t.item_frame[I];
           if constexpr ((is_particle<X> || is_body<X>)&&f > 0) {
-            const vec at = bf.template local<t.item_point[I], f>();
+            constexpr int p = t.item_point[I];
+            const vec at = bf.template local<p, f>();
+            constexpr auto C = body_frames<JF, Ev>::local_pattern(p, f);
             if constexpr (is_body<X>)
-              c[std::size_t(f)].add_mass(S(eval_scalar(X::mass, ev)), at, body_inertia<X>(ev));
+              c[std::size_t(f)].template add_mass<C, true>(S(eval_scalar(X::mass, ev)), at,
+                                                           body_inertia<X>(ev));
             else
-              c[std::size_t(f)].add_mass(S(eval_scalar(X::mass, ev)), at,
-                                         {S(0), S(0), S(0), S(0), S(0), S(0)});
+              c[std::size_t(f)].template add_mass<C, false>(S(eval_scalar(X::mass, ev)), at, {});
           }
         }(),
         ...);
   }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
   static_for<nf - 1>([&](auto j) {  // leaves first
     constexpr std::size_t f = nf - 1 - j;
-    if constexpr (t.parent[f] > 0) c[std::size_t(t.parent[f])].add(c[f], std::get<f>(bf.e), bf.offset[f]);
+    if constexpr (t.parent[f] > 0)
+      c[std::size_t(t.parent[f])].template add<body_frames<JF, Ev>::offset_pattern(f)>(
+          c[f], std::get<f>(bf.e), bf.offset[f]);
   });
   M.setZero();
   static_for<JF::n>([&](auto s) {
     constexpr std::size_t f = std::size_t(t.joint_frame[s]);
-    const vec k = joint_axis_in_frame<typename at<typename JF::frame_list, f>::type, S>();
+    using F = frame_at<JF, f>;
+    constexpr auto K = joint_axis_pattern<F>();
+    const vec k = joint_axis_in_frame<F, S>();
     const composite_inertia<S>& x = c[f];
-    M(Eigen::Index(s), Eigen::Index(s)) = dot3(k, sym_times(x.i, k));
-    column_up<JF, f>(bf, sym_times(x.i, k), cross3(k, x.h), M, Eigen::Index(s));
+    const vec n = symmetric_along<K>(x.i, k);
+    M(Eigen::Index(s), Eigen::Index(s)) = dot_along<K>(n, k);
+    column_up<JF, f>(bf, n, cross_from<K>(k, x.h), M, Eigen::Index(s));
   });
 }
 

@@ -52,24 +52,28 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
         }(),
         ...);
   }(typename Sys::items{});
+  using BF = body_frames<JF, Ev>;
   static_for<nf - 1>([&](auto i) {
     constexpr std::size_t g = i + 1, p = std::size_t(t.parent[g]);
     constexpr int r = t.speed[g];
+    constexpr auto O = BF::offset_pattern(g);
     const auto& e = std::get<g>(bf.e);
     const vec& o = bf.offset[g];
     const vec wp = e.down(w[p]);
-    if constexpr (p == 0)
+    if constexpr (p == 0 || all_zero(O))
       a[g] = e.down(a[p]);
     else
-      a[g] = e.down(a[p] + cross3(alpha[p], o) + cross3(w[p], cross3(w[p], o)));
+      a[g] = e.down(a[p] + cross_along<O>(alpha[p], o) + cross3(w[p], cross_along<O>(w[p], o)));
     if constexpr (r < 0)
       w[g] = wp, alpha[g] = e.down(alpha[p]);
     else {
-      const vec k = joint_axis_in_frame<typename at<frames, g>::type, S>();
+      using F = frame_at<JF, g>;
+      constexpr auto K = joint_axis_pattern<F>();
+      const vec k = joint_axis_in_frame<F, S>();
       const S u = joint_rate<1>(ev, std::size_t(r));
-      w[g] = wp + u * k;
-      alpha[g] = e.down(alpha[p]) + u * cross3(wp, k);
-      if constexpr (!Rest) alpha[g] = alpha[g] + joint_rate<2>(ev, std::size_t(r)) * k;
+      w[g] = add_along<K, false>(wp, u, k);
+      alpha[g] = e.down(alpha[p]) + u * cross_along<K>(wp, k);
+      if constexpr (!Rest) alpha[g] = add_along<K, false>(alpha[g], joint_rate<2>(ev, std::size_t(r)), k);
     }
     n[g] = zero, f[g] = zero;
   });
@@ -78,24 +82,30 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
         [&] {
           constexpr int g = t.item_frame[I];
           if constexpr (!is_gravity<X> && g > 0) {
-            using F = typename at<frames, std::size_t(g)>::type;
-            const vec c = bf.template local<t.item_point[I], g>();
+            using F = frame_at<JF, std::size_t(g)>;
+            constexpr int ip = t.item_point[I];
+            constexpr auto C = BF::local_pattern(ip, g);
+            const vec c = bf.template local<ip, g>();
+            vec& fg = f[std::size_t(g)];
+            vec& ng = n[std::size_t(g)];
             if constexpr (is_particle<X> || is_body<X>) {
               const vec& wg = w[std::size_t(g)];
               const vec& ag = alpha[std::size_t(g)];
-              const vec fc = S(eval_scalar(X::mass, ev)) *
-                             (a[std::size_t(g)] + cross3(ag, c) + cross3(wg, cross3(wg, c)));
-              f[std::size_t(g)] = f[std::size_t(g)] + fc;
-              n[std::size_t(g)] = n[std::size_t(g)] + cross3(c, fc);
+              vec ac = a[std::size_t(g)];
+              if constexpr (!all_zero(C)) ac = ac + cross_along<C>(ag, c) + cross3(wg, cross_along<C>(wg, c));
+              const vec fc = S(eval_scalar(X::mass, ev)) * ac;
+              fg = fg + fc;
+              if constexpr (!all_zero(C)) ng = ng + cross_from<C>(c, fc);
               if constexpr (is_body<X>) {
                 const sym3<S> ic = body_inertia<X>(ev);
-                n[std::size_t(g)] = n[std::size_t(g)] + sym_times(ic, ag) + cross3(wg, sym_times(ic, wg));
+                ng = ng + sym_times(ic, ag) + cross3(wg, sym_times(ic, wg));
               }
             } else if constexpr (is_force<X>) {
               const vec r = in_frame<F>(eval_vector<false>(X::vector, ev), ev);
-              f[std::size_t(g)] = f[std::size_t(g)] - r, n[std::size_t(g)] = n[std::size_t(g)] - cross3(c, r);
+              fg = fg - r;
+              if constexpr (!all_zero(C)) ng = ng - cross_from<C>(c, r);
             } else if constexpr (is_torque<X>) {
-              n[std::size_t(g)] = n[std::size_t(g)] - in_frame<F>(eval_vector<false>(X::vector, ev), ev);
+              ng = ng - in_frame<F>(eval_vector<false>(X::vector, ev), ev);
             }
           }
         }(),
@@ -104,12 +114,16 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
   static_for<nf - 1>([&](auto j) {  // leaves first
     constexpr std::size_t g = nf - 1 - j, p = std::size_t(t.parent[g]);
     constexpr int r = t.speed[g];
-    if constexpr (r >= 0)
-      tau(Eigen::Index(r)) = dot3(joint_axis_in_frame<typename at<frames, g>::type, S>(), n[g]);
+    if constexpr (r >= 0) {
+      using F = frame_at<JF, g>;
+      tau(Eigen::Index(r)) = dot_along<joint_axis_pattern<F>()>(n[g], joint_axis_in_frame<F, S>());
+    }
     if constexpr (p > 0) {
+      constexpr auto O = BF::offset_pattern(g);
       const auto& e = std::get<g>(bf.e);
       const vec fp = e.up(f[g]);
-      f[p] = f[p] + fp, n[p] = n[p] + e.up(n[g]) + cross3(bf.offset[g], fp);
+      f[p] = f[p] + fp, n[p] = n[p] + e.up(n[g]);
+      if constexpr (!all_zero(O)) n[p] = n[p] + cross_from<O>(bf.offset[g], fp);
     }
   });
 }
