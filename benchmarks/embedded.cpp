@@ -53,7 +53,8 @@ extern "C" int disc_step(const real* q, const real* u, real radius, real* out) {
   return sol.status == kane::solve_status::ok ? 0 : 1;
 }
 
-// Kane's equations of the 3D double pendulum as a right-hand side: x = (q, u) -> (q', u') (4 each).
+// Kane's equations of the 3D double pendulum as a right-hand side: x = (q, u) -> (q', u') (4 each);
+// M alone, inverse dynamics, the forcing and forward dynamics.
 extern "C" int pendulum_step(const real* x, const real* p, real* dxdt) {
   namespace m = models::pendulum3d;
   using state = kane::state<real, 2, 2, 21>;
@@ -67,5 +68,15 @@ extern "C" int pendulum_step(const real* x, const real* p, real* dxdt) {
   kane::evaluator<state, kane::frames<m::B>, kane::level::pose, kane::qdot_speeds<2>> pose;
   pose.update(s);
   const auto mass = kane::mass_matrix<m::system>(pose);
-  return rhs.status() == kane::solve_status::ok && mass.status == kane::solve_status::ok ? 0 : 1;
+  // inverse dynamics, the forcing alone and u' at (q, u, u' = dxdt's)
+  s.u = {x[2], x[3]}, s.ud = {dxdt[2], dxdt[3]};
+  evaluator ev;
+  ev.update(s);
+  const auto tau = kane::inverse_dynamics<m::system>(ev);
+  const auto f = kane::forcing<m::system>(ev);
+  const auto ud = kane::forward_dynamics<m::system>(ev);
+  const bool ok = rhs.status() == kane::solve_status::ok && mass.status == kane::solve_status::ok &&
+                  tau.second == kane::solve_status::ok && f.second == kane::solve_status::ok &&
+                  ud.second == kane::solve_status::ok;
+  return ok ? 0 : 1;
 }

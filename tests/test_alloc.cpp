@@ -2,7 +2,8 @@
 // are replaced by counting ones, and the kernels of benchmarks/embedded.cpp
 // (everything of the 6-revolute arm; the rolling disc's constraints and
 // nonholonomic partial velocities; M, f and u' of the 3D double pendulum through
-// kane::motion, and its M alone by kane::mass_matrix) run between two readings of the counter.
+// kane::motion, its M alone by kane::mass_matrix, and kane::inverse_dynamics, kane::forcing and
+// kane::forward_dynamics) run between two readings of the counter.
 // A plain program (no test framework allocating in between).
 #include <cstdio>
 #include <cstdlib>

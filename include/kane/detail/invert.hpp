@@ -5,6 +5,7 @@
 // coupled block and of a positive definite system that jets overload.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -93,9 +94,34 @@ Eigen::Matrix<S, N, 1> solve_block(const Eigen::Matrix<S, N, N>& inv, const Eige
 template <class S, int N>
 bool solve_positive_definite(const Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<S, N, 1>& f,
                              Eigen::Matrix<S, N, 1>& x) {
-  const Eigen::LLT<Eigen::Matrix<S, N, N>> llt(m);
-  if (llt.info() != Eigen::Success) return false;
-  x = llt.solve(f);
+  if constexpr (N <= 12) {  // Eigen's fixed-size LLT, unrolled
+    const Eigen::LLT<Eigen::Matrix<S, N, N>> llt(m);
+    if (llt.info() != Eigen::Success) return false;
+    x = llt.solve(f);
+  } else {  // m = L L^T by rows (contiguous dot products; Eigen's blocked path packs panels)
+    std::array<S, std::size_t(N) * std::size_t(N)> l;
+    std::array<S, std::size_t(N)> inv, y;
+    using std::sqrt;
+    using row = Eigen::Map<const Eigen::Matrix<S, Eigen::Dynamic, 1>>;  // Eigen's packets for the sums
+    for (int i = 0; i < N; ++i) {
+      S* li = &l[std::size_t(i * N)];
+      for (int j = 0; j <= i; ++j) {
+        const S* lj = &l[std::size_t(j * N)];
+        const S d = m(i, j) - (j == 0 ? S(0) : row(li, j).dot(row(lj, j)));
+        if (i == j) {
+          if (!(d > S(0))) return false;
+          li[i] = sqrt(d), inv[std::size_t(i)] = S(1) / li[i];
+        } else
+          li[j] = d * inv[std::size_t(j)];
+      }
+      y[std::size_t(i)] = (f(i) - (i == 0 ? S(0) : row(li, i).dot(row(y.data(), i)))) * inv[std::size_t(i)];
+    }
+    for (int i = N - 1; i >= 0; --i) {
+      S d = y[std::size_t(i)];
+      for (int k = i + 1; k < N; ++k) d -= l[std::size_t(k * N + i)] * x(k);
+      x(i) = d * inv[std::size_t(i)];
+    }
+  }
   return true;
 }
 

@@ -121,6 +121,59 @@ KANE_ALWAYS_INLINE void column_up(const BF& bf, v3<S> n, v3<S> f, Out& M, Eigen:
   }
 }
 
+// Above this many speeds the columns are read in the root's components: the screws of the
+// speeds S_r = (k_r, o_r x k_r) and each column's force (R n + o x R f, R f) once, then
+// M_rs = S_r . F_s in a loop over the speeds above (11 operations an entry, code O(n));
+// below, each column is carried up frame by frame, unrolled, with the axes' zeros known.
+inline constexpr std::size_t unrolled_columns = 12;
+
+template <class JF, class Ev>
+struct root_screws {
+  using S = typename Ev::scalar;
+  std::array<v3<S>, JF::nf> origin;  // r^{O o_F}
+  std::array<v3<S>, JF::n> k, m;     // S_r = (k_r, o_r x k_r)
+
+  KANE_ALWAYS_INLINE root_screws(const body_frames<JF, Ev>& bf, const Ev& ev) {
+    constexpr auto& t = JF::table;
+    origin[0] = {S(0), S(0), S(0)};
+    static_for<JF::nf - 1>([&](auto i) {
+      constexpr std::size_t f = i + 1, p = std::size_t(t.parent[f]);
+      using F = frame_at<JF, f>;
+      if constexpr (all_zero(body_frames<JF, Ev>::offset_pattern(f)))
+        origin[f] = origin[p];
+      else if constexpr (p == 0)
+        origin[f] = bf.offset[f];
+      else
+        origin[f] = origin[p] + to_root<frame_at<JF, p>>(bf.offset[f], ev);
+      if constexpr (t.speed[f] >= 0) {
+        constexpr std::size_t r = std::size_t(t.speed[f]);
+        k[r] = to_root<F>(joint_axis_in_frame<F, S>(), ev);
+        m[r] = cross3(origin[f], k[r]);
+      }
+    });
+  }
+  // v (in F's components) in the root's
+  template <class F>
+  KANE_ALWAYS_INLINE static v3<S> to_root(const v3<S>& v, const Ev& ev) {
+    if constexpr (std::is_void_v<typename F::tree_parent>)
+      return v;
+    else {
+      const auto a = ev.template axes<F>();
+      return {a(0, 0) * v.x + a(0, 1) * v.y + a(0, 2) * v.z, a(1, 0) * v.x + a(1, 1) * v.y + a(1, 2) * v.z,
+              a(2, 0) * v.x + a(2, 1) * v.y + a(2, 2) * v.z};
+    }
+  }
+};
+
+// Whether every speed is above or below every other: all of M is written.
+template <class T>
+constexpr bool on_one_path(const T& t) {
+  std::size_t k = 0, n = t.parent_speed.size();
+  for (std::size_t s = 0; s < n; ++s)
+    for (int r = int(s); r >= 0; r = t.parent_speed[std::size_t(r)]) ++k;
+  return k == n * (n + 1) / 2;
+}
+
 // M of the joint-form system Sys.
 template <class JF, class Sys, class Ev, class Out>
 KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, const Ev& ev, Out& M) {
@@ -153,7 +206,14 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
       c[std::size_t(t.parent[f])].template add<body_frames<JF, Ev>::offset_pattern(f)>(
           c[f], std::get<f>(bf.e), bf.offset[f]);
   });
-  M.setZero();
+  if constexpr (!on_one_path(t)) M.setZero();  // entries off the tree's paths
+  constexpr bool loop = JF::n > unrolled_columns;
+  [[maybe_unused]] const auto screws = [&] {
+    if constexpr (loop)
+      return root_screws<JF, Ev>(bf, ev);
+    else
+      return 0;
+  }();
   static_for<JF::n>([&](auto s) {
     constexpr std::size_t f = std::size_t(t.joint_frame[s]);
     using F = frame_at<JF, f>;
@@ -162,7 +222,17 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
     const composite_inertia<S>& x = c[f];
     const vec n = symmetric_along<K>(x.i, k);
     M(Eigen::Index(s), Eigen::Index(s)) = dot_along<K>(n, k);
-    column_up<JF, f>(bf, n, cross_from<K>(k, x.h), M, Eigen::Index(s));
+    if constexpr (!loop)
+      column_up<JF, f>(bf, n, cross_from<K>(k, x.h), M, Eigen::Index(s));
+    else if constexpr (t.parent_speed[s] >= 0) {
+      using R = root_screws<JF, Ev>;
+      const vec fw = R::template to_root<F>(cross_from<K>(k, x.h), ev);
+      const vec nw = R::template to_root<F>(n, ev) + cross3(screws.origin[f], fw);
+      for (int r = t.parent_speed[s]; r >= 0; r = t.parent_speed[std::size_t(r)]) {
+        const S e = dot3(screws.k[std::size_t(r)], nw) + dot3(screws.m[std::size_t(r)], fw);
+        M(Eigen::Index(r), Eigen::Index(s)) = e, M(Eigen::Index(s), Eigen::Index(r)) = e;
+      }
+    }
   });
 }
 

@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include "kane/detail/inline.hpp"
+#include "kane/dynamics/aba.hpp"
 #include "kane/dynamics/equations.hpp"
 
 namespace kane {
@@ -50,6 +51,30 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> inverse_at(const Ev& ev) {
   if (status != solve_status::ok) tau.setConstant(std::numeric_limits<S>::quiet_NaN());
   return {tau, status};
 }
+
+// Above this many speeds u' comes from articulated bodies (aba.hpp), below from M and a
+// Cholesky factorization: on a spatial chain with full inertias (benchmarks/chain_dynamics) the
+// two take the same time at 24 speeds; at 12 M costs 0.7x, at 48 articulated bodies 0.6x.
+inline constexpr std::size_t articulated_above = 20;
+// u' = M^-1 f; RestRates: the state's u' is 0 (as in motion.hpp).
+template <class Sys, bool RestRates, class Ev>
+speed_values<typename Ev::scalar, speeds_of<Ev>::n> forward_at(const Ev& ev) {
+  using S = typename Ev::scalar;
+  constexpr std::size_t n = speeds_of<Ev>::n;
+  if constexpr (recursive_form<Sys, Ev> && (n > articulated_above)) {
+    static_assert(forces_checked<Sys>(typename Sys::items{}));
+    using JF = joint_form_of<Sys, Ev>;
+    Eigen::Matrix<S, int(n), 1> ud;
+    const body_frames<JF, Ev> bf(ev);
+    solve_status status = ev.status();
+    if (!articulated_accelerations<JF, Sys>(bf, ev, ud) && status == solve_status::ok)
+      status = solve_status::singular;
+    if (status == solve_status::ok && !all_finite_matrix(ud)) status = solve_status::not_finite;
+    if (status != solve_status::ok) ud.setConstant(std::numeric_limits<S>::quiet_NaN());
+    return {ud, status};
+  } else
+    return speed_derivatives(mass_matrix_and_forcing_at<Sys, RestRates>(ev));
+}
 }  // namespace detail
 
 template <class Sys, class Ev>
@@ -71,8 +96,7 @@ forcing(const Ev& ev) {
 template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, detail::speeds_of<Ev>::n>
 forward_dynamics(const Ev& ev) {
-  return detail::flat<typename Ev::scalar>(
-      [&] { return speed_derivatives(detail::mass_matrix_and_forcing_at<Sys, false>(ev)); });
+  return detail::flat<typename Ev::scalar>([&] { return detail::forward_at<Sys, false>(ev); });
 }
 
 }  // namespace kane

@@ -109,11 +109,37 @@ requires(is_body<X> || is_torque<X>) struct item_frame<X> {
   using type = typename X::frame;
 };
 
-template <class... P>
-struct point_closure {
-  using type =
-      typename unique<typename concat<typename reverse<typename point_chain<P>::type>::type...>::type>::type;
+// Acc and the nodes above T (Up<T>::type, void above a root) that Acc lacks, ancestors first.
+template <template <class> class Up, class Acc, class T, bool = std::is_void_v<T> || contains<T, Acc>::value>
+struct with_ancestors {
+  using type = Acc;
 };
+template <template <class> class Up, class Acc, class T>
+struct with_ancestors<Up, Acc, T, false> {
+  using above = typename with_ancestors<Up, Acc, typename Up<T>::type>::type;
+  using type = typename concat<above, list<T>>::type;
+};
+// The nodes T... and their ancestors, each once, ancestors first: linear in the nodes times
+// the depth, with recursion no deeper than their number plus the depth.
+template <template <class> class Up, class Acc, class... T>
+struct tree_union {
+  using type = Acc;
+};
+template <template <class> class Up, class Acc, class T, class... Ts>
+struct tree_union<Up, Acc, T, Ts...> : tree_union<Up, typename with_ancestors<Up, Acc, T>::type, Ts...> {};
+template <class F>
+struct frame_up {
+  using type = typename F::tree_parent;
+};
+template <class P>
+struct point_up {
+  using type = typename P::from;
+};
+template <class... P>
+struct point_closure : tree_union<point_up, list<>, P...> {};
+template <class... F>
+struct frame_closure : tree_union<frame_up, list<>, F...> {};
+
 template <template <class> class M, class L>
 struct map_items;
 template <template <class> class M, class... T>
@@ -166,16 +192,22 @@ struct joint_table {
   std::array<int, NF> origin{};
   std::array<int, NP> frame{};
 
+  std::array<int, NF> depth{};  // edges from the root
+
   constexpr bool below(int f, int g) const {  // g is f or an ancestor of f
-    for (; f >= 0; f = parent[std::size_t(f)])
-      if (f == g) return true;
-    return false;
+    if (f < 0 || g < 0) return false;
+    while (depth[std::size_t(f)] > depth[std::size_t(g)]) f = parent[std::size_t(f)];
+    return f == g;
   }
-  // The point where the chain of P first has a vector fixed at or below frame g (P if none).
+  // The point where the chain of P (its frames down one path through g) first has a vector fixed
+  // at or below frame g (P if none): the vectors at or below g are the chain's last ones.
   constexpr int joint_of(int p, int g) const {
     int x = p;
-    for (int c = p; c >= 0 && from[std::size_t(c)] >= 0; c = from[std::size_t(c)])
-      if (segment[std::size_t(c)] >= 0 && below(segment[std::size_t(c)], g)) x = from[std::size_t(c)];
+    for (int c = p; c >= 0 && from[std::size_t(c)] >= 0; c = from[std::size_t(c)]) {
+      const int s = segment[std::size_t(c)];
+      if (s >= 0 && depth[std::size_t(s)] < depth[std::size_t(g)]) break;
+      if (s >= 0) x = from[std::size_t(c)];
+    }
     return x;
   }
 };
@@ -220,7 +252,7 @@ struct joint_form {
   }(segment_frames{});
   using item_frames = typename not_void<typename map_items<item_frame, items>::type>::type;
   using frame_list = typename apply_list<
-      closure,
+      frame_closure,
       std::conditional_t<fixed_segments,
                          typename concat<list<R>, item_frames, typename not_void<segment_frames>::type>::type,
                          list<R>>>::type;
@@ -240,6 +272,7 @@ struct joint_form {
             [&] {
               constexpr int kind = edge_kind<F>();
               t.parent[i] = index_in<typename F::tree_parent>(frame_list{});
+              t.depth[i] = i == 0 ? 0 : t.depth[std::size_t(t.parent[i])] + 1;
               t.speed[i] = kind - 1;
               ok = ok && kind >= 0 && kind <= int(n) && (i == 0) == std::is_void_v<typename F::tree_parent>;
               if (kind > 0) ++edges[std::size_t(kind - 1)], t.joint_frame[std::size_t(kind - 1)] = int(i);

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "kane/dynamics/inverse_dynamics.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
 
 namespace kane {
@@ -44,7 +45,7 @@ class motion {
     for (std::size_t i = 0; i < nu; ++i) s_.u[i] = x[nq + i];
     s_.t = time;
     ev_.update(s_);
-    const auto [ud, status] = speed_derivatives(detail::mass_matrix_and_forcing_at<Sys, true>(ev_));
+    const auto [ud, status] = detail::forward_at<Sys, true>(ev_);
     const auto qd = ev_.coordinate_rates();
     status_ = status;
     const scalar nan = std::numeric_limits<scalar>::quiet_NaN();

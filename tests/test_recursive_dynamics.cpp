@@ -1,0 +1,261 @@
+// Kane's equations regrouped over the tree (composite bodies, inward sums,
+// articulated bodies) against a second method: Newton-Euler written by hand for
+// the 6R arm, Kane's sums over the partial velocities for a tree with branches,
+// fixed rotations, a particle, a force and torques, and M^-1 f for a 21-link chain.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <utility>
+
+#include <Eigen/Cholesky>
+#include <kane/kane.hpp>
+
+#include "../examples/models/arm6.hpp"
+
+namespace {
+using kane::e;
+using kane::literal;
+
+// The 6R arm of examples/models/arm6.hpp with a mass at every link (benchmarks/dynamics6.hpp).
+namespace arm {
+using namespace models::arm6;
+constexpr double L[6] = {0.3, 0.25, 0.2, 0.15, 0.1, 0.05};
+constexpr double mass[6] = {2.0, 1.6, 1.2, 0.8, 0.5, 0.3};
+constexpr double inertia[6][6] = {
+    {0.020, 0.030, 0.025, 0.002, -0.001, 0.0015},     {0.015, 0.022, 0.018, -0.0012, 0.0008, 0.001},
+    {0.010, 0.014, 0.012, 0.0009, -0.0006, -0.0007},  {0.006, 0.008, 0.007, -0.0005, 0.0004, 0.0003},
+    {0.003, 0.004, 0.0035, 0.0002, -0.0002, 0.00025}, {0.0015, 0.002, 0.0018, -0.0001, 0.0001, 0.00012}};
+constexpr double g = 9.81;
+template <class B, class From, std::size_t I>
+struct centre : kane::point<From, literal(L[I] / 2) * e<B, 1>> {};
+struct C1 : centre<B1, O, 0> {};
+struct C2 : centre<B2, J2, 1> {};
+struct C3 : centre<B3, J3, 2> {};
+struct C4 : centre<B4, J4, 3> {};
+struct C5 : centre<B5, J5, 4> {};
+struct C6 : centre<B6, J6, 5> {};
+template <class B, class C, std::size_t I>
+using link = kane::rigid_body<
+    B, C, literal(mass[I]),
+    kane::inertia<B, C, literal(inertia[I][0]), literal(inertia[I][1]), literal(inertia[I][2]),
+                  literal(inertia[I][3]), literal(inertia[I][4]), literal(inertia[I][5])>>;
+using system = kane::system<link<B1, C1, 0>, link<B2, C2, 1>, link<B3, C3, 2>, link<B4, C4, 3>,
+                            link<B5, C5, 4>, link<B6, C6, 5>, kane::gravity<literal(-g) * e<N, 3>>>;
+using state = kane::state<double, 6>;
+using evaluator = kane::evaluator<state, kane::frames<B6>, kane::level::acceleration, kane::qdot_speeds<6>>;
+
+// Newton-Euler by hand, in N: outward w, alpha, a of the joints and centres; inward
+// F_i = f_i + F_{i+1}, N_i = n_i + (c_i - p_i) x f_i + N_{i+1} + (p_{i+1} - p_i) x F_{i+1};
+// tau_i = z_i . N_i.
+using V3 = Eigen::Vector3d;
+using M3 = Eigen::Matrix3d;
+Eigen::Matrix<double, 6, 1> newton_euler(const double* q, const double* qd, const double* qdd) {
+  constexpr int axis[6] = {2, 1, 1, 0, 1, 0};
+  M3 R = M3::Identity();
+  V3 w = V3::Zero(), al = V3::Zero(), a = V3(0, 0, g), p = V3::Zero();  // gravity: the base accelerates up
+  V3 z[6], pos[7], cm[6], f[6], n[6];
+  for (int i = 0; i < 6; ++i) {
+    z[i] = R.col(axis[i]);
+    const V3 w0 = w;
+    w = w0 + qd[i] * z[i];
+    al = al + qdd[i] * z[i] + qd[i] * w0.cross(z[i]);
+    R = R * Eigen::AngleAxisd(q[i], V3::Unit(axis[i])).toRotationMatrix();
+    const V3 x = R.col(0);
+    pos[i] = p;
+    cm[i] = p + 0.5 * L[i] * x;
+    const V3 ac = a + al.cross(0.5 * L[i] * x) + w.cross(w.cross(0.5 * L[i] * x));
+    a = a + al.cross(L[i] * x) + w.cross(w.cross(L[i] * x));
+    p = p + L[i] * x;
+    const double* j = inertia[i];
+    M3 ib;
+    ib << j[0], j[3], j[5], j[3], j[1], j[4], j[5], j[4], j[2];
+    const M3 iw = R * ib * R.transpose();
+    f[i] = mass[i] * ac;
+    n[i] = iw * al + w.cross(iw * w);
+  }
+  pos[6] = p;
+  Eigen::Matrix<double, 6, 1> tau;
+  V3 F = V3::Zero(), Nm = V3::Zero();
+  for (int i = 5; i >= 0; --i) {
+    Nm = n[i] + (cm[i] - pos[i]).cross(f[i]) + Nm + (pos[i + 1] - pos[i]).cross(F);
+    F = f[i] + F;
+    tau(i) = z[i].dot(Nm);
+  }
+  return tau;
+}
+}  // namespace arm
+
+// A tree: two branches from N, a fixed tool rotation, a particle, a force and torques.
+namespace tree {
+using q1 = kane::coordinate<1>;
+using q2 = kane::coordinate<2>;
+using q3 = kane::coordinate<3>;
+using q4 = kane::coordinate<4>;
+struct N : kane::root_frame {};
+struct A : kane::frame<N, kane::simple<kane::axis::z, q1>> {};
+struct B : kane::frame<A, kane::simple<kane::axis::y, q2>> {};
+struct T : kane::frame<B, kane::simple<kane::axis::x, kane::constant<1, 3>>> {};  // a tool, fixed in B
+struct C : kane::frame<N, kane::simple<kane::axis::x, q3>> {};
+struct D : kane::frame<C, kane::simple<kane::direction<1, 1, 0>, q4>> {};  // an oblique axis
+struct O : kane::origin<N> {};
+struct Ao : kane::point<O, 0.2 * e<A, 1> + 0.1 * e<A, 3>> {};
+struct JB : kane::point<O, 0.4 * e<A, 1>> {};
+struct Bo : kane::point<JB, 0.15 * e<B, 1> - 0.05 * e<B, 2>> {};
+struct To : kane::point<JB, 0.3 * e<T, 1> + 0.02 * e<T, 3>> {};
+struct JC : kane::point<O, -0.3 * e<N, 2>> {};
+struct P : kane::point<JC, 0.25 * e<C, 3>> {};
+struct Do : kane::point<P, 0.1 * e<D, 2>> {};
+using system = kane::system<
+    kane::rigid_body<A, Ao, literal(1.5), kane::inertia<A, Ao, literal(0.03), literal(0.02), literal(0.04)>>,
+    kane::rigid_body<B, Bo, literal(1.1),
+                     kane::inertia<B, Bo, literal(0.01), literal(0.015), literal(0.012), literal(0.001)>>,
+    kane::rigid_body<T, To, literal(0.4),
+                     kane::inertia<T, To, literal(0.004), literal(0.003), literal(0.005), literal(0.0),
+                                   literal(0.0005), literal(-0.0002)>>,
+    kane::particle<P, literal(0.7)>,
+    kane::rigid_body<D, Do, literal(0.9),
+                     kane::inertia<D, Do, literal(0.02), literal(0.01), literal(0.025), literal(0.002)>>,
+    kane::force<To, kane::q<2> * e<N, 1> + 2.0 * e<B, 3>>, kane::torque<C, -0.3 * kane::u<3> * e<C, 1>>,
+    kane::torque<D, 0.5 * e<D, 3>>, kane::gravity<literal(-9.81) * e<N, 3>>>;
+using state = kane::state<double, 4>;
+using evaluator = kane::evaluator<state, kane::frames<T, D>, kane::level::acceleration, kane::qdot_speeds<4>>;
+}  // namespace tree
+
+// A 21-link chain (axes z, y, x, ...): u' by articulated bodies above 20 speeds.
+namespace chain {
+constexpr std::size_t n = 21;
+template <std::size_t I>
+using axis_of = std::conditional_t<I % 3 == 1, kane::axis::z,
+                                   std::conditional_t<I % 3 == 2, kane::axis::y, kane::axis::x>>;
+template <std::size_t I>
+struct B;
+template <>
+struct B<0> : kane::root_frame {};
+template <std::size_t I>
+struct B : kane::frame<B<I - 1>, kane::simple<axis_of<I>, kane::coordinate<I>>> {};
+template <std::size_t I>
+struct J;
+template <>
+struct J<1> : kane::origin<B<0>> {};
+template <std::size_t I>
+struct J : kane::point<J<I - 1>, literal(0.1 + 0.01 * double(I % 4)) * e<B<I - 1>, 1>> {};
+template <std::size_t I>
+struct C : kane::point<J<I>, literal(0.05) * e<B<I>, 1> + literal(0.01) * e<B<I>, 2>> {};
+template <std::size_t I>
+using link =
+    kane::rigid_body<B<I>, C<I>, literal(0.5 + 0.1 * double(I % 3)),
+                     kane::inertia<B<I>, C<I>, literal(0.004), literal(0.005), literal(0.006),
+                                   literal(0.0003 * double(I % 2)), literal(-0.0002), literal(0.0001)>>;
+template <class>
+struct links;
+template <std::size_t... I>
+struct links<std::index_sequence<I...>> {
+  using type = kane::system<link<I + 1>..., kane::torque<B<3>, -0.2 * kane::u<3> * e<B<3>, 2>>,
+                            kane::gravity<literal(-9.81) * e<B<0>, 3>>>;
+};
+using system = links<std::make_index_sequence<n>>::type;
+using state = kane::state<double, n>;
+using evaluator = kane::evaluator<state, kane::frames<B<n>>, kane::level::acceleration, kane::qdot_speeds<n>>;
+}  // namespace chain
+
+template <class St>
+St random_state(std::mt19937& rng) {
+  std::uniform_real_distribution<double> d(-2.0, 2.0);
+  St s;
+  for (auto& x : s.q) x = d(rng);
+  for (auto& x : s.u) x = d(rng);
+  for (auto& x : s.ud) x = d(rng);
+  return s;
+}
+}  // namespace
+
+static_assert(kane::detail::recursive_form<arm::system, arm::evaluator>);
+static_assert(kane::detail::recursive_form<tree::system, tree::evaluator>);
+static_assert(kane::detail::recursive_form<chain::system, chain::evaluator>);
+
+TEST_CASE("the 6R arm: inverse dynamics by inward sums is Newton-Euler by hand and M u' - f", "[recursive]") {
+  std::mt19937 rng(7);
+  for (int k = 0; k < 40; ++k) {
+    const auto s = random_state<arm::state>(rng);
+    arm::evaluator ev;
+    ev.update(s);
+    const auto [tau, status] = kane::inverse_dynamics<arm::system>(ev);
+    REQUIRE(status == kane::solve_status::ok);
+    const auto hand = arm::newton_euler(s.q.data(), s.u.data(), s.ud.data());
+    CHECK((tau - hand).cwiseAbs().maxCoeff() < 1e-12);
+    const auto eom = kane::mass_matrix_and_forcing<arm::system>(ev);
+    const Eigen::Map<const Eigen::Matrix<double, 6, 1>> ud(s.ud.data());
+    CHECK((eom.M * ud - eom.f - tau).cwiseAbs().maxCoeff() < 1e-12);
+    const std::array<double, 6> rest{};
+    const auto bias = arm::newton_euler(s.q.data(), s.u.data(), rest.data());
+    CHECK((kane::forcing<arm::system>(ev).first + bias).cwiseAbs().maxCoeff() < 1e-12);
+    // u' of forward dynamics gives tau = 0
+    auto s2 = s;
+    const auto [ud2, status2] = kane::forward_dynamics<arm::system>(ev);
+    REQUIRE(status2 == kane::solve_status::ok);
+    for (std::size_t i = 0; i < 6; ++i) s2.ud[i] = ud2(Eigen::Index(i));
+    ev.update(s2);
+    CHECK(kane::inverse_dynamics<arm::system>(ev).first.cwiseAbs().maxCoeff() < 1e-11);
+  }
+}
+
+TEST_CASE(
+    "a tree with fixed rotations, an oblique axis, a particle, a force and torques: M and f regrouped "
+    "equal Kane's sums",
+    "[recursive]") {
+  std::mt19937 rng(11);
+  for (int k = 0; k < 40; ++k) {
+    const auto s = random_state<tree::state>(rng);
+    tree::evaluator ev;
+    ev.update(s);
+    const auto fast = kane::mass_matrix_and_forcing<tree::system>(ev);
+    const auto sums =
+        kane::detail::equations_along<tree::system, false, true>(ev, kane::detail::all_speeds<4>{});
+    REQUIRE(fast.status == kane::solve_status::ok);
+    CHECK((fast.M - sums.M).cwiseAbs().maxCoeff() < 1e-13);
+    CHECK((fast.f - sums.f).cwiseAbs().maxCoeff() < 1e-12);
+    const Eigen::Map<const Eigen::Matrix<double, 4, 1>> ud(s.ud.data());
+    CHECK((kane::inverse_dynamics<tree::system>(ev).first - (sums.M * ud - sums.f)).cwiseAbs().maxCoeff() <
+          1e-12);
+    CHECK((kane::mass_matrix<tree::system>(ev).M - sums.M).cwiseAbs().maxCoeff() < 1e-13);
+  }
+}
+
+TEST_CASE("21 links: u' by articulated bodies equals M^-1 f by composite bodies and inward sums",
+          "[recursive]") {
+  std::mt19937 rng(13);
+  for (int k = 0; k < 10; ++k) {
+    const auto s = random_state<chain::state>(rng);
+    chain::evaluator ev;
+    ev.update(s);
+    const auto [ud, status] = kane::forward_dynamics<chain::system>(ev);
+    REQUIRE(status == kane::solve_status::ok);
+    const auto eom = kane::mass_matrix_and_forcing<chain::system>(ev);
+    const Eigen::Matrix<double, chain::n, 1> ref = eom.M.llt().solve(eom.f);
+    CHECK((ud - ref).cwiseAbs().maxCoeff() < 1e-9 * (1 + ref.cwiseAbs().maxCoeff()));
+    const auto [ud2, status2] = kane::speed_derivatives(eom);  // M's Cholesky factorization by rows
+    REQUIRE(status2 == kane::solve_status::ok);
+    CHECK((ud2 - ref).cwiseAbs().maxCoeff() < 1e-9 * (1 + ref.cwiseAbs().maxCoeff()));
+  }
+}
+
+TEST_CASE("the recursive entry points report a state that is not finite", "[recursive]") {
+  std::mt19937 rng(17);
+  auto s = random_state<arm::state>(rng);
+  s.q[2] = std::numeric_limits<double>::quiet_NaN();
+  arm::evaluator ev;
+  ev.update(s);
+  const auto [tau, status] = kane::inverse_dynamics<arm::system>(ev);
+  CHECK(status == kane::solve_status::not_finite);
+  CHECK(std::isnan(tau(0)));
+  CHECK(kane::forcing<arm::system>(ev).second == kane::solve_status::not_finite);
+  CHECK(kane::forward_dynamics<arm::system>(ev).second == kane::solve_status::not_finite);
+  auto c = random_state<chain::state>(rng);
+  c.u[4] = std::numeric_limits<double>::infinity();
+  chain::evaluator cev;
+  cev.update(c);
+  const auto [ud, cstatus] = kane::forward_dynamics<chain::system>(cev);
+  CHECK(cstatus == kane::solve_status::not_finite);
+  CHECK(std::isnan(ud(0)));
+}
