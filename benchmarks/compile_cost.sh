@@ -4,7 +4,13 @@
 # Eigen, at -O2 and at -O0 -g; compared with the committed
 # baseline (benchmarks/compile_baseline.txt). Exit 1 if a time or memory
 # exceeds its baseline by more than 30%. Usage: benchmarks/compile_cost.sh [--update]
+# benchmarks/compile_cost.sh chain_dynamics [n ...]: the n-link chain's dynamics
+# instead, one unit per n (chain_compile_cost.sh).
 set -euo pipefail
+if [ "${1:-}" = chain_dynamics ]; then
+  shift
+  exec "$(dirname "$0")/chain_compile_cost.sh" "$@"
+fi
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(dirname "$here")
 cxx=${CXX:-g++}
