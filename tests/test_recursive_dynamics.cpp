@@ -44,6 +44,18 @@ using system = kane::system<link<B1, C1, 0>, link<B2, C2, 1>, link<B3, C3, 2>, l
                             link<B5, C5, 4>, link<B6, C6, 5>, kane::gravity<literal(-g) * e<N, 3>>>;
 using state = kane::state<double, 6>;
 using evaluator = kane::evaluator<state, kane::frames<B6>, kane::level::acceleration, kane::qdot_speeds<6>>;
+// Joint torques as inputs: r_i k_i on B_i and -r_i k_i on its parent (F_r = r_r).
+using driven = kane::system<link<B1, C1, 0>, link<B2, C2, 1>, link<B3, C3, 2>, link<B4, C4, 3>,
+                            link<B5, C5, 4>, link<B6, C6, 5>, kane::gravity<literal(-g) * e<N, 3>>,
+                            kane::torque<B1, kane::r<1> * e<B1, 3>>, kane::torque<B2, kane::r<2> * e<B2, 2>>,
+                            kane::torque<B1, -kane::r<2> * e<B2, 2>>, kane::torque<B3, kane::r<3> * e<B3, 2>>,
+                            kane::torque<B2, -kane::r<3> * e<B3, 2>>, kane::torque<B4, kane::r<4> * e<B4, 1>>,
+                            kane::torque<B3, -kane::r<4> * e<B4, 1>>, kane::torque<B5, kane::r<5> * e<B5, 2>>,
+                            kane::torque<B4, -kane::r<5> * e<B5, 2>>, kane::torque<B6, kane::r<6> * e<B6, 1>>,
+                            kane::torque<B5, -kane::r<6> * e<B6, 1>>>;
+using driven_state = kane::state<double, 6, 6, 0, 6>;
+using driven_evaluator =
+    kane::evaluator<driven_state, kane::frames<B6>, kane::level::acceleration, kane::qdot_speeds<6>>;
 
 // Newton-Euler by hand, in N: outward w, alpha, a of the joints and centres; inward
 // F_i = f_i + F_{i+1}, N_i = n_i + (c_i - p_i) x f_i + N_{i+1} + (p_{i+1} - p_i) x F_{i+1};
@@ -197,6 +209,37 @@ TEST_CASE("the 6R arm: inverse dynamics by inward sums is Newton-Euler by hand a
     for (std::size_t i = 0; i < 6; ++i) s2.ud[i] = ud2(Eigen::Index(i));
     ev.update(s2);
     CHECK(kane::inverse_dynamics<arm::system>(ev).first.cwiseAbs().maxCoeff() < 1e-11);
+  }
+}
+
+TEST_CASE("joint torques as inputs per call: inverse dynamics, then the torques as inputs give back u'",
+          "[recursive]") {
+  std::mt19937 rng(19);
+  for (int k = 0; k < 20; ++k) {
+    const auto s = random_state<arm::state>(rng);
+    arm::evaluator ev;
+    ev.update(s);
+    const auto tau = kane::inverse_dynamics<arm::system>(ev).first;
+    arm::driven_state d;
+    d.q = s.q, d.u = s.u;
+    arm::driven_evaluator dev;
+    dev.update(d);  // r = 0: the torque-free arm
+    CHECK(
+        (kane::forcing<arm::driven>(dev).first - kane::forcing<arm::system>(ev).first).cwiseAbs().maxCoeff() <
+        1e-13);
+    std::array<double, 6> r;
+    for (std::size_t i = 0; i < 6; ++i) r[i] = tau(Eigen::Index(i));
+    dev.set_inputs(r);  // no new pass
+    const auto [ud, status] = kane::forward_dynamics<arm::driven>(dev);
+    REQUIRE(status == kane::solve_status::ok);
+    for (std::size_t i = 0; i < 6; ++i) CHECK(std::abs(ud(Eigen::Index(i)) - s.ud[i]) < 1e-10);
+    kane::motion<arm::driven, arm::driven_evaluator> rhs(d);
+    rhs.inputs() = r;
+    std::array<double, 12> x, dx;
+    for (std::size_t i = 0; i < 6; ++i) x[i] = s.q[i], x[6 + i] = s.u[i];
+    rhs(x, dx, 0.0);
+    REQUIRE(rhs.status() == kane::solve_status::ok);
+    for (std::size_t i = 0; i < 6; ++i) CHECK(std::abs(dx[6 + i] - s.ud[i]) < 1e-10);
   }
 }
 

@@ -113,7 +113,9 @@ void print_expr(std::ostream& os, const X& x) {
       os << 'p' << X::index;
     else
       os << type_name<X>();
-  } else if constexpr (std::is_same_v<X, time_variable>)
+  } else if constexpr (Input<X>)
+    os << 'r' << X::index;
+  else if constexpr (std::is_same_v<X, time_variable>)
     os << 't';
   else if constexpr (is_constant<X>::value) {
     os << X::num;

@@ -4,6 +4,7 @@
 //
 //   kane::motion<System, Evaluator> rhs(s);   // parameters (and all else) from the state s
 //   rhs(x, dxdt, t);                           // Boost.Odeint's signature; x: nq + nu numbers
+//   rhs.inputs() = r;                          // inputs r (kane::r<i> in loads) of the calls from now on
 //   kane::constrained_motion<System, NH, Evaluator>  // nonholonomic: x = (q, u_ind)
 //
 // x and dxdt are any containers with operator[] and nq + nu entries
@@ -11,6 +12,7 @@
 // is that of the last call: when it is not ok, dxdt is NaN.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <limits>
 
@@ -35,6 +37,8 @@ class motion {
   }
 
   solve_status status() const { return status_; }
+  // The inputs r of the calls from now on (a controller's torques), kept between calls.
+  std::array<scalar, state_type::nr>& inputs() { return s_.r; }
   // The evaluator at the last call's state (energies, positions, ...).
   const Ev& evaluator() const { return ev_; }
 
@@ -76,6 +80,7 @@ class constrained_motion {
   }
 
   solve_status status() const { return status_; }
+  std::array<scalar, state_type::nr>& inputs() { return s_.r; }
   const Ev& evaluator() const { return ev_; }
   // The state of the last call, its dependent speeds solved.
   const state_type& state() const { return s_; }

@@ -68,6 +68,8 @@ KANE_ALWAYS_INLINE typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
     return ev.state()[x];
   } else if constexpr (Parameter<X>)
     return ev.state()[parameter<X::index>{}];
+  else if constexpr (Input<X>)
+    return ev.state()[x];
   else if constexpr (std::is_same_v<X, time_variable>)
     return ev.state().t;
   else if constexpr (is_constant<X>::value)

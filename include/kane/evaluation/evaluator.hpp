@@ -82,7 +82,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
 
   KANE_ALWAYS_INLINE evaluator() {  // NaN until the first update
     detail::fill_nan(st_.q), detail::fill_nan(st_.qd), detail::fill_nan(st_.qdd);
-    detail::fill_nan(st_.u), detail::fill_nan(st_.ud), detail::fill_nan(st_.p);
+    detail::fill_nan(st_.u), detail::fill_nan(st_.ud), detail::fill_nan(st_.p), detail::fill_nan(st_.r);
     st_.t = std::numeric_limits<scalar>::quiet_NaN();
   }
 
@@ -116,6 +116,9 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   KANE_FLATTEN void update_speeds(const St& s) requires(solves && !detail::inlined_entry<pass_type>) {
     speeds_at(s);
   }
+
+  // The inputs r for what is evaluated from now on (loads read them; no pass reads them).
+  void set_inputs(const std::array<scalar, St::nr>& r) { st_.r = r; }
 
   // The state of the last update as far as evaluation reads it (with a speed set,
   // q' and q'' stay NaN: coordinate_value gives the solved ones; without, u and u').
@@ -184,7 +187,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
 
   template <bool Rates>
   KANE_ALWAYS_INLINE void pass_at(const St& s) {
-    st_.q = s.q, st_.p = s.p, st_.t = s.t, updated_ = true;
+    st_.q = s.q, st_.p = s.p, st_.t = s.t, st_.r = s.r, updated_ = true;
     const scalar norm_residue = normalise(closure{});  // Euler parameters of unit norm
     const bool rotations = attitudes(closure{});       // NaN in st_ where not
     if constexpr (!solves)

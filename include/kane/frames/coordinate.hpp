@@ -36,6 +36,14 @@ struct parameter : detail::scalar_tag {
   static constexpr std::size_t index = I;
 };
 
+// An input r_I (a joint torque, a control), value at r[I-1] of the state: read by loads,
+// set per call (evaluator::set_inputs, motion::inputs) without a new pass over the frames.
+template <std::size_t I>
+struct input : detail::scalar_tag {
+  static_assert(I >= 1, "kane: inputs are numbered from 1");
+  static constexpr std::size_t index = I;
+};
+
 struct time_variable : detail::scalar_tag {};
 
 // Tag objects: q<1> is q_1, u<2> is u_2, t is time.
@@ -43,6 +51,8 @@ template <std::size_t I>
 inline constexpr coordinate<I> q{};
 template <std::size_t I>
 inline constexpr speed<I> u{};
+template <std::size_t I>
+inline constexpr input<I> r{};
 inline constexpr time_variable t{};
 
 namespace detail {
@@ -66,5 +76,10 @@ template <class T>
 concept Speed = detail::is_speed<T>::value;
 template <class T>
 concept Parameter = decltype(detail::is_parameter_base(static_cast<const T*>(nullptr)))::value;
+template <class T>
+concept Input = requires {
+  T::index;
+}
+&&std::is_same_v<T, input<T::index>>;
 
 }  // namespace kane

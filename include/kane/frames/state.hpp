@@ -11,15 +11,17 @@
 namespace kane {
 
 // q_1..q_NQ at q[0..NQ-1] with their first and second time derivatives qd,
-// qdd; generalized speeds u and their derivatives ud; parameters p; time t.
+// qdd; generalized speeds u and their derivatives ud; parameters p; time t;
+// inputs r (read by loads only).
 // An aggregate: value-initialised to zero, trivially copyable, no heap.
-template <class S, std::size_t NQ, std::size_t NU = NQ, std::size_t NP = 0>
+template <class S, std::size_t NQ, std::size_t NU = NQ, std::size_t NP = 0, std::size_t NR = 0>
 struct state {
   static_assert(Scalar<S>, "kane: state<S, NQ, ...> needs a scalar type S (float, double, ...)");
   using scalar = S;
   static constexpr std::size_t nq = NQ;
   static constexpr std::size_t nu = NU;
   static constexpr std::size_t np = NP;
+  static constexpr std::size_t nr = NR;
 
   std::array<S, NQ> q{};
   std::array<S, NQ> qd{};
@@ -28,6 +30,7 @@ struct state {
   std::array<S, NU> ud{};
   std::array<S, NP> p{};
   S t{};
+  std::array<S, NR> r{};
 
   template <std::size_t I, std::size_t D>
   S& operator[](coordinate<I, D>) {
@@ -52,6 +55,14 @@ struct state {
   template <std::size_t I>
   const S& operator[](parameter<I>) const {
     return pick_p<I>(*this);
+  }
+  template <std::size_t I>
+  S& operator[](input<I>) {
+    return pick_r<I>(*this);
+  }
+  template <std::size_t I>
+  const S& operator[](input<I>) const {
+    return pick_r<I>(*this);
   }
 
  private:
@@ -80,13 +91,18 @@ struct state {
     static_assert(I <= NP, "kane: this parameter is beyond the state; declare the state with NP >= I");
     return s.p[I - 1];
   }
+  template <std::size_t I, class Self>
+  static auto& pick_r(Self& s) {
+    static_assert(I <= NR, "kane: this input is beyond the state; declare the state with NR >= I");
+    return s.r[I - 1];
+  }
 };
 
 namespace detail {
 template <class T>
 struct is_state : std::false_type {};
-template <class S, std::size_t NQ, std::size_t NU, std::size_t NP>
-struct is_state<state<S, NQ, NU, NP>> : std::true_type {};
+template <class S, std::size_t NQ, std::size_t NU, std::size_t NP, std::size_t NR>
+struct is_state<state<S, NQ, NU, NP, NR>> : std::true_type {};
 }  // namespace detail
 
 template <class T>

@@ -79,7 +79,7 @@ struct speed_info<speed<I, D>> : std::true_type {};
 
 template <class X>
 concept LeafConstant =
-    is_constant<X>::value || std::is_same_v<X, literal> || is_fixed<X>::value || Parameter<X>;
+    is_constant<X>::value || std::is_same_v<X, literal> || is_fixed<X>::value || Parameter<X> || Input<X>;
 
 // A frame that the vector V uses (void if none): its root is V's root.
 template <class V>

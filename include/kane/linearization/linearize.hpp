@@ -2,11 +2,11 @@
 // through the same evaluator; no differences):
 //
 //   auto lin = kane::linearize<Sys, Ev>(s);                 // x = (q, u)
-//   auto lin = kane::linearize<Sys, Ev, kane::inputs<k>>(s);  // k: a parameter
+//   auto lin = kane::linearize<Sys, Ev, kane::inputs<kane::r<1>>>(s);  // B = df/dr
 //   auto lin = kane::linearize_constrained<Sys, NH, Ev, H>(s);  // x = (q_ind, u_ind)
 //   dx' = lin.A dx + lin.B dr,  lin.rate = x' at s
 //
-// Inputs r are parameter slots (a specified torque's magnitude, say). For a
+// Inputs r are inputs of the state (kane::r<k>) or parameter slots (kane::parameter<k>{}). For a
 // nonholonomic system NH the state is (q_ind, u_ind): the dependent speeds are
 // A u_ind + B of the constraints at every perturbed state, and the dependent
 // coordinates of H (void: none) follow q_ind through the constraints' Jacobian
@@ -31,10 +31,12 @@
 
 namespace kane {
 
+// The inputs of B: parameters (kane::parameter<k>{}) or inputs of the state (kane::r<k>).
 template <auto... P>
 struct inputs {
   static constexpr std::size_t n = sizeof...(P);
   static constexpr std::array<std::size_t, n> slots{std::remove_cvref_t<decltype(P)>::index...};
+  static constexpr std::array<bool, n> of_state{Input<std::remove_cvref_t<decltype(P)>>...};
 };
 
 template <class S, std::size_t NX, std::size_t NR>
@@ -56,9 +58,9 @@ struct linear_equations {
 namespace detail {
 template <class St, class T>
 struct rebind_state;
-template <class S, std::size_t NQ, std::size_t NU, std::size_t NP, class T>
-struct rebind_state<state<S, NQ, NU, NP>, T> {
-  using type = state<T, NQ, NU, NP>;
+template <class S, std::size_t NQ, std::size_t NU, std::size_t NP, std::size_t NR, class T>
+struct rebind_state<state<S, NQ, NU, NP, NR>, T> {
+  using type = state<T, NQ, NU, NP, NR>;
 };
 template <class Ev, class T>
 struct rebind_evaluator;
@@ -82,12 +84,24 @@ auto lift(const St& s) {
     }
     (std::make_index_sequence<std::tuple_size_v<std::remove_cvref_t<decltype(a)>>>{});
   };
-  return typename rebind_state<St, J>::type{up(s.q), up(s.qd), up(s.qdd), up(s.u), up(s.ud), up(s.p), J(s.t)};
+  return typename rebind_state<St, J>::type{up(s.q),  up(s.qd), up(s.qdd), up(s.u),
+                                            up(s.ud), up(s.p),  J(s.t),    up(s.r)};
+}
+template <class In, class St>
+constexpr bool inputs_fit() {
+  for (std::size_t k = 0; k < In::n; ++k)
+    if (In::slots[k] > (In::of_state[k] ? St::nr : St::np)) return false;
+  return true;
 }
 template <class In, class J, class St>
 void seed_inputs(St& s, std::size_t first) {
-  for (std::size_t k = 0; k < In::n; ++k)
-    s.p[In::slots[k] - 1] = J::variable(s.p[In::slots[k] - 1].v, first + k);
+  static_assert(inputs_fit<In, St>(),
+                "kane: an input of linearize is beyond the state; declare the state with NR (inputs) or NP "
+                "(parameters) >= its index");
+  for (std::size_t k = 0; k < In::n; ++k) {
+    auto& x = In::of_state[k] ? s.r[In::slots[k] - 1] : s.p[In::slots[k] - 1];
+    x = J::variable(x.v, first + k);
+  }
 }
 template <class H>
 struct dependents_of {
