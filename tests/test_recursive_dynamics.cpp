@@ -11,48 +11,19 @@
 #include <Eigen/Cholesky>
 #include <kane/kane.hpp>
 
-#include "../examples/models/arm6.hpp"
+#include "../examples/models/arm6_dynamics.hpp"
 
 namespace {
 using kane::e;
 using kane::literal;
 
-// The 6R arm of examples/models/arm6.hpp with a mass at every link (benchmarks/dynamics6.hpp).
+// The 6R arm with masses and joint torques as inputs (examples/models/arm6_dynamics.hpp).
 namespace arm {
 using namespace models::arm6;
-constexpr double L[6] = {0.3, 0.25, 0.2, 0.15, 0.1, 0.05};
-constexpr double mass[6] = {2.0, 1.6, 1.2, 0.8, 0.5, 0.3};
-constexpr double inertia[6][6] = {
-    {0.020, 0.030, 0.025, 0.002, -0.001, 0.0015},     {0.015, 0.022, 0.018, -0.0012, 0.0008, 0.001},
-    {0.010, 0.014, 0.012, 0.0009, -0.0006, -0.0007},  {0.006, 0.008, 0.007, -0.0005, 0.0004, 0.0003},
-    {0.003, 0.004, 0.0035, 0.0002, -0.0002, 0.00025}, {0.0015, 0.002, 0.0018, -0.0001, 0.0001, 0.00012}};
-constexpr double g = 9.81;
-template <class B, class From, std::size_t I>
-struct centre : kane::point<From, literal(L[I] / 2) * e<B, 1>> {};
-struct C1 : centre<B1, O, 0> {};
-struct C2 : centre<B2, J2, 1> {};
-struct C3 : centre<B3, J3, 2> {};
-struct C4 : centre<B4, J4, 3> {};
-struct C5 : centre<B5, J5, 4> {};
-struct C6 : centre<B6, J6, 5> {};
-template <class B, class C, std::size_t I>
-using link = kane::rigid_body<
-    B, C, literal(mass[I]),
-    kane::inertia<B, C, literal(inertia[I][0]), literal(inertia[I][1]), literal(inertia[I][2]),
-                  literal(inertia[I][3]), literal(inertia[I][4]), literal(inertia[I][5])>>;
-using system = kane::system<link<B1, C1, 0>, link<B2, C2, 1>, link<B3, C3, 2>, link<B4, C4, 3>,
-                            link<B5, C5, 4>, link<B6, C6, 5>, kane::gravity<literal(-g) * e<N, 3>>>;
+using system = links;
+const auto& L = length;
 using state = kane::state<double, 6>;
 using evaluator = kane::evaluator<state, kane::frames<B6>, kane::level::acceleration, kane::qdot_speeds<6>>;
-// Joint torques as inputs: r_i k_i on B_i and -r_i k_i on its parent (F_r = r_r).
-using driven = kane::system<link<B1, C1, 0>, link<B2, C2, 1>, link<B3, C3, 2>, link<B4, C4, 3>,
-                            link<B5, C5, 4>, link<B6, C6, 5>, kane::gravity<literal(-g) * e<N, 3>>,
-                            kane::torque<B1, kane::r<1> * e<B1, 3>>, kane::torque<B2, kane::r<2> * e<B2, 2>>,
-                            kane::torque<B1, -kane::r<2> * e<B2, 2>>, kane::torque<B3, kane::r<3> * e<B3, 2>>,
-                            kane::torque<B2, -kane::r<3> * e<B3, 2>>, kane::torque<B4, kane::r<4> * e<B4, 1>>,
-                            kane::torque<B3, -kane::r<4> * e<B4, 1>>, kane::torque<B5, kane::r<5> * e<B5, 2>>,
-                            kane::torque<B4, -kane::r<5> * e<B5, 2>>, kane::torque<B6, kane::r<6> * e<B6, 1>>,
-                            kane::torque<B5, -kane::r<6> * e<B6, 1>>>;
 using driven_state = kane::state<double, 6, 6, 0, 6>;
 using driven_evaluator =
     kane::evaluator<driven_state, kane::frames<B6>, kane::level::acceleration, kane::qdot_speeds<6>>;

@@ -7,7 +7,7 @@
 //   kane::force<P, R>                             R (a vector expression) applied at P
 //   kane::torque<B, T>                            a couple of torque T on B
 //   kane::gravity<g>                              m g at every particle and mass centre
-//   kane::system<items...>
+//   kane::system<items...>                       items, or systems whose items it adds
 //
 // Masses and components are scalar expressions (a parameter, kane::literal(2.0),
 // kane::constant<1, 2>); loads are vector expressions of q, u, t and parameters.
@@ -190,12 +190,27 @@ constexpr bool carries(X*) {
 }
 }  // namespace detail
 
+namespace detail {
+struct system_tag {};
+template <class X>
+struct items_of {
+  using type = list<X>;
+};
+template <class X>
+requires std::derived_from<X, system_tag>
+struct items_of<X> {
+  using type = typename X::items;
+};
+}  // namespace detail
+
+// The items of a system, in order; a system among them adds its own.
 template <class... X>
-struct system {
-  static_assert(((detail::is_particle<X> || detail::is_body<X> ||
-                  std::derived_from<X, detail::load_tag>)&&...),
-                "kane: system<...> takes particles, rigid bodies and loads (force, torque, gravity)");
-  using items = detail::list<X...>;
+struct system : detail::system_tag {
+  static_assert(
+      ((detail::is_particle<X> || detail::is_body<X> || std::derived_from<X, detail::load_tag> ||
+        std::derived_from<X, detail::system_tag>)&&...),
+      "kane: system<...> takes particles, rigid bodies, loads (force, torque, gravity) and systems");
+  using items = typename detail::concat<typename detail::items_of<X>::type...>::type;
 };
 
 namespace detail {
