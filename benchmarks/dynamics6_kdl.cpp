@@ -1,7 +1,9 @@
-// Orocos KDL: ChainDynParam (M, Coriolis, gravity) on the chain of dynamics6.hpp; q'' by LLT.
+// Orocos KDL: ChainDynParam (M, Coriolis, gravity) on the chain of dynamics6.hpp; q'' by LLT;
+// tau by ChainIdSolver_RNE.
 #include <Eigen/Cholesky>
 #include <kdl/chain.hpp>
 #include <kdl/chaindynparam.hpp>
+#include <kdl/chainidsolver_recursive_newton_euler.hpp>
 
 #include "dynamics6.hpp"
 
@@ -25,7 +27,9 @@ struct model {
 };
 model m;
 KDL::ChainDynParam dyn(m.chain, KDL::Vector(0, 0, -dynamics6::g));
-KDL::JntArray q(6), qd(6), coriolis(6), gravity(6);
+KDL::ChainIdSolver_RNE rne(m.chain, KDL::Vector(0, 0, -dynamics6::g));
+KDL::JntArray q(6), qd(6), qdd(6), coriolis(6), gravity(6), torques(6);
+KDL::Wrenches none(6);  // no external wrenches
 KDL::JntSpaceInertiaMatrix H(6);
 
 void load(const dynamics6::input& in) {
@@ -56,4 +60,10 @@ void dynamics6::kdl_forward(const input& in, output& out) {
   Eigen::Map<Eigen::Matrix<double, 6, 1>>(out.qdd) =
       -Eigen::Map<const Eigen::Matrix<double, 6, 6>>(out.M).llt().solve(
           Eigen::Map<const Eigen::Matrix<double, 6, 1>>(out.h));
+}
+void dynamics6::kdl_inverse(const input& in, output& out) {
+  load(in);
+  for (int i = 0; i < 6; ++i) qdd(i) = in.qdd_in[i];
+  rne.CartToJnt(q, qd, qdd, none, torques);
+  for (int i = 0; i < 6; ++i) out.tau[i] = torques(i);
 }
