@@ -56,6 +56,13 @@ struct turn {
     component_ref<b>(v) = c * x + s * y, component_ref<d>(v) = c * y - s * x;
     return v;
   }
+  template <std::array<entry, 3> P>  // E^T v, v of pattern P
+  KANE_ALWAYS_INLINE v3<S> down_along(const v3<S>& v) const {
+    if constexpr (P[b] == entry::zero && P[d] == entry::zero)
+      return v;
+    else
+      return down(v);
+  }
   KANE_ALWAYS_INLINE sym3<S> up(const sym3<S>& i) const {  // E I E^T, through cos 2q and sin 2q
     constexpr std::size_t bb = sym_at[b][b], dd = sym_at[d][d], bd = sym_at[b][d], ab = sym_at[A][b],
                           ad = sym_at[A][d];
@@ -79,6 +86,10 @@ struct turn<S, -1> {
   KANE_ALWAYS_INLINE v3<S> down(const v3<S>& v) const {
     return {e(0, 0) * v.x + e(1, 0) * v.y + e(2, 0) * v.z, e(0, 1) * v.x + e(1, 1) * v.y + e(2, 1) * v.z,
             e(0, 2) * v.x + e(1, 2) * v.y + e(2, 2) * v.z};
+  }
+  template <std::array<entry, 3> P>
+  KANE_ALWAYS_INLINE v3<S> down_along(const v3<S>& v) const {
+    return down(v);
   }
   KANE_ALWAYS_INLINE sym3<S> up(const sym3<S>& i) const {
     sym3<S> o;
@@ -137,6 +148,72 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> own_components(const V& v, const Ev& 
     return own_components(v.l, ev) - own_components(v.r, ev);
   else
     return -own_components(v.v, ev);
+}
+
+// A scalar known at compile time (literals, constants and their arithmetic), and its value.
+template <class X>
+constexpr bool known_scalar() {
+  if constexpr (std::is_same_v<X, literal> || is_constant<X>::value || is_fixed<X>::value)
+    return true;
+  else if constexpr (is_v<X, add> || is_v<X, sub> || is_v<X, mul> || is_v<X, quot>)
+    return known_scalar<std::remove_cv_t<decltype(std::declval<const X&>().l)>>() &&
+           known_scalar<std::remove_cv_t<decltype(std::declval<const X&>().r)>>();
+  else if constexpr (is_v<X, neg>)
+    return known_scalar<std::remove_cv_t<decltype(std::declval<const X&>().x)>>();
+  else
+    return false;
+}
+template <class X>
+constexpr double known_value(const X& x) {
+  if constexpr (std::is_same_v<X, literal>)
+    return x.value;
+  else if constexpr (is_constant<X>::value)
+    return double(X::num) / double(X::den);
+  else if constexpr (is_fixed<X>::value)
+    return X::value;
+  else if constexpr (is_v<X, add>)
+    return known_value(x.l) + known_value(x.r);
+  else if constexpr (is_v<X, sub>)
+    return known_value(x.l) - known_value(x.r);
+  else if constexpr (is_v<X, mul>)
+    return known_value(x.l) * known_value(x.r);
+  else if constexpr (is_v<X, quot>)
+    return known_value(x.l) / known_value(x.r);
+  else
+    return -known_value(x.x);
+}
+// The same for the components of a vector fixed in its frame (own_components).
+template <class V>
+constexpr bool known_vector() {
+  if constexpr (is_zero_vector_v<V> || is_unit<V>::value)
+    return true;
+  else if constexpr (is_v<V, scaled>)
+    return known_scalar<std::remove_cv_t<decltype(std::declval<const V&>().s)>>() &&
+           known_vector<std::remove_cv_t<decltype(std::declval<const V&>().v)>>();
+  else if constexpr (is_v<V, vneg>)
+    return known_vector<std::remove_cv_t<decltype(std::declval<const V&>().v)>>();
+  else
+    return known_vector<std::remove_cv_t<decltype(std::declval<const V&>().l)>>() &&
+           known_vector<std::remove_cv_t<decltype(std::declval<const V&>().r)>>();
+}
+template <class V>
+constexpr std::array<double, 3> known_components(const V& v) {
+  if constexpr (is_zero_vector_v<V>)
+    return {0, 0, 0};
+  else if constexpr (is_unit<V>::value)
+    return {double(V::index == 1), double(V::index == 2), double(V::index == 3)};
+  else if constexpr (is_v<V, scaled>) {
+    const double k = known_value(v.s);
+    const auto a = known_components(v.v);
+    return {k * a[0], k * a[1], k * a[2]};
+  } else if constexpr (is_v<V, vneg>) {
+    const auto a = known_components(v.v);
+    return {-a[0], -a[1], -a[2]};
+  } else {
+    const auto a = known_components(v.l), b = known_components(v.r);
+    const double sign = is_v<V, vdiff> ? -1.0 : 1.0;
+    return {a[0] + sign * b[0], a[1] + sign * b[1], a[2] + sign * b[2]};
+  }
 }
 
 // Which of those components are 0 or 1 at every state.
@@ -212,6 +289,41 @@ struct body_frames<JF, Ev, list<F...>> {
         ...);
     return out;
   }(typename JF::all_points{});
+  // Every point's position known at compile time, and the positions.
+  static constexpr bool known_positions = [] {
+    return []<class... P>(list<P...>) {
+      return (known_vector<std::remove_cv_t<decltype(P::position)>>() && ...);
+    }(typename JF::all_points{});
+  }();
+  static constexpr auto known_pos = [] {
+    std::array<std::array<double, 3>, np> out{};
+    if constexpr (known_positions) {
+      std::size_t i = 0;
+      [&]<class... P>(list<P...>) {
+        (
+            [&] {
+              const int from = t.from[i], g = t.segment[i];
+              const auto own = known_components(P::position);
+              if (from < 0)
+                out[i] = {0, 0, 0};
+              else if (g < 0)
+                out[i] = out[std::size_t(from)];
+              else if (from == t.origin[std::size_t(g)])
+                out[i] = own;
+              else
+                for (std::size_t j = 0; j < 3; ++j) out[i][j] = out[std::size_t(from)][j] + own[j];
+              ++i;
+            }(),
+            ...);
+      }(typename JF::all_points{});
+    }
+    return out;
+  }();
+  static constexpr std::array<double, 3> known_local(int p, int f) {
+    if (p < 0 || p == t.origin[std::size_t(f)]) return {0, 0, 0};
+    return known_pos[std::size_t(p)];
+  }
+
   // The patterns of t_F and of local<P, F>().
   static constexpr std::array<entry, 3> offset_pattern(std::size_t f) {
     const int o = t.origin[f];

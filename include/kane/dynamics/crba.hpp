@@ -81,6 +81,57 @@ struct composite_inertia {
   }
 };
 
+// The inertia of each frame's own items about its origin, in its components, when every number
+// is known at compile time (literal masses, inertias and positions): composites start from constants.
+template <class JF, class Sys, class BF>
+struct known_inertias {
+  static constexpr auto& t = JF::table;
+  template <class X>
+  static constexpr bool known_item() {
+    if constexpr (is_body<X>) {
+      using I = typename X::inertia_type;
+      return known_scalar<std::remove_cv_t<decltype(X::mass)>>() &&
+             std::is_same_v<typename I::frame, typename X::frame> && []<class... C>(std::tuple<C...>*) {
+               return (known_scalar<std::remove_cv_t<C>>() && ...);
+             }(static_cast<std::remove_cvref_t<decltype(I::components)>*>(nullptr));
+    } else if constexpr (is_particle<X>)
+      return known_scalar<std::remove_cv_t<decltype(X::mass)>>();
+    else
+      return true;
+  }
+  static constexpr bool value = BF::known_positions && []<class... X>(list<X...>) {
+    return (known_item<X>() && ...);
+  }(typename Sys::items{});
+  static constexpr auto own = [] {
+    std::array<composite_inertia<double>, JF::nf> out{};
+    if constexpr (value) {
+      for (auto& x : out) x = {0, {0, 0, 0}, {0, 0, 0, 0, 0, 0}};
+      [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) {
+        (
+            [&] {
+              constexpr int f = t.item_frame[I];
+              if constexpr ((is_particle<X> || is_body<X>)&&f > 0) {
+                const double m = known_value(X::mass);
+                const auto c = BF::known_local(t.item_point[I], f);
+                std::array<double, 6> ic{};
+                if constexpr (is_body<X>)
+                  static_for<6>(
+                      [&](auto k) { ic[k] = known_value(std::get<k>(X::inertia_type::components)); });
+                composite_inertia<double>& o = out[std::size_t(f)];
+                o.mass += m, o.h = {o.h.x + m * c[0], o.h.y + m * c[1], o.h.z + m * c[2]};
+                o.i[0] += ic[0] + m * (c[1] * c[1] + c[2] * c[2]),
+                    o.i[1] += ic[1] + m * (c[2] * c[2] + c[0] * c[0]);
+                o.i[2] += ic[2] + m * (c[0] * c[0] + c[1] * c[1]), o.i[3] += ic[3] - m * c[0] * c[1];
+                o.i[4] += ic[4] - m * c[1] * c[2], o.i[5] += ic[5] - m * c[2] * c[0];
+              }
+            }(),
+            ...);
+      }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
+    }
+    return out;
+  }();
+};
+
 // The inertia of body X about its centre in the components of its frame.
 template <class X, class Ev>
 KANE_ALWAYS_INLINE sym3<typename Ev::scalar> body_inertia(const Ev& ev) {
@@ -182,24 +233,34 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
   constexpr auto& t = JF::table;
   constexpr std::size_t nf = JF::nf;
   std::array<composite_inertia<S>, nf> c;
-  for (auto& x : c) x.mass = S(0), x.h = {S(0), S(0), S(0)}, x.i = {S(0), S(0), S(0), S(0), S(0), S(0)};
-  [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) {
-    (
-        [&] {
-          constexpr int f = t.item_frame[I];
-          if constexpr ((is_particle<X> || is_body<X>)&&f > 0) {
-            constexpr int p = t.item_point[I];
-            const vec at = bf.template local<p, f>();
-            constexpr auto C = body_frames<JF, Ev>::local_pattern(p, f);
-            if constexpr (is_body<X>)
-              c[std::size_t(f)].template add_mass<C, true>(S(eval_scalar(X::mass, ev)), at,
-                                                           body_inertia<X>(ev));
-            else
-              c[std::size_t(f)].template add_mass<C, false>(S(eval_scalar(X::mass, ev)), at, {});
-          }
-        }(),
-        ...);
-  }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
+  using known = known_inertias<JF, Sys, body_frames<JF, Ev>>;
+  if constexpr (known::value)  // constants
+    static_for<nf>([&](auto f) {
+      constexpr composite_inertia<double> o = known::own[f];
+      c[f] = {S(o.mass),
+              {S(o.h.x), S(o.h.y), S(o.h.z)},
+              {S(o.i[0]), S(o.i[1]), S(o.i[2]), S(o.i[3]), S(o.i[4]), S(o.i[5])}};
+    });
+  else {
+    for (auto& x : c) x.mass = S(0), x.h = {S(0), S(0), S(0)}, x.i = {S(0), S(0), S(0), S(0), S(0), S(0)};
+    [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) {
+      (
+          [&] {
+            constexpr int f = t.item_frame[I];
+            if constexpr ((is_particle<X> || is_body<X>)&&f > 0) {
+              constexpr int p = t.item_point[I];
+              const vec at = bf.template local<p, f>();
+              constexpr auto C = body_frames<JF, Ev>::local_pattern(p, f);
+              if constexpr (is_body<X>)
+                c[std::size_t(f)].template add_mass<C, true>(S(eval_scalar(X::mass, ev)), at,
+                                                             body_inertia<X>(ev));
+              else
+                c[std::size_t(f)].template add_mass<C, false>(S(eval_scalar(X::mass, ev)), at, {});
+            }
+          }(),
+          ...);
+    }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
+  }
   static_for<nf - 1>([&](auto j) {  // leaves first
     constexpr std::size_t f = nf - 1 - j;
     if constexpr (t.parent[f] > 0)

@@ -38,7 +38,7 @@ class motion {
 
   solve_status status() const { return status_; }
   // The inputs r of the calls from now on (a controller's torques), kept between calls.
-  std::array<scalar, state_type::nr>& inputs() { return s_.r; }
+  typename state_type::inputs_type& inputs() { return s_.r; }
   // The evaluator at the last call's state (energies, positions, ...).
   const Ev& evaluator() const { return ev_; }
 
@@ -80,7 +80,7 @@ class constrained_motion {
   }
 
   solve_status status() const { return status_; }
-  std::array<scalar, state_type::nr>& inputs() { return s_.r; }
+  typename state_type::inputs_type& inputs() { return s_.r; }
   const Ev& evaluator() const { return ev_; }
   // The state of the last call, its dependent speeds solved.
   const state_type& state() const { return s_; }

@@ -34,6 +34,42 @@ KANE_ALWAYS_INLINE typename Ev::scalar joint_rate(const Ev& ev, std::size_t r) {
     return Order == 1 ? s.u[r] : s.ud[r];
 }
 
+// -g, the acceleration of the root that stands for gravity, and its pattern: the sum of the
+// system's gravity vectors, in the root's components.
+template <class Sys, class R>
+constexpr std::array<entry, 3> base_pattern() {
+  return []<class... X>(list<X...>) {
+    std::array<entry, 3> out{entry::zero, entry::zero, entry::zero};
+    (
+        [&] {
+          if constexpr (is_gravity<X>) {
+            using V = std::remove_cv_t<decltype(X::vector)>;
+            using F = typename fixed_frame_of<V>::type;
+            constexpr auto p = std::is_same_v<F, R> || std::is_same_v<F, no_frame>
+                                   ? own_pattern<V>()
+                                   : std::array<entry, 3>{entry::other, entry::other, entry::other};
+            for (std::size_t i = 0; i < 3; ++i)
+              if (p[i] != entry::zero) out[i] = entry::other;
+          }
+        }(),
+        ...);
+    return out;
+  }(typename Sys::items{});
+}
+template <class Sys, class R, class Ev>
+KANE_ALWAYS_INLINE v3<typename Ev::scalar> base_acceleration(const Ev& ev) {
+  using S = typename Ev::scalar;
+  v3<S> a{S(0), S(0), S(0)};
+  [&]<class... X>(list<X...>) {
+    (
+        [&] {
+          if constexpr (is_gravity<X>) a = a - eval_vector<false>(X::vector, ev);
+        }(),
+        ...);
+  }(typename Sys::items{});
+  return a;
+}
+
 // tau = M u' - f of the joint-form system Sys (u' of the state, or 0 with Rest).
 template <bool Rest, class JF, class Sys, class Ev, class Out>
 KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev, Out& tau) {
@@ -43,36 +79,45 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
   constexpr std::size_t nf = JF::nf;
   const vec zero{S(0), S(0), S(0)};
   std::array<vec, nf> w, alpha, a, n, f;
-  w[0] = zero, alpha[0] = zero, a[0] = zero;
-  [&]<class... X>(list<X...>) {
-    (
-        [&] {
-          if constexpr (is_gravity<X>) a[0] = a[0] - eval_vector<false>(X::vector, ev);
-        }(),
-        ...);
-  }(typename Sys::items{});
+  w[0] = zero, alpha[0] = zero;
+  constexpr auto G = base_pattern<Sys, frame_at<JF, 0>>();
+  a[0] = base_acceleration<Sys, frame_at<JF, 0>>(ev);
   using BF = body_frames<JF, Ev>;
+  using known = known_inertias<JF, Sys, BF>;
   static_for<nf - 1>([&](auto i) {
     constexpr std::size_t g = i + 1, p = std::size_t(t.parent[g]);
     constexpr int r = t.speed[g];
     constexpr auto O = BF::offset_pattern(g);
     const auto& e = std::get<g>(bf.e);
     const vec& o = bf.offset[g];
-    const vec wp = e.down(w[p]);
-    if constexpr (p == 0 || all_zero(O))
-      a[g] = e.down(a[p]);
-    else
-      a[g] = e.down(a[p] + cross_along<O>(alpha[p], o) + cross3(w[p], cross_along<O>(w[p], o)));
-    if constexpr (r < 0)
-      w[g] = wp, alpha[g] = e.down(alpha[p]);
-    else {
-      using F = frame_at<JF, g>;
-      constexpr auto K = joint_axis_pattern<F>();
-      const vec k = joint_axis_in_frame<F, S>();
-      const S u = joint_rate<1>(ev, std::size_t(r));
-      w[g] = add_along<K, false>(wp, u, k);
-      alpha[g] = e.down(alpha[p]) + u * cross_along<K>(wp, k);
-      if constexpr (!Rest) alpha[g] = add_along<K, false>(alpha[g], joint_rate<2>(ev, std::size_t(r)), k);
+    if constexpr (p == 0) {  // the root does not turn: a = E^T a_O, w = u k, alpha = u' k
+      a[g] = e.template down_along<G>(a[0]);
+      if constexpr (r < 0)
+        w[g] = zero, alpha[g] = zero;
+      else {
+        using F = frame_at<JF, g>;
+        constexpr auto K = joint_axis_pattern<F>();
+        const vec k = joint_axis_in_frame<F, S>();
+        w[g] = add_along<K, true>(zero, joint_rate<1>(ev, std::size_t(r)), k);
+        alpha[g] = Rest ? zero : add_along<K, true>(zero, joint_rate<2>(ev, std::size_t(r)), k);
+      }
+    } else {
+      const vec wp = e.down(w[p]);
+      if constexpr (all_zero(O))
+        a[g] = e.down(a[p]);
+      else
+        a[g] = e.down(a[p] + cross_along<O>(alpha[p], o) + cross3(w[p], cross_along<O>(w[p], o)));
+      if constexpr (r < 0)
+        w[g] = wp, alpha[g] = e.down(alpha[p]);
+      else {
+        using F = frame_at<JF, g>;
+        constexpr auto K = joint_axis_pattern<F>();
+        const vec k = joint_axis_in_frame<F, S>();
+        const S u = joint_rate<1>(ev, std::size_t(r));
+        w[g] = add_along<K, false>(wp, u, k);
+        alpha[g] = e.down(alpha[p]) + u * cross_along<K>(wp, k);
+        if constexpr (!Rest) alpha[g] = add_along<K, false>(alpha[g], joint_rate<2>(ev, std::size_t(r)), k);
+      }
     }
     n[g] = zero, f[g] = zero;
   });
@@ -87,7 +132,9 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
             const vec c = bf.template local<ip, g>();
             vec& fg = f[std::size_t(g)];
             vec& ng = n[std::size_t(g)];
-            if constexpr (is_particle<X> || is_body<X>) {
+            if constexpr ((is_particle<X> || is_body<X>)&&known::value) {
+              // every frame's items at once, below
+            } else if constexpr (is_particle<X> || is_body<X>) {
               const vec& wg = w[std::size_t(g)];
               const vec& ag = alpha[std::size_t(g)];
               vec ac = a[std::size_t(g)];
@@ -110,6 +157,23 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
         }(),
         ...);
   }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
+  if constexpr (known::value)         // (m, h, J) of each frame's items about its origin, constants:
+    static_for<nf - 1>([&](auto i) {  // f = m a + alpha x h + w x (w x h), n = J alpha + w x J w + h x a
+      constexpr std::size_t g = i + 1;
+      constexpr composite_inertia<double> o = known::own[g];
+      if constexpr (o.mass != 0) {
+        const vec h{S(o.h.x), S(o.h.y), S(o.h.z)};
+        const sym3<S> jo{S(o.i[0]), S(o.i[1]), S(o.i[2]), S(o.i[3]), S(o.i[4]), S(o.i[5])};
+        constexpr std::array<entry, 3> H = {
+            entry_of_number(o.h.x) == entry::zero ? entry::zero : entry::other,
+            entry_of_number(o.h.y) == entry::zero ? entry::zero : entry::other,
+            entry_of_number(o.h.z) == entry::zero ? entry::zero : entry::other};
+        const vec& wg = w[g];
+        const vec& ag = alpha[g];
+        f[g] = f[g] + S(o.mass) * a[g] + cross_along<H>(ag, h) + cross3(wg, cross_along<H>(wg, h));
+        n[g] = n[g] + sym_times(jo, ag) + cross3(wg, sym_times(jo, wg)) + cross_from<H>(h, a[g]);
+      }
+    });
   static_for<nf - 1>([&](auto j) {  // leaves first
     constexpr std::size_t g = nf - 1 - j, p = std::size_t(t.parent[g]);
     constexpr int r = t.speed[g];

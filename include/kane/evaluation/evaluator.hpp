@@ -82,7 +82,8 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
 
   KANE_ALWAYS_INLINE evaluator() {  // NaN until the first update
     detail::fill_nan(st_.q), detail::fill_nan(st_.qd), detail::fill_nan(st_.qdd);
-    detail::fill_nan(st_.u), detail::fill_nan(st_.ud), detail::fill_nan(st_.p), detail::fill_nan(st_.r);
+    detail::fill_nan(st_.u), detail::fill_nan(st_.ud), detail::fill_nan(st_.p);
+    if constexpr (St::nr > 0) detail::fill_nan(st_.r);
     st_.t = std::numeric_limits<scalar>::quiet_NaN();
   }
 
@@ -118,7 +119,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   }
 
   // The inputs r for what is evaluated from now on (loads read them; no pass reads them).
-  void set_inputs(const std::array<scalar, St::nr>& r) { st_.r = r; }
+  void set_inputs(const typename St::inputs_type& r) { st_.r = r; }
 
   // The state of the last update as far as evaluation reads it (with a speed set,
   // q' and q'' stay NaN: coordinate_value gives the solved ones; without, u and u').

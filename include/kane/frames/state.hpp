@@ -10,6 +10,15 @@
 
 namespace kane {
 
+namespace detail {
+// The inputs of a state without any: no storage.
+template <class S>
+struct no_inputs {
+  static constexpr std::size_t size() { return 0; }
+  constexpr bool operator==(const no_inputs&) const = default;
+};
+}  // namespace detail
+
 // q_1..q_NQ at q[0..NQ-1] with their first and second time derivatives qd,
 // qdd; generalized speeds u and their derivatives ud; parameters p; time t;
 // inputs r (read by loads only).
@@ -29,8 +38,9 @@ struct state {
   std::array<S, NU> u{};
   std::array<S, NU> ud{};
   std::array<S, NP> p{};
+  using inputs_type = std::conditional_t<NR == 0, detail::no_inputs<S>, std::array<S, NR>>;
+  [[no_unique_address]] inputs_type r{};
   S t{};
-  std::array<S, NR> r{};
 
   template <std::size_t I, std::size_t D>
   S& operator[](coordinate<I, D>) {

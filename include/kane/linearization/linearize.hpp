@@ -84,8 +84,11 @@ auto lift(const St& s) {
     }
     (std::make_index_sequence<std::tuple_size_v<std::remove_cvref_t<decltype(a)>>>{});
   };
-  return typename rebind_state<St, J>::type{up(s.q),  up(s.qd), up(s.qdd), up(s.u),
-                                            up(s.ud), up(s.p),  J(s.t),    up(s.r)};
+  using out = typename rebind_state<St, J>::type;
+  if constexpr (St::nr == 0)
+    return out{up(s.q), up(s.qd), up(s.qdd), up(s.u), up(s.ud), up(s.p), {}, J(s.t)};
+  else
+    return out{up(s.q), up(s.qd), up(s.qdd), up(s.u), up(s.ud), up(s.p), up(s.r), J(s.t)};
 }
 template <class In, class St>
 constexpr bool inputs_fit() {
@@ -98,10 +101,16 @@ void seed_inputs(St& s, std::size_t first) {
   static_assert(inputs_fit<In, St>(),
                 "kane: an input of linearize is beyond the state; declare the state with NR (inputs) or NP "
                 "(parameters) >= its index");
-  for (std::size_t k = 0; k < In::n; ++k) {
-    auto& x = In::of_state[k] ? s.r[In::slots[k] - 1] : s.p[In::slots[k] - 1];
+  static_for<In::n>([&](auto k) {
+    auto& x = [&]() -> auto& {
+      if constexpr (In::of_state[k])
+        return s.r[In::slots[k] - 1];
+      else
+        return s.p[In::slots[k] - 1];
+    }
+    ();
     x = J::variable(x.v, first + k);
-  }
+  });
 }
 template <class H>
 struct dependents_of {
