@@ -1,6 +1,6 @@
 // kane: Kane's equations of the 6-revolute chain with link masses (dynamics6.hpp, the
-// model of examples/models/arm6_dynamics.hpp), written as the README teaches: an
-// evaluator at level::acceleration (level::pose for M alone) and the entry points.
+// model of examples/models/arm6_dynamics.hpp), written as the README teaches: the entry
+// points of a system of joint form read the pose alone of an evaluator (level::pose).
 #include "../examples/models/arm6_dynamics.hpp"
 #include "dynamics6.hpp"
 
@@ -8,7 +8,7 @@ namespace {
 using namespace models::arm6;
 using system = links;
 using state = kane::state<double, 6>;
-using evaluator = kane::evaluator<state, kane::frames<B6>, kane::level::acceleration, kane::qdot_speeds<6>>;
+using evaluator = kane::evaluator<state, kane::frames<B6>, kane::level::pose, kane::qdot_speeds<6>>;
 using vector = Eigen::Map<Eigen::Matrix<double, 6, 1>>;
 
 state at(const dynamics6::input& in) {
@@ -16,9 +16,9 @@ state at(const dynamics6::input& in) {
   s.q = in.q, s.u = in.qd;
   return s;
 }
-// M alone: the partial velocities need the pose only
+// M alone
 void mass_alone(const dynamics6::input& in, dynamics6::output& out) {
-  kane::evaluator<state, kane::frames<B6>, kane::level::pose, kane::qdot_speeds<6>> ev;
+  evaluator ev;
   ev.update(at(in));
   Eigen::Map<Eigen::Matrix<double, 6, 6>>(out.M) = kane::mass_matrix<system>(ev).M;
 }

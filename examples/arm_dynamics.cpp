@@ -13,9 +13,11 @@
 
 namespace arm = models::arm6;
 using state = kane::state<double, 6, 6, 0, 6>;  // 6 inputs: the joint torques
-using evaluator =
-    kane::evaluator<state, kane::frames<arm::B6>, kane::level::acceleration, kane::qdot_speeds<6>>;
-using rhs = kane::motion<arm::driven, evaluator>;
+// The arm is of joint form: its dynamics read an evaluator's pose alone (and the state's u, u');
+// kane::motion reads q' of its evaluator as well (level::velocity).
+template <kane::level L>
+using evaluator = kane::evaluator<state, kane::frames<arm::B6>, L, kane::qdot_speeds<6>>;
+using rhs = kane::motion<arm::driven, evaluator<kane::level::velocity>>;
 
 // q_d(t) = 0.3 sin(t + i), and its rates
 double desired(std::size_t i, double t, int order) {
@@ -26,7 +28,7 @@ double desired(std::size_t i, double t, int order) {
 int main() {
   state s;
   rhs arm_rhs(s);
-  evaluator controller;
+  evaluator<kane::level::pose> controller;
   std::array<double, 12> x{};  // q = 0, u = 0: off the trajectory at the start
   const double dt = 1e-3, kp = 100, kd = 20;
   double error = 0;
