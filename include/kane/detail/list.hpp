@@ -111,4 +111,22 @@ template <class T, class H, class... Ts>
 struct index_of<T, list<H, Ts...>>
     : std::integral_constant<std::size_t, 1 + index_of<T, list<Ts...>>::value> {};
 
+// M<T>::type of each T of a list; M<T...> of a list; a list without void.
+template <template <class> class M, class L>
+struct map_items;
+template <template <class> class M, class... T>
+struct map_items<M, list<T...>> {
+  using type = list<typename M<T>::type...>;
+};
+template <template <class...> class M, class L>
+struct apply_list;
+template <template <class...> class M, class... T>
+struct apply_list<M, list<T...>> : M<T...> {};
+template <class L>
+struct not_void;
+template <class... T>
+struct not_void<list<T...>> {
+  using type = typename concat<std::conditional_t<std::is_void_v<T>, list<>, list<T>>...>::type;
+};
+
 }  // namespace kane::detail

@@ -57,4 +57,26 @@ struct joined_frames : path<A, B> {
 template <class A, class B>
 struct joined_path : joined_frames<A, B> {};
 
+// Acc and the nodes above T (Up<T>::type, void above a root) that Acc lacks, ancestors first.
+template <template <class> class Up, class Acc, class T, bool = std::is_void_v<T> || contains<T, Acc>::value>
+struct with_ancestors {
+  using type = Acc;
+};
+template <template <class> class Up, class Acc, class T>
+struct with_ancestors<Up, Acc, T, false> {
+  using above = typename with_ancestors<Up, Acc, typename Up<T>::type>::type;
+  using type = typename concat<above, list<T>>::type;
+};
+// The nodes T... and their ancestors, each once, ancestors first: linear in the nodes times
+// the depth, with recursion no deeper than their number plus the depth.
+template <template <class> class Up, class Acc, class... T>
+struct tree_union {
+  using type = Acc;
+};
+template <template <class> class Up, class Acc, class T, class... Ts>
+struct tree_union<Up, Acc, T, Ts...> : tree_union<Up, typename with_ancestors<Up, Acc, T>::type, Ts...> {};
+template <class F>
+struct frame_up {
+  using type = typename F::tree_parent;
+};
 }  // namespace kane::detail

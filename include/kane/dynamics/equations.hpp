@@ -1,12 +1,7 @@
 // Kane's dynamical equations Fr + Fr* = 0 for the speeds of the evaluator, as
-// M(q, t) u' = f(q, u, t), in the root frame N of the evaluator's tree:
-//   M_rs = sum m v_r . v_s + w_r . I . w_s
-//   f_r  = F_r - sum m v_r . a_0 + w_r . (I . alpha_0 + w x I . w)
-//   F_r  = sum v_r . R + w_r . T   (the generalized active forces)
-// over particles and rigid bodies (v of the particle or mass centre, w of the
-// body), with a_0 = a - sum_s v_s u_s' and alpha_0 = alpha - sum_s w_s u_s':
-// a and alpha are linear in u' with the partial velocities as coefficients, so
-// one evaluator pass at level::acceleration, at any u', gives M and f.
+// M(q, t) u' = f(q, u, t) in the root frame of the evaluator's tree: regrouped over
+// the tree for a system of joint form (crba.hpp, rnea.hpp), else Kane's sums
+// (sums.hpp); u' = M^-1 f by a fixed-size Cholesky factorization.
 #pragma once
 
 #include <array>
@@ -24,6 +19,7 @@
 #include "kane/dynamics/crba.hpp"
 #include "kane/dynamics/joint_form.hpp"
 #include "kane/dynamics/rnea.hpp"
+#include "kane/dynamics/sums.hpp"
 #include "kane/dynamics/terms.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/memo.hpp"
@@ -33,177 +29,7 @@
 
 namespace kane {
 
-template <class S, std::size_t N>
-struct equations_of_motion {
-  Eigen::Matrix<S, int(N), int(N)> M;  // symmetric, positive definite for a system with mass in every speed
-  Eigen::Matrix<S, int(N), 1> f;
-  solve_status status;  // the evaluator's, or not_finite
-};
-
 namespace detail {
-template <class R, class X, class Ev>
-Eigen::Matrix<typename Ev::scalar, 3, 1> in_root(const X& x, const Ev& ev) {
-  return express_in<R>(x, ev).eigen();
-}
-// What each partial velocity v_r of x is at every state: 0 (zero), +-(i + 1) (+-e_Ri of the
-// root R: the sums add a number to one component), or general_column.
-inline constexpr int general_column = 4;
-template <class V>
-constexpr int column_kind() {
-  if constexpr (is_zero_v<V> || is_zero_vector_v<V>)
-    return 0;
-  else if constexpr (root_unit<V>::value)
-    return V::index;
-  else if constexpr (is_vneg<V>::value) {
-    using U = std::remove_cvref_t<decltype(std::declval<const V&>().v)>;
-    if constexpr (root_unit<U>::value)
-      return -U::index;
-    else
-      return general_column;
-  } else
-    return general_column;
-}
-template <class Sp, class X>
-constexpr std::array<int, Sp::n> nonzero_columns() {
-  return []<std::size_t... R>(std::index_sequence<R...>) {
-    return std::array<int, Sp::n>{
-        column_kind<std::remove_cvref_t<decltype(column_of<Sp, R + 1>(std::declval<const X&>()))>>()...};
-  }
-  (std::make_index_sequence<Sp::n>{});
-}
-// The upper triangle of M += a^T b (symmetric: b = W a, W symmetric) over the columns Nz.
-template <auto Nz, class S, int N>
-KANE_ALWAYS_INLINE void add_upper(Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<S, 3, N>& a,
-                                  const Eigen::Matrix<S, 3, N>& b) {
-  static_for<std::size_t(N * N)>([&](auto rc) {
-    constexpr std::size_t r = rc / std::size_t(N), c = rc % std::size_t(N);
-    if constexpr (r <= c && Nz[r] && Nz[c])
-      m(Eigen::Index(r), Eigen::Index(c)) += a(0, Eigen::Index(r)) * b(0, Eigen::Index(c)) +
-                                             a(1, Eigen::Index(r)) * b(1, Eigen::Index(c)) +
-                                             a(2, Eigen::Index(r)) * b(2, Eigen::Index(c));
-  });
-}
-template <class Ev>
-auto speed_rates(const Ev& ev) {  // u' of the evaluator's state
-  using S = typename Ev::scalar;
-  constexpr std::size_t n = speeds_of<Ev>::n;
-  Eigen::Matrix<S, int(n), 1> ud;
-  for (std::size_t r = 0; r < n; ++r)
-    ud(Eigen::Index(r)) = std::is_void_v<typename Ev::speed_set> ? ev.state().qdd[r] : ev.state().ud[r];
-  return ud;
-}
-}  // namespace detail
-
-namespace detail {
-// The columns the equations are written for. Every speed: M and f.
-template <std::size_t N>
-struct all_speeds {
-  static constexpr std::size_t n = N;
-  template <auto Nz>
-  static constexpr std::array<bool, n> nonzero() {
-    std::array<bool, n> out{};
-    for (std::size_t k = 0; k < n; ++k) out[k] = Nz[k] != 0;
-    return out;
-  }
-  template <auto Nz, class V>
-  KANE_ALWAYS_INLINE const V& columns(const V& v) const {
-    return v;
-  }
-  template <auto Nz, class A, class V>
-  KANE_ALWAYS_INLINE void add_bias(A&, const V&) const {}
-};
-// The sums of M and f over the items of Sys.
-template <class Sys, bool RestRates, bool Forcing, class Out, class Ev, class Cols, class Ud>
-KANE_ALWAYS_INLINE void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
-  using S = typename Ev::scalar;
-  using R = typename Ev::root;
-  using Sp = detail::speeds_of<Ev>;
-  constexpr std::size_t n = Cols::n;
-  Eigen::Matrix<S, 3, 1> g = Eigen::Matrix<S, 3, 1>::Zero();
-  [&]<class... X>(detail::list<X...>) {
-    (
-        [&] {
-          if constexpr (Forcing && detail::is_gravity<X>) g += detail::in_root<R>(X::vector, ev);
-        }(),
-        ...);
-  }(typename Sys::items{});
-  // the partial velocities of x along the columns, and x's bias (a0 or alpha0)
-  const auto along = [&](const auto& x, const auto& x_dot, Eigen::Matrix<S, 3, 1>& bias) {
-    constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
-    const auto v = linear_parts_in<R, true, false>(x, ev);
-    if constexpr (Forcing) {
-      bias = detail::in_root<R>(x_dot, ev);
-      if constexpr (!RestRates) bias -= v * ud;
-      cols.template add_bias<nz>(bias, v);
-    }
-    return Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(v));
-  };
-  const auto mass = [&](const auto& point_velocity, const auto& point_acceleration, const auto& m) {
-    Eigen::Matrix<S, 3, 1> a0;
-    const auto v = along(point_velocity, point_acceleration, a0);
-    const Eigen::Matrix<S, 3, int(n)> mv = detail::eval_scalar(m, ev) * v;
-    constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(point_velocity)>>();
-    detail::add_upper<Cols::template nonzero<nz>()>(out.M, v, mv);
-    if constexpr (Forcing) out.f.noalias() += mv.transpose() * (g - a0);
-  };
-  [&]<class... X>(detail::list<X...>) {
-    (
-        [&] {
-          if constexpr (detail::is_particle<X>) {
-            using P = typename X::point;
-            mass(velocity<R, P>(), acceleration<R, P>(), X::mass);
-          } else if constexpr (detail::is_body<X>) {
-            using B = typename X::frame;
-            using P = typename X::centre;
-            mass(velocity<R, P>(), acceleration<R, P>(), X::mass);
-            Eigen::Matrix<S, 3, 1> alpha0;
-            const auto w = along(angular_velocity<R, B>(), angular_acceleration<R, B>(), alpha0);
-            const Eigen::Matrix<S, 3, 3> i = detail::inertia_in_root<typename X::inertia_type>(ev);
-            const Eigen::Matrix<S, 3, int(n)> iw = i * w;
-            constexpr auto nz = detail::nonzero_columns<Sp, decltype(angular_velocity<R, B>())>();
-            detail::add_upper<Cols::template nonzero<nz>()>(out.M, w, iw);
-            if constexpr (Forcing) {
-              const Eigen::Matrix<S, 3, 1> omega = detail::in_root<R>(angular_velocity<R, B>(), ev);
-              out.f.noalias() -= w.transpose() * (i * alpha0 + omega.cross(i * omega));
-            }
-          } else if constexpr (Forcing && detail::is_force<X>) {
-            const auto x = velocity<R, typename X::point>();
-            const auto v = linear_parts_in<R, true, false>(x, ev);
-            constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
-            out.f.noalias() += cols.template columns<nz>(v).transpose() * detail::in_root<R>(X::vector, ev);
-          } else if constexpr (Forcing && detail::is_torque<X>) {
-            const auto x = angular_velocity<R, typename X::frame>();
-            const auto w = linear_parts_in<R, true, false>(x, ev);
-            constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
-            out.f.noalias() += cols.template columns<nz>(w).transpose() * detail::in_root<R>(X::vector, ev);
-          }
-        }(),
-        ...);
-  }(typename Sys::items{});
-}
-// M and f along the columns Cols; RestRates: the caller's state has u' = 0 (the
-// right-hand sides of motion.hpp), so the bias accelerations are the evaluator's
-// (a - v u' would multiply by zeros); without Forcing, M alone (f stays 0: no
-// velocity, acceleration or load is read).
-template <class Sys, bool RestRates, bool Forcing, class Ev, class Cols>
-equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, const Cols& cols) {
-  using S = typename Ev::scalar;
-  using R = typename Ev::root;
-  using Sp = detail::speeds_of<Ev>;
-  constexpr std::size_t n = Cols::n;
-  static_assert(detail::forces_checked<Sys>(typename Sys::items{}));
-  equations_of_motion<S, n> out{Eigen::Matrix<S, int(n), int(n)>::Zero(), Eigen::Matrix<S, int(n), 1>::Zero(),
-                                ev.status()};
-  const auto ud = detail::speed_rates(ev);
-  detail::with_common_subexpressions(system_terms<R, Sp>(typename Sys::items{}), ev, [&](const auto& e) {
-    add_items<Sys, RestRates, Forcing>(out, e, cols, ud);
-  });
-  out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
-  if (out.status == solve_status::ok &&
-      !(detail::all_finite_matrix(out.M) && detail::all_finite_matrix(out.f)))
-    out.status = solve_status::not_finite;
-  return out;
-}
 template <class Sys, class Ev>
 using joint_form_of = joint_form<Sys, typename Ev::root, speeds_of<Ev>>;
 template <class Sys, class Ev>

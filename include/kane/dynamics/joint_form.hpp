@@ -22,6 +22,7 @@
 #include "kane/detail/list.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/dynamics/bodies.hpp"
+#include "kane/dynamics/fixed_vectors.hpp"
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/edges.hpp"
 #include "kane/kinematics/point.hpp"
@@ -29,45 +30,11 @@
 
 namespace kane::detail {
 
-struct no_frame {};     // the zero vector: fixed in every frame
-struct mixed_frame {};  // fixed in no one frame (or not constant)
-
-template <class S>
-inline constexpr bool constant_scalar =
-    std::is_same_v<std::remove_cv_t<decltype(ddt(std::declval<S>()))>, zero_t>;
-
-// The frame a vector expression is fixed in: sums of constants times unit vectors of one frame.
-template <class V>
-struct fixed_frame_of {
-  using type = mixed_frame;
+// The frame a vector is fixed in, void for none.
+template <class F>
+struct frame_or_void {
+  using type = std::conditional_t<std::is_same_v<F, no_frame>, void, F>;
 };
-template <>
-struct fixed_frame_of<zero_vector> {
-  using type = no_frame;
-};
-template <class F, int I>
-struct fixed_frame_of<unit<F, I>> {
-  using type = F;
-};
-template <class S, class V>
-struct fixed_frame_of<scaled<S, V>> {
-  using type = std::conditional_t<constant_scalar<S>, typename fixed_frame_of<V>::type, mixed_frame>;
-};
-template <class V>
-struct fixed_frame_of<vneg<V>> : fixed_frame_of<V> {};
-template <class A, class B>
-struct joined_fixed_frame {
-  using type = std::conditional_t<
-      std::is_same_v<A, no_frame>, B,
-      std::conditional_t<std::is_same_v<B, no_frame> || std::is_same_v<A, B>, A, mixed_frame>>;
-};
-template <class L, class R>
-struct fixed_frame_of<vsum<L, R>>
-    : joined_fixed_frame<typename fixed_frame_of<L>::type, typename fixed_frame_of<R>::type> {};
-template <class L, class R>
-struct fixed_frame_of<vdiff<L, R>>
-    : joined_fixed_frame<typename fixed_frame_of<L>::type, typename fixed_frame_of<R>::type> {};
-
 // The frame the vector from P's predecessor to P is fixed in (no_frame for an origin).
 template <class P>
 struct segment_frame {
@@ -109,28 +76,6 @@ requires(is_body<X> || is_torque<X>) struct item_frame<X> {
   using type = typename X::frame;
 };
 
-// Acc and the nodes above T (Up<T>::type, void above a root) that Acc lacks, ancestors first.
-template <template <class> class Up, class Acc, class T, bool = std::is_void_v<T> || contains<T, Acc>::value>
-struct with_ancestors {
-  using type = Acc;
-};
-template <template <class> class Up, class Acc, class T>
-struct with_ancestors<Up, Acc, T, false> {
-  using above = typename with_ancestors<Up, Acc, typename Up<T>::type>::type;
-  using type = typename concat<above, list<T>>::type;
-};
-// The nodes T... and their ancestors, each once, ancestors first: linear in the nodes times
-// the depth, with recursion no deeper than their number plus the depth.
-template <template <class> class Up, class Acc, class... T>
-struct tree_union {
-  using type = Acc;
-};
-template <template <class> class Up, class Acc, class T, class... Ts>
-struct tree_union<Up, Acc, T, Ts...> : tree_union<Up, typename with_ancestors<Up, Acc, T>::type, Ts...> {};
-template <class F>
-struct frame_up {
-  using type = typename F::tree_parent;
-};
 template <class P>
 struct point_up {
   using type = typename P::from;
@@ -139,24 +84,6 @@ template <class... P>
 struct point_closure : tree_union<point_up, list<>, P...> {};
 template <class... F>
 struct frame_closure : tree_union<frame_up, list<>, F...> {};
-
-template <template <class> class M, class L>
-struct map_items;
-template <template <class> class M, class... T>
-struct map_items<M, list<T...>> {
-  using type = list<typename M<T>::type...>;
-};
-template <template <class...> class M, class L>
-struct apply_list;
-template <template <class...> class M, class... T>
-struct apply_list<M, list<T...>> : M<T...> {};
-template <class L>
-struct not_void;
-template <class... T>
-struct not_void<list<T...>> {
-  using type = typename concat<
-      std::conditional_t<std::is_void_v<T> || std::is_same_v<T, no_frame>, list<>, list<T>>...>::type;
-};
 
 // The kind of the edge above F: 1 + r for a simple rotation by q_r, 0 for a constant edge, -1 else.
 template <class F>
@@ -254,7 +181,9 @@ struct joint_form {
   using frame_list = typename apply_list<
       frame_closure,
       std::conditional_t<fixed_segments,
-                         typename concat<list<R>, item_frames, typename not_void<segment_frames>::type>::type,
+                         typename concat<list<R>, item_frames,
+                                         typename not_void<typename map_items<
+                                             frame_or_void, segment_frames>::type>::type>::type,
                          list<R>>>::type;
   static constexpr std::size_t nf = size<frame_list>::value, np = size<all_points>::value,
                                ni = size<items>::value, n = Sp::n;

@@ -1,0 +1,127 @@
+// The turn of an edge of a system of joint form, E_F (v_P = E_F v_F): for a simple
+// rotation by q about a coordinate axis a, the 2 x 2 block of the other two axes by
+// cos q and sin q from the evaluator's cache (a symmetric matrix's block by cos 2q and
+// sin 2q); else E_F = (^R P^P)(^R P^F)^T from the evaluator's pass.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+
+#include <Eigen/Core>
+
+#include "kane/detail/inline.hpp"
+#include "kane/detail/list.hpp"
+#include "kane/detail/patterned.hpp"
+#include "kane/detail/v3.hpp"
+#include "kane/frames/axis.hpp"
+#include "kane/kinematics/edges.hpp"
+
+namespace kane::detail {
+
+// A symmetric 3 x 3 matrix: 11 22 33 12 23 31.
+template <class S>
+using sym3 = std::array<S, 6>;
+inline constexpr std::size_t sym_at[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
+template <class S>
+KANE_ALWAYS_INLINE v3<S> sym_times(const sym3<S>& i, const v3<S>& k) {
+  return {i[0] * k.x + i[3] * k.y + i[5] * k.z, i[3] * k.x + i[1] * k.y + i[4] * k.z,
+          i[5] * k.x + i[4] * k.y + i[2] * k.z};
+}
+template <int I, class S>
+KANE_ALWAYS_INLINE S& component_ref(v3<S>& v) {
+  return I == 0 ? v.x : I == 1 ? v.y : v.z;
+}
+
+// E about the coordinate axis A (0, 1, 2): the axes B = A + 1, C = A + 2 turn.
+template <class S, int A>
+struct turn {
+  S c, s;
+  static constexpr int b = (A + 1) % 3, d = (A + 2) % 3;
+  KANE_ALWAYS_INLINE v3<S> up(v3<S> v) const {  // E v
+    const S x = component_ref<b>(v), y = component_ref<d>(v);
+    component_ref<b>(v) = c * x - s * y, component_ref<d>(v) = s * x + c * y;
+    return v;
+  }
+  KANE_ALWAYS_INLINE v3<S> down(v3<S> v) const {  // E^T v
+    const S x = component_ref<b>(v), y = component_ref<d>(v);
+    component_ref<b>(v) = c * x + s * y, component_ref<d>(v) = c * y - s * x;
+    return v;
+  }
+  template <std::array<entry, 3> P>  // E^T v, v of pattern P
+  KANE_ALWAYS_INLINE v3<S> down_along(const v3<S>& v) const {
+    if constexpr (P[b] == entry::zero && P[d] == entry::zero)
+      return v;
+    else
+      return down(v);
+  }
+  KANE_ALWAYS_INLINE sym3<S> up(const sym3<S>& i) const {  // E I E^T, through cos 2q and sin 2q
+    constexpr std::size_t bb = sym_at[b][b], dd = sym_at[d][d], bd = sym_at[b][d], ab = sym_at[A][b],
+                          ad = sym_at[A][d];
+    const S c2 = c * c - s * s, s2 = S(2) * c * s, mean = S(0.5) * (i[bb] + i[dd]),
+            diff = S(0.5) * (i[bb] - i[dd]);
+    sym3<S> o = i;
+    o[bb] = mean + diff * c2 - i[bd] * s2, o[dd] = mean - diff * c2 + i[bd] * s2,
+    o[bd] = diff * s2 + i[bd] * c2;
+    o[ab] = c * i[ab] - s * i[ad], o[ad] = s * i[ab] + c * i[ad];
+    return o;
+  }
+};
+// Any other edge: E from the evaluator's axes.
+template <class S>
+struct turn<S, -1> {
+  Eigen::Matrix<S, 3, 3> e;
+  KANE_ALWAYS_INLINE v3<S> up(const v3<S>& v) const {
+    return {e(0, 0) * v.x + e(0, 1) * v.y + e(0, 2) * v.z, e(1, 0) * v.x + e(1, 1) * v.y + e(1, 2) * v.z,
+            e(2, 0) * v.x + e(2, 1) * v.y + e(2, 2) * v.z};
+  }
+  KANE_ALWAYS_INLINE v3<S> down(const v3<S>& v) const {
+    return {e(0, 0) * v.x + e(1, 0) * v.y + e(2, 0) * v.z, e(0, 1) * v.x + e(1, 1) * v.y + e(2, 1) * v.z,
+            e(0, 2) * v.x + e(1, 2) * v.y + e(2, 2) * v.z};
+  }
+  template <std::array<entry, 3> P>
+  KANE_ALWAYS_INLINE v3<S> down_along(const v3<S>& v) const {
+    return down(v);
+  }
+  KANE_ALWAYS_INLINE sym3<S> up(const sym3<S>& i) const {
+    sym3<S> o;
+    static_for<6>([&](auto k) {
+      constexpr std::size_t r = k < 3    ? k
+                                : k == 3 ? 0
+                                : k == 4 ? 1
+                                         : 2,
+                            q = k < 3    ? k
+                                : k == 3 ? 1
+                                : k == 4 ? 2
+                                         : 0;
+      S x = S(0);
+      static_for<9>([&](auto jl) {
+        constexpr std::size_t j = jl / 3, l = jl % 3;
+        x = x + e(Eigen::Index(r), Eigen::Index(j)) * i[sym_at[j][l]] * e(Eigen::Index(q), Eigen::Index(l));
+      });
+      o[k] = x;
+    });
+    return o;
+  }
+};
+
+template <class F>
+constexpr int turn_axis() {
+  if constexpr (requires { F::step::coordinate_index; } && !spin_edge<F> && !matrix_edge<F>) {
+    if constexpr (F::step::coordinate_index != 0) return unit_axis<typename F::step::axis>::principal;
+  }
+  return -1;
+}
+template <class F, class Ev>
+KANE_ALWAYS_INLINE turn<typename Ev::scalar, turn_axis<F>()> make_turn(const Ev& ev) {
+  constexpr int a = turn_axis<F>();
+  if constexpr (a >= 0) {
+    constexpr std::size_t i = F::step::coordinate_index;
+    return {ev.template cos_q<i>(), ev.template sin_q<i>()};
+  } else if constexpr (std::is_void_v<typename F::tree_parent::tree_parent>)
+    return {ev.template axes<F>()};
+  else
+    return {ev.template axes<typename F::tree_parent>().transpose() * ev.template axes<F>()};
+}
+
+}  // namespace kane::detail
