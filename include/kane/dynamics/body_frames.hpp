@@ -51,6 +51,24 @@ constexpr std::array<entry, 3> joint_axis_pattern() {
   }
 }
 
+// Each point's own vector (from its predecessor): pattern, known or not, value if known.
+template <class V>
+constexpr std::array<double, 3> known_or_zero(const V& v) {
+  if constexpr (known_vector<V>())
+    return known_components(v);
+  else
+    return {0, 0, 0};
+}
+template <class PL>
+struct own_facts;
+template <class... P>
+struct own_facts<list<P...>> {
+  static constexpr std::array<std::array<entry, 3>, sizeof...(P)> pattern{
+      own_pattern<std::remove_cv_t<decltype(P::position)>>()...};
+  static constexpr bool known = (known_vector<std::remove_cv_t<decltype(P::position)>>() && ...);
+  static constexpr std::array<std::array<double, 3>, sizeof...(P)> value{known_or_zero(P::position)...};
+};
+
 template <class JF, class Ev, class Frames = typename JF::frame_list>
 struct body_frames;
 template <class JF, class Ev, class... F>
@@ -60,55 +78,40 @@ struct body_frames<JF, Ev, list<F...>> {
   static constexpr auto& t = JF::table;
   static constexpr std::size_t nf = JF::nf, np = JF::np;
 
-  static constexpr auto pos_pattern = []<class... P>(list<P...>) {
+  using own = own_facts<typename JF::all_points>;
+  // The pattern of each point from the origin of its frame, in its components.
+  static constexpr auto pos_pattern = [] {
     std::array<std::array<entry, 3>, np> out{};
-    std::size_t i = 0;
-    (
-        [&] {
-          const int from = t.from[i], g = t.segment[i];
-          constexpr auto own = own_pattern<std::remove_cv_t<decltype(P::position)>>();
-          if (from < 0)
-            out[i] = {entry::zero, entry::zero, entry::zero};
-          else if (g < 0)
-            out[i] = out[std::size_t(from)];
-          else if (from == t.origin[std::size_t(g)])
-            out[i] = own;
-          else
-            for (std::size_t j = 0; j < 3; ++j)
-              out[i][j] = out[std::size_t(from)][j] == entry::zero && own[j] == entry::zero ? entry::zero
-                                                                                            : entry::other;
-          ++i;
-        }(),
-        ...);
+    for (std::size_t i = 0; i < np; ++i) {
+      const int from = t.from[i], g = t.segment[i];
+      if (from < 0)
+        out[i] = {entry::zero, entry::zero, entry::zero};
+      else if (g < 0)
+        out[i] = out[std::size_t(from)];
+      else if (from == t.origin[std::size_t(g)])
+        out[i] = own::pattern[i];
+      else
+        for (std::size_t j = 0; j < 3; ++j)
+          out[i][j] = out[std::size_t(from)][j] == entry::zero && own::pattern[i][j] == entry::zero
+                          ? entry::zero
+                          : entry::other;
+    }
     return out;
-  }(typename JF::all_points{});
-  // Every point's position known at compile time, and the positions.
-  static constexpr bool known_positions = [] {
-    return []<class... P>(list<P...>) {
-      return (known_vector<std::remove_cv_t<decltype(P::position)>>() && ...);
-    }(typename JF::all_points{});
   }();
+  // Every point's position known at compile time, and the positions.
+  static constexpr bool known_positions = own::known;
   static constexpr auto known_pos = [] {
     std::array<std::array<double, 3>, np> out{};
-    if constexpr (known_positions) {
-      std::size_t i = 0;
-      [&]<class... P>(list<P...>) {
-        (
-            [&] {
-              const int from = t.from[i], g = t.segment[i];
-              const auto own = known_components(P::position);
-              if (from < 0)
-                out[i] = {0, 0, 0};
-              else if (g < 0)
-                out[i] = out[std::size_t(from)];
-              else if (from == t.origin[std::size_t(g)])
-                out[i] = own;
-              else
-                for (std::size_t j = 0; j < 3; ++j) out[i][j] = out[std::size_t(from)][j] + own[j];
-              ++i;
-            }(),
-            ...);
-      }(typename JF::all_points{});
+    for (std::size_t i = 0; i < np; ++i) {
+      const int from = t.from[i], g = t.segment[i];
+      if (from < 0)
+        out[i] = {0, 0, 0};
+      else if (g < 0)
+        out[i] = out[std::size_t(from)];
+      else if (from == t.origin[std::size_t(g)])
+        out[i] = own::value[i];
+      else
+        for (std::size_t j = 0; j < 3; ++j) out[i][j] = out[std::size_t(from)][j] + own::value[i][j];
     }
     return out;
   }();

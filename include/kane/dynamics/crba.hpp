@@ -83,50 +83,67 @@ struct composite_inertia {
 
 // The inertia of each frame's own items about its origin, in its components, when every number
 // is known at compile time (literal masses, inertias and positions): composites start from constants.
+template <class X>
+constexpr bool known_item() {
+  if constexpr (is_body<X>) {
+    using I = typename X::inertia_type;
+    using C = std::remove_cvref_t<decltype(I::components)>;
+    return known_scalar<std::remove_cv_t<decltype(X::mass)>>() &&
+           std::is_same_v<typename I::frame, typename X::frame> &&
+           known_scalar<std::tuple_element_t<0, C>>() && known_scalar<std::tuple_element_t<1, C>>() &&
+           known_scalar<std::tuple_element_t<2, C>>() && known_scalar<std::tuple_element_t<3, C>>() &&
+           known_scalar<std::tuple_element_t<4, C>>() && known_scalar<std::tuple_element_t<5, C>>();
+  } else if constexpr (is_particle<X>)
+    return known_scalar<std::remove_cv_t<decltype(X::mass)>>();
+  else
+    return true;
+}
+// m and I_C (11 22 33 12 23 31) of a particle or a body known at compile time; m = -1 for
+// other items
+template <class X>
+constexpr std::array<double, 7> known_mass() {
+  if constexpr ((is_particle<X> || is_body<X>)&&known_item<X>()) {
+    std::array<double, 7> out{known_value(X::mass)};
+    if constexpr (is_body<X>) {
+      constexpr auto c = X::inertia_type::components;
+      out = {out[0],
+             known_value(std::get<0>(c)),
+             known_value(std::get<1>(c)),
+             known_value(std::get<2>(c)),
+             known_value(std::get<3>(c)),
+             known_value(std::get<4>(c)),
+             known_value(std::get<5>(c))};
+    }
+    return out;
+  } else
+    return {-1, 0, 0, 0, 0, 0, 0};
+}
+template <class XL>
+struct mass_facts;
+template <class... X>
+struct mass_facts<list<X...>> {
+  static constexpr bool known = (known_item<X>() && ...);
+  static constexpr std::array<std::array<double, 7>, sizeof...(X)> value{known_mass<X>()...};
+};
 template <class JF, class Sys, class BF>
 struct known_inertias {
   static constexpr auto& t = JF::table;
-  template <class X>
-  static constexpr bool known_item() {
-    if constexpr (is_body<X>) {
-      using I = typename X::inertia_type;
-      return known_scalar<std::remove_cv_t<decltype(X::mass)>>() &&
-             std::is_same_v<typename I::frame, typename X::frame> && []<class... C>(std::tuple<C...>*) {
-               return (known_scalar<std::remove_cv_t<C>>() && ...);
-             }(static_cast<std::remove_cvref_t<decltype(I::components)>*>(nullptr));
-    } else if constexpr (is_particle<X>)
-      return known_scalar<std::remove_cv_t<decltype(X::mass)>>();
-    else
-      return true;
-  }
-  static constexpr bool value = BF::known_positions && []<class... X>(list<X...>) {
-    return (known_item<X>() && ...);
-  }(typename Sys::items{});
+  using masses = mass_facts<typename Sys::items>;
+  static constexpr bool value = BF::known_positions && masses::known;
   static constexpr auto own = [] {
     std::array<composite_inertia<double>, JF::nf> out{};
-    if constexpr (value) {
-      for (auto& x : out) x = {0, {0, 0, 0}, {0, 0, 0, 0, 0, 0}};
-      [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) {
-        (
-            [&] {
-              constexpr int f = t.item_frame[I];
-              if constexpr ((is_particle<X> || is_body<X>)&&f > 0) {
-                const double m = known_value(X::mass);
-                const auto c = BF::known_local(t.item_point[I], f);
-                std::array<double, 6> ic{};
-                if constexpr (is_body<X>)
-                  static_for<6>(
-                      [&](auto k) { ic[k] = known_value(std::get<k>(X::inertia_type::components)); });
-                composite_inertia<double>& o = out[std::size_t(f)];
-                o.mass += m, o.h = {o.h.x + m * c[0], o.h.y + m * c[1], o.h.z + m * c[2]};
-                o.i[0] += ic[0] + m * (c[1] * c[1] + c[2] * c[2]),
-                    o.i[1] += ic[1] + m * (c[2] * c[2] + c[0] * c[0]);
-                o.i[2] += ic[2] + m * (c[0] * c[0] + c[1] * c[1]), o.i[3] += ic[3] - m * c[0] * c[1];
-                o.i[4] += ic[4] - m * c[1] * c[2], o.i[5] += ic[5] - m * c[2] * c[0];
-              }
-            }(),
-            ...);
-      }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
+    for (auto& x : out) x = {0, {0, 0, 0}, {0, 0, 0, 0, 0, 0}};
+    for (std::size_t k = 0; k < masses::value.size(); ++k) {
+      const int f = t.item_frame[k];
+      const auto& mi = masses::value[k];
+      if (!value || f <= 0 || mi[0] < 0) continue;
+      const double m = mi[0];
+      const auto c = BF::known_local(t.item_point[k], f);
+      composite_inertia<double>& o = out[std::size_t(f)];
+      o.mass += m, o.h = {o.h.x + m * c[0], o.h.y + m * c[1], o.h.z + m * c[2]};
+      o.i[0] += mi[1] + m * (c[1] * c[1] + c[2] * c[2]), o.i[1] += mi[2] + m * (c[2] * c[2] + c[0] * c[0]);
+      o.i[2] += mi[3] + m * (c[0] * c[0] + c[1] * c[1]), o.i[3] += mi[4] - m * c[0] * c[1];
+      o.i[4] += mi[5] - m * c[1] * c[2], o.i[5] += mi[6] - m * c[2] * c[0];
     }
     return out;
   }();

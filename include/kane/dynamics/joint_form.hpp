@@ -168,15 +168,64 @@ constexpr bool local_origins(T& t) {
   }
   return ok;
 }
+// Facts of the frames, points and items, one array each (pack expansions, no loops over types).
+template <class P, class Points>
+constexpr int from_index() {
+  if constexpr (requires { typename P::fixed_frame; })
+    return -1;
+  else
+    return index_in<typename P::from>(Points{});
+}
+template <class P, class R>
+constexpr bool origin_of() {  // an origin fixed in R, or no origin
+  if constexpr (requires { typename P::fixed_frame; })
+    return std::is_same_v<typename P::fixed_frame, R>;
+  else
+    return true;
+}
+template <class T, class L>
+constexpr int index_or_none() {
+  if constexpr (std::is_void_v<T> || std::is_same_v<T, no_frame> || std::is_same_v<T, mixed_frame>)
+    return -1;
+  else
+    return index_in<T>(L{});
+}
+template <class FL>
+struct frame_facts;
+template <class... F>
+struct frame_facts<list<F...>> {
+  static constexpr std::array<int, sizeof...(F)> parent{
+      index_or_none<typename F::tree_parent, list<F...>>()...};
+  static constexpr std::array<int, sizeof...(F)> kind{edge_kind<F>()...};
+};
+template <class PL, class FL, class R>
+struct point_facts;
+template <class... P, class FL, class R>
+struct point_facts<list<P...>, FL, R> {
+  static constexpr std::array<int, sizeof...(P)> from{from_index<P, list<P...>>()...};
+  static constexpr std::array<bool, sizeof...(P)> origin{origin_of<P, R>()...};
+  static constexpr std::array<int, sizeof...(P)> segment{
+      index_or_none<typename segment_frame<P>::type, FL>()...};
+};
+template <class XL, class PL, class FL>
+struct item_facts;
+template <class... X, class PL, class FL>
+struct item_facts<list<X...>, PL, FL> {
+  static constexpr std::array<int, sizeof...(X)> point{index_or_none<typename item_point<X>::type, PL>()...};
+  static constexpr std::array<int, sizeof...(X)> frame{index_or_none<typename item_frame<X>::type, FL>()...};
+};
+template <class... G>
+constexpr bool none_mixed(list<G...>) {
+  return (!std::is_same_v<G, mixed_frame> && ...);
+}
+
 template <class Sys, class R, class Sp>
 struct joint_form {
   using items = typename Sys::items;
   using points = typename not_void<typename map_items<item_point, items>::type>::type;
   using all_points = typename apply_list<point_closure, points>::type;
   using segment_frames = typename map_items<segment_frame, all_points>::type;
-  static constexpr bool fixed_segments = []<class... G>(list<G...>) {
-    return (!std::is_same_v<G, mixed_frame> && ...);
-  }(segment_frames{});
+  static constexpr bool fixed_segments = none_mixed(segment_frames{});
   using item_frames = typename not_void<typename map_items<item_frame, items>::type>::type;
   using frame_list = typename apply_list<
       frame_closure,
@@ -193,37 +242,24 @@ struct joint_form {
     if constexpr (!fixed_segments || !std::is_same_v<Sp, qdot_speeds<n>>)
       return t;
     else {
+      using frames = frame_facts<frame_list>;
+      using pts = point_facts<all_points, frame_list, R>;
+      using its = item_facts<items, all_points, frame_list>;
       bool ok = true;
       std::array<int, n> edges{};
-      [&]<class... F>(list<F...>) {
-        std::size_t i = 0;
-        (
-            [&] {
-              constexpr int kind = edge_kind<F>();
-              t.parent[i] = index_in<typename F::tree_parent>(frame_list{});
-              t.depth[i] = i == 0 ? 0 : t.depth[std::size_t(t.parent[i])] + 1;
-              t.speed[i] = kind - 1;
-              ok = ok && kind >= 0 && kind <= int(n) && (i == 0) == std::is_void_v<typename F::tree_parent>;
-              if (kind > 0) ++edges[std::size_t(kind - 1)], t.joint_frame[std::size_t(kind - 1)] = int(i);
-              ++i;
-            }(),
-            ...);
-      }(frame_list{});
+      for (std::size_t i = 0; i < nf; ++i) {
+        const int kind = frames::kind[i];
+        t.parent[i] = frames::parent[i];
+        t.depth[i] = i == 0 ? 0 : t.depth[std::size_t(t.parent[i])] + 1;
+        t.speed[i] = kind - 1;
+        ok = ok && kind >= 0 && kind <= int(n) && (i == 0) == (t.parent[i] < 0);
+        if (kind > 0) ++edges[std::size_t(kind - 1)], t.joint_frame[std::size_t(kind - 1)] = int(i);
+      }
       for (int e : edges) ok = ok && e == 1;
-      [&]<class... P>(list<P...>) {
-        std::size_t i = 0;
-        (
-            [&] {
-              if constexpr (requires { typename P::fixed_frame; })  // one origin, fixed in R
-                ok = ok && i == 0 && std::is_same_v<typename P::fixed_frame, R>, t.from[i] = -1;
-              else
-                t.from[i] = index_in<typename P::from>(all_points{});
-              using G = typename segment_frame<P>::type;
-              t.segment[i] = std::is_same_v<G, no_frame> ? -1 : index_in<G>(frame_list{});
-              ++i;
-            }(),
-            ...);
-      }(all_points{});
+      for (std::size_t i = 0; i < np; ++i) {  // one origin, fixed in R
+        t.from[i] = pts::from[i], t.segment[i] = pts::segment[i];
+        ok = ok && pts::origin[i] && (t.from[i] >= 0 || i == 0);
+      }
       if (!ok) return t;
       // the frames of each chain down one path: attach is the deepest
       for (std::size_t p = 0; p < np; ++p) {
@@ -231,42 +267,24 @@ struct joint_form {
         ok = ok && (g < 0 || t.below(g, f));
         t.attach[p] = g < 0 ? f : g;
       }
-      [&]<class... X>(list<X...>) {
-        std::size_t i = 0;
-        (
-            [&] {
-              using P = typename item_point<X>::type;
-              using F = typename item_frame<X>::type;
-              const int p = std::is_void_v<P> ? -1 : index_in<P>(all_points{});
-              const int f = std::is_void_v<F> ? -1 : index_in<F>(frame_list{});
-              t.item_frame[i] = f >= 0 ? f : p >= 0 ? t.attach[std::size_t(p)] : -1;
-              t.item_point[i] = p;
-              if (f >= 0 && p >= 0) ok = ok && t.below(f, t.attach[std::size_t(p)]);  // a body's centre
-              ++i;
-            }(),
-            ...);
-      }(items{});
+      for (std::size_t i = 0; i < ni; ++i) {
+        const int p = its::point[i], f = its::frame[i];
+        t.item_frame[i] = f >= 0 ? f : p >= 0 ? t.attach[std::size_t(p)] : -1;
+        t.item_point[i] = p;
+        if (f >= 0 && p >= 0) ok = ok && t.below(f, t.attach[std::size_t(p)]);  // a body's centre
+      }
       // one joint point X_r for every item below the edge of u_r
       for (std::size_t r = 0; r < n && ok; ++r) {
         const int g = t.joint_frame[r];
         int x = -1;
-        [&]<class... X>(list<X...>) {
-          std::size_t i = 0;
-          (
-              [&] {
-                using P = typename item_point<X>::type;
-                if constexpr (!std::is_void_v<P>) {
-                  const int p = index_in<P>(all_points{}), f = t.item_frame[i];
-                  if (f >= 0 && t.below(f, g)) {
-                    const int y = t.joint_of(p, g);
-                    ok = ok && (x < 0 || x == y);
-                    x = y;
-                  }
-                }
-                ++i;
-              }(),
-              ...);
-        }(items{});
+        for (std::size_t i = 0; i < ni; ++i) {
+          const int p = t.item_point[i], f = t.item_frame[i];
+          if (p >= 0 && f >= 0 && t.below(f, g)) {
+            const int y = t.joint_of(p, g);
+            ok = ok && (x < 0 || x == y);
+            x = y;
+          }
+        }
         t.joint_point[r] = x;
         int a = t.parent[std::size_t(g)];
         while (a >= 0 && t.speed[std::size_t(a)] < 0) a = t.parent[std::size_t(a)];

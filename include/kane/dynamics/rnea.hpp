@@ -36,25 +36,27 @@ KANE_ALWAYS_INLINE typename Ev::scalar joint_rate(const Ev& ev, std::size_t r) {
 
 // -g, the acceleration of the root that stands for gravity, and its pattern: the sum of the
 // system's gravity vectors, in the root's components.
-template <class Sys, class R>
-constexpr std::array<entry, 3> base_pattern() {
-  return []<class... X>(list<X...>) {
-    std::array<entry, 3> out{entry::zero, entry::zero, entry::zero};
-    (
-        [&] {
-          if constexpr (is_gravity<X>) {
-            using V = std::remove_cv_t<decltype(X::vector)>;
-            using F = typename fixed_frame_of<V>::type;
-            constexpr auto p = std::is_same_v<F, R> || std::is_same_v<F, no_frame>
-                                   ? own_pattern<V>()
-                                   : std::array<entry, 3>{entry::other, entry::other, entry::other};
-            for (std::size_t i = 0; i < 3; ++i)
-              if (p[i] != entry::zero) out[i] = entry::other;
-          }
-        }(),
-        ...);
-    return out;
-  }(typename Sys::items{});
+template <class X, class R>
+constexpr std::array<entry, 3> gravity_pattern() {
+  if constexpr (!is_gravity<X>)
+    return {entry::zero, entry::zero, entry::zero};
+  else {
+    using V = std::remove_cv_t<decltype(X::vector)>;
+    using F = typename fixed_frame_of<V>::type;
+    if constexpr (std::is_same_v<F, R> || std::is_same_v<F, no_frame>)
+      return scaled_pattern(own_pattern<V>());
+    else
+      return {entry::other, entry::other, entry::other};
+  }
+}
+template <class R, class... X>
+constexpr std::array<entry, 3> base_pattern(list<X...>) {
+  std::array<entry, 3> out{entry::zero, entry::zero, entry::zero};
+  for (const auto& p :
+       {std::array<entry, 3>{entry::zero, entry::zero, entry::zero}, gravity_pattern<X, R>()...})
+    for (std::size_t i = 0; i < 3; ++i)
+      if (p[i] != entry::zero) out[i] = entry::other;
+  return out;
 }
 template <class Sys, class R, class Ev>
 KANE_ALWAYS_INLINE v3<typename Ev::scalar> base_acceleration(const Ev& ev) {
@@ -80,7 +82,7 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
   const vec zero{S(0), S(0), S(0)};
   std::array<vec, nf> w, alpha, a, n, f;
   w[0] = zero, alpha[0] = zero;
-  constexpr auto G = base_pattern<Sys, frame_at<JF, 0>>();
+  constexpr auto G = base_pattern<frame_at<JF, 0>>(typename Sys::items{});
   a[0] = base_acceleration<Sys, frame_at<JF, 0>>(ev);
   using BF = body_frames<JF, Ev>;
   using known = known_inertias<JF, Sys, BF>;
@@ -161,7 +163,7 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
     static_for<nf - 1>([&](auto i) {  // f = m a + alpha x h + w x (w x h), n = J alpha + w x J w + h x a
       constexpr std::size_t g = i + 1;
       constexpr composite_inertia<double> o = known::own[g];
-      if constexpr (o.mass != 0) {
+      if constexpr (o.mass != 0 || o.h.x != 0 || o.h.y != 0 || o.h.z != 0 || o.i != std::array<double, 6>{}) {
         const vec h{S(o.h.x), S(o.h.y), S(o.h.z)};
         const sym3<S> jo{S(o.i[0]), S(o.i[1]), S(o.i[2]), S(o.i[3]), S(o.i[4]), S(o.i[5])};
         constexpr std::array<entry, 3> H = {
