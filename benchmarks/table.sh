@@ -15,7 +15,7 @@ csv=$(mktemp)
 for p in "${presets[@]}"; do
   cmake --preset "$p" >/dev/null
   cmake --build --preset "$p" >/dev/null
-  for b in arm6 chain disc fourbar quaternion dynamics6 disc_dynamics bicycle; do
+  for b in arm6 chain disc fourbar quaternion dynamics6 disc_dynamics bicycle chain_dynamics; do
     "./build/$p/benchmarks/bench_$b" --benchmark_repetitions=$reps --benchmark_format=csv 2>/dev/null |
       grep '^"' | grep -Ev '_(mean|median|stddev|cv)"' | sed "s/^/$p,/"
   done

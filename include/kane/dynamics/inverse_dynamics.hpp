@@ -52,16 +52,17 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> inverse_at(const Ev& ev) {
   return {tau, status};
 }
 
-// Above this many speeds u' comes from articulated bodies (aba.hpp), below from M and a
-// Cholesky factorization: on a spatial chain with full inertias (benchmarks/chain_dynamics) the
-// two take the same time at 24 speeds; at 12 M costs 0.7x, at 48 articulated bodies 0.6x.
+// Above this many speeds u' of numbers comes from articulated bodies (aba.hpp), below (and for
+// jets) from M and a Cholesky factorization: on a spatial chain with full inertias
+// (benchmarks/chain_dynamics) the two take the same time at 24 speeds; at 12 M costs 0.7x, at 48
+// articulated bodies 0.6x.
 inline constexpr std::size_t articulated_above = 20;
 // u' = M^-1 f; RestRates: the state's u' is 0 (as in motion.hpp).
 template <class Sys, bool RestRates, class Ev>
 speed_values<typename Ev::scalar, speeds_of<Ev>::n> forward_at(const Ev& ev) {
   using S = typename Ev::scalar;
   constexpr std::size_t n = speeds_of<Ev>::n;
-  if constexpr (recursive_form<Sys, Ev> && (n > articulated_above)) {
+  if constexpr (recursive_form<Sys, Ev> && (n > articulated_above) && std::is_floating_point_v<S>) {
     static_assert(forces_checked<Sys>(typename Sys::items{}));
     using JF = joint_form_of<Sys, Ev>;
     Eigen::Matrix<S, int(n), 1> ud;
