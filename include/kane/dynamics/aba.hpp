@@ -78,7 +78,7 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
   using S = typename Ev::scalar;
   using vec = v3<S>;
   using BF = body_frames<JF, Ev>;
-  constexpr auto& t = JF::table;
+  static constexpr auto& t = JF::table;
   constexpr std::size_t nf = JF::nf, n = JF::n;
   const vec zero{S(0), S(0), S(0)};
   std::array<vec, nf> w, v, cw, cv;

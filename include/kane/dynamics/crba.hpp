@@ -171,7 +171,7 @@ using frame_at = typename at<typename JF::frame_list, F>::type;
 // The force (n about o_F, f) in F's components carried to the frames above F: M_rs = k_r . n there.
 template <class JF, std::size_t F, class BF, class S, class Out>
 KANE_ALWAYS_INLINE void column_up(const BF& bf, v3<S> n, v3<S> f, Out& M, Eigen::Index s) {
-  constexpr auto& t = JF::table;
+  static constexpr auto& t = JF::table;
   constexpr int p = t.parent[F];
   if constexpr (p > 0) {
     const auto& e = std::get<F>(bf.e);
@@ -202,7 +202,7 @@ struct root_screws {
   std::array<v3<S>, JF::n> k, m;     // S_r = (k_r, o_r x k_r)
 
   KANE_ALWAYS_INLINE root_screws(const body_frames<JF, Ev>& bf, const Ev& ev) {
-    constexpr auto& t = JF::table;
+    static constexpr auto& t = JF::table;
     origin[0] = {S(0), S(0), S(0)};
     static_for<JF::nf - 1>([&](auto i) {
       constexpr std::size_t f = i + 1, p = std::size_t(t.parent[f]);
@@ -247,7 +247,7 @@ template <class JF, class Sys, class Ev, class Out>
 KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, const Ev& ev, Out& M) {
   using S = typename Ev::scalar;
   using vec = v3<S>;
-  constexpr auto& t = JF::table;
+  static constexpr auto& t = JF::table;
   constexpr std::size_t nf = JF::nf;
   std::array<composite_inertia<S>, nf> c;
   using known = known_inertias<JF, Sys, body_frames<JF, Ev>>;

@@ -77,7 +77,7 @@ template <bool Rest, class JF, class Sys, class Ev, class Out>
 KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev, Out& tau) {
   using S = typename Ev::scalar;
   using vec = v3<S>;
-  constexpr auto& t = JF::table;
+  static constexpr auto& t = JF::table;
   constexpr std::size_t nf = JF::nf;
   const vec zero{S(0), S(0), S(0)};
   std::array<vec, nf> w, alpha, a, n, f;
