@@ -131,6 +131,17 @@ struct body_frames<JF, Ev, list<F...>> {
     return pos_pattern[std::size_t(p)];
   }
 
+  // The pattern of E_F v, v of pattern p
+  static constexpr std::array<entry, 3> turned_pattern(std::size_t f, const std::array<entry, 3>& p) {
+    constexpr std::array<int, nf> axis{turn_axis<F>()...};
+    if (axis[f] < 0) return all_zero(p) ? p : std::array<entry, 3>{entry::other, entry::other, entry::other};
+    const auto a = std::size_t(axis[f]), b = (a + 1) % 3, d = (a + 2) % 3;
+    std::array<entry, 3> out = p;
+    if (p[b] != entry::zero || p[d] != entry::zero) out[b] = out[d] = entry::other;
+    if (p[a] != entry::zero) out[a] = entry::other;
+    return out;
+  }
+
   std::tuple<turn<S, turn_axis<F>()>...> e;  // e[0], the root's, unused
   std::array<vec, np> pos;                   // P from o of its frame, in its components
   std::array<vec, nf> offset;                // t_F

@@ -52,13 +52,16 @@ struct composite_inertia {
   }
   // o's inertia, turned by E and moved by t (of pattern T):
   // I += E I E^T + (2 t.h' + m |t|^2) 1 - (t h' + h' t) - m t t, h += h' + m t
-  template <std::array<entry, 3> T, class Turn>
+  // (o.h of pattern H)
+  template <std::array<entry, 3> T, std::array<entry, 3> H, class Turn>
   KANE_ALWAYS_INLINE void add(const composite_inertia& o, const Turn& e, const v3<S>& t) {
-    const v3<S> h1 = e.up(o.h);
+    constexpr auto h1p = Turn::turned(H);
+    const v3<S> h1 = e.template up_along<H>(o.h);
     const sym3<S> i1 = e.up(o.i);
     mass = mass + o.mass;
     for (std::size_t k = 0; k < 6; ++k) i[k] = i[k] + i1[k];
-    h = h + h1;
+    h = {plus_product<entry::one, h1p[0]>(h.x, S(1), h1.x), plus_product<entry::one, h1p[1]>(h.y, S(1), h1.y),
+         plus_product<entry::one, h1p[2]>(h.z, S(1), h1.z)};
     if constexpr (!all_zero(T)) {
       constexpr auto mp = scaled_pattern(T);
       const v3<S> mt{product<entry::other, T[0]>(o.mass, t.x), product<entry::other, T[1]>(o.mass, t.y),
@@ -147,6 +150,27 @@ struct known_inertias {
     }
     return out;
   }();
+  // The pattern of each frame's composite first moment h (all other where not known).
+  static constexpr auto h_pattern = [] {
+    std::array<std::array<entry, 3>, JF::nf> out{};
+    for (std::size_t f = 0; f < JF::nf; ++f)
+      out[f] = value ? std::array<entry, 3>{own[f].h.x == 0 ? entry::zero : entry::other,
+                                            own[f].h.y == 0 ? entry::zero : entry::other,
+                                            own[f].h.z == 0 ? entry::zero : entry::other}
+                     : std::array<entry, 3>{entry::other, entry::other, entry::other};
+    std::array<double, JF::nf> mass{};
+    for (std::size_t f = 0; f < JF::nf; ++f) mass[f] = value ? own[f].mass : 1;
+    for (std::size_t f = JF::nf - 1; f > 0; --f) {  // leaves first
+      const int p = t.parent[f];
+      if (p <= 0) continue;
+      const auto turned = BF::turned_pattern(f, out[f]), offset = BF::offset_pattern(f);
+      for (std::size_t i = 0; i < 3; ++i)
+        if (turned[i] != entry::zero || (mass[f] != 0 && offset[i] != entry::zero))
+          out[std::size_t(p)][i] = entry::other;
+      mass[std::size_t(p)] += mass[f];
+    }
+    return out;
+  }();
 };
 
 // The inertia of body X about its centre in the components of its frame.
@@ -168,24 +192,39 @@ KANE_ALWAYS_INLINE sym3<typename Ev::scalar> body_inertia(const Ev& ev) {
 template <class JF, std::size_t F>
 using frame_at = typename at<typename JF::frame_list, F>::type;
 
-// The force (n about o_F, f) in F's components carried to the frames above F: M_rs = k_r . n there.
-template <class JF, std::size_t F, class BF, class S, class Out>
+// The pattern of k x h
+constexpr std::array<entry, 3> crossed(const std::array<entry, 3>& k, const std::array<entry, 3>& h) {
+  std::array<entry, 3> out{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::size_t a = (i + 1) % 3, b = (i + 2) % 3;
+    const bool x =
+        (k[a] != entry::zero && h[b] != entry::zero) || (k[b] != entry::zero && h[a] != entry::zero);
+    out[i] = x ? entry::other : entry::zero;
+  }
+  return out;
+}
+
+// The force (n about o_F, f of pattern P) in F's components carried to the frames above F:
+// M_rs = k_r . n there.
+template <class JF, std::size_t F, std::array<entry, 3> P, class BF, class S, class Out>
 KANE_ALWAYS_INLINE void column_up(const BF& bf, v3<S> n, v3<S> f, Out& M, Eigen::Index s) {
   static constexpr auto& t = JF::table;
   constexpr int p = t.parent[F];
   if constexpr (p > 0) {
     const auto& e = std::get<F>(bf.e);
     constexpr auto T = BF::offset_pattern(F);
-    f = e.up(f);
     n = e.up(n);
-    if constexpr (!all_zero(T)) n = n + cross_from<T>(bf.offset[F], f);
+    if constexpr (!all_zero(P)) {
+      f = e.template up_along<P>(f);
+      if constexpr (!all_zero(T)) n = n + cross_from<T>(bf.offset[F], f);
+    }
     constexpr int r = t.speed[std::size_t(p)];
     if constexpr (r >= 0) {
-      using P = frame_at<JF, std::size_t(p)>;
-      const S x = dot_along<joint_axis_pattern<P>()>(n, joint_axis_in_frame<P, S>());
+      using R = frame_at<JF, std::size_t(p)>;
+      const S x = dot_along<joint_axis_pattern<R>()>(n, joint_axis_in_frame<R, S>());
       M(Eigen::Index(r), s) = x, M(s, Eigen::Index(r)) = x;
     }
-    column_up<JF, std::size_t(p)>(bf, n, f, M, s);
+    column_up<JF, std::size_t(p), BF::turned_pattern(F, P)>(bf, n, f, M, s);
   }
 }
 
@@ -278,12 +317,6 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
           ...);
     }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
   }
-  static_for<nf - 1>([&](auto j) {  // leaves first
-    constexpr std::size_t f = nf - 1 - j;
-    if constexpr (t.parent[f] > 0)
-      c[std::size_t(t.parent[f])].template add<body_frames<JF, Ev>::offset_pattern(f)>(
-          c[f], std::get<f>(bf.e), bf.offset[f]);
-  });
   if constexpr (!on_one_path(t)) M.setZero();  // entries off the tree's paths
   constexpr bool loop = JF::n > unrolled_columns;
   [[maybe_unused]] const auto screws = [&] {
@@ -292,25 +325,31 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
     else
       return 0;
   }();
-  static_for<JF::n>([&](auto s) {
-    constexpr std::size_t f = std::size_t(t.joint_frame[s]);
-    using F = frame_at<JF, f>;
-    constexpr auto K = joint_axis_pattern<F>();
-    const vec k = joint_axis_in_frame<F, S>();
+  static_for<nf - 1>([&](auto j) {  // leaves first: c[f] is complete, its column, then into its parent
+    constexpr std::size_t f = nf - 1 - j;
+    constexpr int s = t.speed[f];
     const composite_inertia<S>& x = c[f];
-    const vec n = symmetric_along<K>(x.i, k);
-    M(Eigen::Index(s), Eigen::Index(s)) = dot_along<K>(n, k);
-    if constexpr (!loop)
-      column_up<JF, f>(bf, n, cross_from<K>(k, x.h), M, Eigen::Index(s));
-    else if constexpr (t.parent_speed[s] >= 0) {
-      using R = root_screws<JF, Ev>;
-      const vec fw = R::template to_root<F>(cross_from<K>(k, x.h), ev);
-      const vec nw = R::template to_root<F>(n, ev) + cross3(screws.origin[f], fw);
-      for (int r = t.parent_speed[s]; r >= 0; r = t.parent_speed[std::size_t(r)]) {
-        const S e = dot3(screws.k[std::size_t(r)], nw) + dot3(screws.m[std::size_t(r)], fw);
-        M(Eigen::Index(r), Eigen::Index(s)) = e, M(Eigen::Index(s), Eigen::Index(r)) = e;
+    if constexpr (s >= 0) {
+      using F = frame_at<JF, f>;
+      constexpr auto K = joint_axis_pattern<F>();
+      const vec k = joint_axis_in_frame<F, S>();
+      const vec n = symmetric_along<K>(x.i, k);
+      M(Eigen::Index(s), Eigen::Index(s)) = dot_along<K>(n, k);
+      if constexpr (!loop)
+        column_up<JF, f, crossed(K, known::h_pattern[f])>(bf, n, cross_from<K>(k, x.h), M, Eigen::Index(s));
+      else if constexpr (t.parent_speed[std::size_t(s)] >= 0) {
+        using R = root_screws<JF, Ev>;
+        const vec fw = R::template to_root<F>(cross_from<K>(k, x.h), ev);
+        const vec nw = R::template to_root<F>(n, ev) + cross3(screws.origin[f], fw);
+        for (int r = t.parent_speed[std::size_t(s)]; r >= 0; r = t.parent_speed[std::size_t(r)]) {
+          const S e = dot3(screws.k[std::size_t(r)], nw) + dot3(screws.m[std::size_t(r)], fw);
+          M(Eigen::Index(r), Eigen::Index(s)) = e, M(Eigen::Index(s), Eigen::Index(r)) = e;
+        }
       }
     }
+    if constexpr (t.parent[f] > 0)
+      c[std::size_t(t.parent[f])].template add<body_frames<JF, Ev>::offset_pattern(f), known::h_pattern[f]>(
+          x, std::get<f>(bf.e), bf.offset[f]);
   });
 }
 

@@ -55,6 +55,19 @@ struct turn {
     else
       return down(v);
   }
+  template <std::array<entry, 3> P>  // E v
+  KANE_ALWAYS_INLINE v3<S> up_along(const v3<S>& v) const {
+    if constexpr (P[b] == entry::zero && P[d] == entry::zero)
+      return v;
+    else
+      return up(v);
+  }
+  // The pattern of E v
+  static constexpr std::array<entry, 3> turned(std::array<entry, 3> p) {
+    if (p[b] != entry::zero || p[d] != entry::zero) p[b] = p[d] = entry::other;
+    if (p[A] != entry::zero) p[A] = entry::other;
+    return p;
+  }
   KANE_ALWAYS_INLINE sym3<S> up(const sym3<S>& i) const {  // E I E^T, through cos 2q and sin 2q
     constexpr std::size_t bb = sym_at[b][b], dd = sym_at[d][d], bd = sym_at[b][d], ab = sym_at[A][b],
                           ad = sym_at[A][d];
@@ -82,6 +95,13 @@ struct turn<S, -1> {
   template <std::array<entry, 3> P>
   KANE_ALWAYS_INLINE v3<S> down_along(const v3<S>& v) const {
     return down(v);
+  }
+  template <std::array<entry, 3> P>
+  KANE_ALWAYS_INLINE v3<S> up_along(const v3<S>& v) const {
+    return up(v);
+  }
+  static constexpr std::array<entry, 3> turned(const std::array<entry, 3>& p) {
+    return all_zero(p) ? p : std::array<entry, 3>{entry::other, entry::other, entry::other};
   }
   KANE_ALWAYS_INLINE sym3<S> up(const sym3<S>& i) const {
     sym3<S> o;
