@@ -41,8 +41,11 @@ void chain_dynamics::kdl_forward(const input& in, output& out) {
   m.dyn.JntToMass(m.q, m.M);
   m.dyn.JntToCoriolis(m.q, m.qd, m.coriolis);
   m.dyn.JntToGravity(m.q, m.gravity);
-  m.h = m.coriolis.data + m.gravity.data;
-  m.llt.compute(m.M.data);
+  // KDL's matrices, allocated by libkdl with its own alignment, read through unaligned maps (with
+  // -march=native, Eigen in this unit assumes wider alignment than libkdl's allocations have)
+  using vector = Eigen::Map<const Eigen::VectorXd, Eigen::Unaligned>;
+  m.h = vector(m.coriolis.data.data(), N) + vector(m.gravity.data.data(), N);
+  m.llt.compute(Eigen::Map<const Eigen::MatrixXd, Eigen::Unaligned>(m.M.data.data(), N, N));
   m.llt.solveInPlace(m.h);  // no allocation
   Eigen::Map<Eigen::Matrix<double, int(N), 1>>(out.qdd) = -m.h;
 }
