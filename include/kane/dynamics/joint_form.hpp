@@ -10,9 +10,8 @@
 //   w_r = k_r,   v_r(P) = k_r x (P - X_r) = k_r x P + X_r x k_r,
 // with X_r the point of the chain where its vectors below the edge begin;
 // when every item below the edge has the same X_r, the partial velocities of
-// u_r are one screw S_r = (k_r, X_r x k_r): the composite-body sums hold.
-// The tables are constexpr arrays over the frames and points (indices, not
-// types), so their cost grows like the model, not like its square.
+// u_r are one screw S_r = (k_r, X_r x k_r): the composite-body sums hold. The tables
+// are constexpr arrays of indices, so their cost grows like the model, not its square.
 #pragma once
 
 #include <array>
@@ -168,7 +167,7 @@ constexpr bool local_origins(T& t) {
   }
   return ok;
 }
-// Facts of the frames, points and items, one array each (pack expansions, no loops over types).
+// Facts of the frames, points and items: arrays filled by pack expansions.
 template <class P, class Points>
 constexpr int from_index() {
   if constexpr (requires { typename P::fixed_frame; })
