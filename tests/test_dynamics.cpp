@@ -1,6 +1,7 @@
 // Kane's dynamical equations (dynamics/): closed forms first, then SymPy's
 // KanesMethod (tests/data/gen_dynamics.py) for a 3D double pendulum of rigid
 // links and for a free rigid body.
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -44,6 +45,23 @@ TEST_CASE("dynamics: a pendulum, m L^2 q'' = -m g L sin q") {
   CHECK(st == kane::solve_status::ok);
   CHECK(ud(0) == Approx(-9.81 / 0.7 * std::sin(0.4)).epsilon(1e-14));
   CHECK(kane::kinetic_energy<pendulum>(ev) == Approx(0.5 * 2.0 * 0.49 * 1.3 * 1.3).epsilon(1e-15));
+}
+
+TEST_CASE("dynamics: kane::motion over an evaluator without a speed set integrates u = q'") {
+  state1 s;
+  s.p = {0.7, 2.0, 9.81};
+  using bare = kane::evaluator<state1, kane::frames<A>, kane::level::acceleration>;
+  kane::motion<pendulum, bare> f(s);
+  kane::motion<pendulum, eval1> g(s);
+  const std::array<double, 2> x = {0.4, 1.3};
+  std::array<double, 2> dx{}, dy{};
+  f(x, dx, 0.0);
+  g(x, dy, 0.0);
+  CHECK(f.status() == kane::solve_status::ok);
+  CHECK(dx[0] == 1.3);  // q' = u, not a field never filled
+  CHECK(dx[1] == Approx(-9.81 / 0.7 * std::sin(0.4)).epsilon(1e-14));
+  CHECK(dy[0] == dx[0]);
+  CHECK(dy[1] == Approx(dx[1]).epsilon(1e-15));
 }
 
 #include "../examples/models/free_body.hpp"

@@ -7,6 +7,7 @@
 //   rhs.inputs() = r;                          // inputs r (kane::r<i> in loads) of the calls from now on
 //   kane::constrained_motion<System, NH, Evaluator>  // nonholonomic: x = (q, u_ind)
 //
+// Without a speed set the evaluator's speeds are u = q' (x = (q, q'), dx/dt = (q', q'')).
 // x and dxdt are any containers with operator[] and nq + nu entries
 // (std::array, Eigen vectors or maps, plain arrays); no allocation. status()
 // is that of the last call: when it is not ok, dxdt is NaN.
@@ -15,6 +16,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 
 #include "kane/dynamics/inverse_dynamics.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
@@ -28,7 +30,7 @@ class motion {
   using scalar = typename Ev::scalar;
   static constexpr std::size_t nq = state_type::nq, nu = detail::speeds_of<Ev>::n, size = nq + nu;
 
-  explicit motion(const state_type& s) : s_(s) { s_.ud = {}; }
+  explicit motion(const state_type& s) : s_(s) { s_.ud = {}, s_.qdd = {}; }
 
   // Numbers: one function body (the passes, the tables and Eigen's fixed-size loops inlined).
   template <class X, class DX>
@@ -46,7 +48,12 @@ class motion {
   template <class X, class DX>
   void step(const X& x, DX& dxdt, scalar time) {
     for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
-    for (std::size_t i = 0; i < nu; ++i) s_.u[i] = x[nq + i];
+    for (std::size_t i = 0; i < nu; ++i) {
+      if constexpr (std::is_void_v<typename Ev::speed_set>)
+        s_.qd[i] = x[nq + i];  // u = q': what an evaluator without a speed set reads
+      else
+        s_.u[i] = x[nq + i];
+    }
     s_.t = time;
     ev_.update(s_);
     const auto [ud, status] = detail::forward_at<Sys, true>(ev_);
