@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include <kane/kane.hpp>
 
@@ -226,4 +227,57 @@ TEST_CASE("dynamics: parallel_axis moves an inertia about O to the mass centre")
   CHECK(kane::evaluate(std::get<5>(c), ev) == Approx(0.09 + mass * d3 * d1).epsilon(1e-15));
   // about the fixed axis n1 = a1 through O: M = (I_O)_11
   CHECK(kane::mass_matrix_and_forcing<rod>(ev).M(0, 0) == Approx(1.1).epsilon(1e-14));
+}
+
+#include "../examples/models/gyrostat.hpp"
+#include "../examples/models/heavy_top.hpp"
+
+// Body rates as speeds (partial angular velocities the frame's unit vectors), sums in the
+// body's frame, the Euler-parameter rows solved in closed form: closed forms by hand.
+TEST_CASE("dynamics: a heavy top and a gyrostat with body rates against Euler's equations") {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> d(-2, 2);
+  namespace ht = models::heavy_top;
+  kane::motion<ht::system, ht::evaluator> top(ht::state{});
+  for (int k = 0; k < 20; ++k) {
+    std::array<double, 6> x{}, dx{};
+    for (double& v : x) v = d(rng);
+    x[1] = 0.4 + 0.1 * k;  // away from the 3-1-3 singularity
+    top(x, dx, 0.0);
+    REQUIRE(top.status() == kane::solve_status::ok);
+    // Euler about O: I1 = 0.02 + m l^2, the gravity torque m g l s2 (c3 c1 - s3 c2)
+    const double I1 = 0.02 + 1.5 * 0.09, I3 = 0.035, h = 1.5 * 9.81 * 0.3 / I1;
+    const double s2 = std::sin(x[1]), c2 = std::cos(x[1]), s3 = std::sin(x[2]), c3 = std::cos(x[2]);
+    const double q1d = (s3 * x[3] + c3 * x[4]) / s2;
+    CHECK(dx[0] == Approx(q1d).margin(1e-12));
+    CHECK(dx[1] == Approx(c3 * x[3] - s3 * x[4]).margin(1e-12));
+    CHECK(dx[2] == Approx(x[5] - c2 * q1d).margin(1e-12));
+    CHECK(dx[3] == Approx((I1 - I3) / I1 * x[4] * x[5] + h * s2 * c3).margin(1e-12));
+    CHECK(dx[4] == Approx(-(I1 - I3) / I1 * x[3] * x[5] - h * s2 * s3).margin(1e-12));
+    CHECK(dx[5] == Approx(0).margin(1e-12));
+  }
+  namespace gs = models::gyrostat;
+  kane::motion<gs::system, gs::evaluator> body(gs::state{});
+  for (int k = 0; k < 20; ++k) {
+    std::array<double, 14> x{}, dx{};
+    for (double& v : x) v = d(rng);
+    const double n = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
+    for (int i = 0; i < 4; ++i) x[std::size_t(i)] /= n;
+    body(x, dx, 0.0);
+    REQUIRE(body.status() == kane::solve_status::ok);
+    // q' = E(q) w / 2; the gyrostat I w' + w x (I w + J u7 b3) = 0, J (w3 + u7)' = 0
+    const double J = 0.02, I1 = 1.21, I2 = 1.51, I3 = 1.92, w1 = x[7], w2 = x[8], w3 = x[9], u7 = x[13];
+    const double e0 = x[0], e1 = x[1], e2 = x[2], e3 = x[3];
+    CHECK(dx[0] == Approx(0.5 * (-e1 * w1 - e2 * w2 - e3 * w3)).margin(1e-12));
+    CHECK(dx[1] == Approx(0.5 * (e0 * w1 - e3 * w2 + e2 * w3)).margin(1e-12));
+    CHECK(dx[2] == Approx(0.5 * (e3 * w1 + e0 * w2 - e1 * w3)).margin(1e-12));
+    CHECK(dx[3] == Approx(0.5 * (-e2 * w1 + e1 * w2 + e0 * w3)).margin(1e-12));
+    for (int i = 4; i < 7; ++i) CHECK(dx[std::size_t(i)] == x[std::size_t(i + 6)]);
+    const double w3d = (I1 - I2) / (I3 - J) * w1 * w2;
+    CHECK(dx[7] == Approx(-w2 * ((I3 - I2) * w3 + J * u7) / I1).margin(1e-12));
+    CHECK(dx[8] == Approx(w1 * ((I3 - I1) * w3 + J * u7) / I2).margin(1e-12));
+    CHECK(dx[9] == Approx(w3d).margin(1e-12));
+    for (int i = 10; i < 13; ++i) CHECK(dx[std::size_t(i)] == Approx(0).margin(1e-12));
+    CHECK(dx[13] == Approx(-w3d).margin(1e-12));
+  }
 }

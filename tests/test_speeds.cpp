@@ -235,6 +235,13 @@ TEST_CASE("speeds: a 3-2-1 body with body-frame angular velocity components as s
     ev.update(s);
     const auto alpha = kane::express<B321>(kane::angular_acceleration<N, B321>(), ev);
     for (int i = 0; i < 3; ++i) CHECK(alpha[i] == Approx(s.ud[i]).margin(1e-12));
+    // the solved q' and q'' turn the frames edge by edge to the same alpha
+    kane::state<double, 3> t;
+    t.q = s.q, t.qd = ev.coordinate_rates<1>(), t.qdd = ev.coordinate_rates<2>();
+    kane::evaluator<kane::state<double, 3>, kane::frames<B321>> chain;
+    chain.update(t);
+    const auto by_edges = kane::express<B321>(kane::angular_acceleration<N, B321>(), chain);
+    for (int i = 0; i < 3; ++i) CHECK(by_edges[i] == Approx(s.ud[i]).margin(1e-12));
   }
   // Gimbal lock: q2 = pi/2 makes Y singular.
   St321 s;

@@ -11,8 +11,10 @@
 #include <limits>
 #include <utility>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
+
+#include "kane/detail/inline.hpp"
+#include "kane/detail/list.hpp"
 
 namespace kane::detail {
 
@@ -89,15 +91,50 @@ Eigen::Matrix<S, N, 1> solve_block(const Eigen::Matrix<S, N, N>& inv, const Eige
                                    const Eigen::Matrix<S, N, 1>& rhs) {
   return inv * rhs;
 }
-// x = m^-1 f for a symmetric m by Cholesky (Eigen's LLT); false if m is not positive definite.
-// Jets overload it (jet.hpp).
+// m = L D L^T with every index known at compile time (no loop, no square root): what the
+// optimizer knows of m (constants, zeros) it carries through. a_ij = L_ij d_j.
+template <class S, int N>
+KANE_ALWAYS_INLINE bool solve_unrolled(const Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<S, N, 1>& f,
+                                       Eigen::Matrix<S, N, 1>& x) {
+  constexpr std::size_t n = std::size_t(N);
+  std::array<S, n * n> a, l;
+  std::array<S, n> inv, y;
+  bool positive = true;
+  static_for<n>([&](auto i) {
+    static_for<i>([&](auto j) {
+      S s = m(Eigen::Index(i), Eigen::Index(j));
+      static_for<j>([&](auto k) { s -= a[i * n + k] * l[j * n + k]; });
+      a[i * n + j] = s, l[i * n + j] = s * inv[j];
+    });
+    S d = m(Eigen::Index(i), Eigen::Index(i));
+    static_for<i>([&](auto k) { d -= a[i * n + k] * l[i * n + k]; });
+    positive = positive && d > S(0);
+    inv[i] = S(1) / d;
+  });
+  if (!positive) return false;
+  static_for<n>([&](auto i) {  // L y = f
+    S s = f(Eigen::Index(i));
+    static_for<i>([&](auto k) { s -= l[i * n + k] * y[k]; });
+    y[i] = s;
+  });
+  static_for<n>([&](auto r) {  // L^T x = D^-1 y
+    constexpr std::size_t i = n - 1 - r;
+    S s = y[i] * inv[i];
+    static_for<r>([&](auto t) {
+      constexpr std::size_t k = n - 1 - t;
+      s -= l[k * n + i] * x(Eigen::Index(k));
+    });
+    x(Eigen::Index(i)) = s;
+  });
+  return true;
+}
+// x = m^-1 f for a symmetric m by Cholesky; false if m is not positive definite. Jets
+// overload it (jet.hpp).
 template <class S, int N>
 bool solve_positive_definite(const Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<S, N, 1>& f,
                              Eigen::Matrix<S, N, 1>& x) {
-  if constexpr (N <= 12) {  // Eigen's fixed-size LLT, unrolled
-    const Eigen::LLT<Eigen::Matrix<S, N, N>> llt(m);
-    if (llt.info() != Eigen::Success) return false;
-    x = llt.solve(f);
+  if constexpr (N <= 12) {
+    return solve_unrolled(m, f, x);
   } else {  // m = L L^T by rows (contiguous dot products; Eigen's blocked path packs panels)
     std::array<S, std::size_t(N) * std::size_t(N)> l;
     std::array<S, std::size_t(N)> inv, y;

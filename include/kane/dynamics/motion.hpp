@@ -20,6 +20,7 @@
 
 #include "kane/dynamics/inverse_dynamics.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
+#include "kane/evaluation/reads.hpp"
 
 namespace kane {
 
@@ -41,7 +42,8 @@ class motion {
   solve_status status() const { return status_; }
   // The inputs r of the calls from now on (a controller's torques), kept between calls.
   typename state_type::inputs_type& inputs() { return s_.r; }
-  // The evaluator at the last call's state (energies, positions, ...).
+  // The evaluator at the last call's state (energies, positions, ...; of its accelerations, at
+  // u' = 0, only those the equations read are computed, the others NaN).
   const Ev& evaluator() const { return ev_; }
 
  private:
@@ -55,7 +57,10 @@ class motion {
         s_.u[i] = x[nq + i];
     }
     s_.t = time;
-    ev_.update(s_);
+    if constexpr (detail::recursive_form<Sys, Ev>)
+      ev_.update(s_);
+    else  // Kane's sums read a few angular accelerations and q'' (evaluation/reads.hpp)
+      ev_.template update_for<equation_reads>(s_);
     const auto [ud, status] = detail::forward_at<Sys, true>(ev_);
     const auto qd = ev_.coordinate_rates();
     status_ = status;
@@ -64,6 +69,12 @@ class motion {
     for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = ud(Eigen::Index(i));
   }
 
+  struct equation_reads {
+    static constexpr auto reads = detail::acceleration_reads_of<Ev>(
+        decltype(detail::system_terms<typename Ev::root, detail::speeds_of<Ev>>(typename Sys::items{})){});
+    static constexpr auto alpha = reads.alpha;
+    static constexpr auto qdd = reads.qdd;
+  };
   state_type s_;
   Ev ev_;
   solve_status status_ = solve_status::ok;

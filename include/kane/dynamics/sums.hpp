@@ -43,39 +43,62 @@ template <class R, class X, class Ev>
 Eigen::Matrix<typename Ev::scalar, 3, 1> in_root(const X& x, const Ev& ev) {
   return express_in<R>(x, ev).eigen();
 }
-// What each partial velocity v_r of x is at every state: 0 (zero), +-(i + 1) (+-e_Ri of the
-// root R: the sums add a number to one component), or general_column.
+template <class A, class X, class Ev>
+Eigen::Matrix<typename Ev::scalar, 3, 1> in_frame_of(const X& x, const Ev& ev) {  // components in A
+  const auto r = eval_in<A>(x, ev);
+  return {r.x, r.y, r.z};
+}
+// What each partial velocity v_r of x is at every state, in A's components: 0 (zero), +-(i + 1)
+// (+-e_i: a unit vector of A, or of the root for A the root; the sums add a number to one
+// component), or general_column. A void: the root of x's tree.
 inline constexpr int general_column = 4;
-template <class V>
+template <class V, class A>
+constexpr bool unit_in() {
+  if constexpr (!is_unit<V>::value)
+    return false;
+  else if constexpr (std::is_void_v<A>)
+    return root_unit<V>::value;
+  else if constexpr (std::is_void_v<typename A::tree_parent>)
+    return root_unit<V>::value;
+  else
+    return std::is_same_v<typename V::frame, A> || std::is_same_v<lifted_t<typename V::frame, V::index>, A>;
+}
+template <class V, class A>
 constexpr int column_kind() {
   if constexpr (is_zero_v<V> || is_zero_vector_v<V>)
     return 0;
-  else if constexpr (root_unit<V>::value)
+  else if constexpr (unit_in<V, A>())
     return V::index;
   else if constexpr (is_vneg<V>::value) {
     using U = std::remove_cvref_t<decltype(std::declval<const V&>().v)>;
-    if constexpr (root_unit<U>::value)
+    if constexpr (unit_in<U, A>())
       return -U::index;
     else
       return general_column;
   } else
     return general_column;
 }
-template <class Sp, class X>
+template <class Sp, class X, class A = void>
 constexpr std::array<int, Sp::n> nonzero_columns() {
   return []<std::size_t... R>(std::index_sequence<R...>) {
     return std::array<int, Sp::n>{
-        column_kind<std::remove_cvref_t<decltype(column_of<Sp, R + 1>(std::declval<const X&>()))>>()...};
+        column_kind<std::remove_cvref_t<decltype(column_of<Sp, R + 1>(std::declval<const X&>()))>, A>()...};
   }
   (std::make_index_sequence<Sp::n>{});
 }
-// The upper triangle of M += a^T b (symmetric: b = W a, W symmetric) over the columns Nz.
-template <auto Nz, class S, int N>
+// The columns of M that the partial velocities of X reach (a type: g++ 12 merged
+// instantiations of one function template that differed only in an array argument).
+template <class Cols, class Sp, class X>
+struct reached_columns {
+  static constexpr auto value = Cols::template nonzero<nonzero_columns<Sp, X>()>();
+};
+// The upper triangle of M += a^T b (symmetric: b = W a, W symmetric) over the columns Nz::value.
+template <class Nz, class S, int N>
 KANE_ALWAYS_INLINE void add_upper(Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<S, 3, N>& a,
                                   const Eigen::Matrix<S, 3, N>& b) {
   static_for<std::size_t(N * N)>([&](auto rc) {
     constexpr std::size_t r = rc / std::size_t(N), c = rc % std::size_t(N);
-    if constexpr (r <= c && Nz[r] && Nz[c])
+    if constexpr (r <= c && Nz::value[r] && Nz::value[c])
       m(Eigen::Index(r), Eigen::Index(c)) += a(0, Eigen::Index(r)) * b(0, Eigen::Index(c)) +
                                              a(1, Eigen::Index(r)) * b(1, Eigen::Index(c)) +
                                              a(2, Eigen::Index(r)) * b(2, Eigen::Index(c));
@@ -110,58 +133,94 @@ struct all_speeds {
   template <auto Nz, class A, class V>
   KANE_ALWAYS_INLINE void add_bias(A&, const V&) const {}
 };
-// The sums of M and f over the items of Sys.
+// The frames a body's mass term may use: the root, the body's (unless it spins: its axes are
+// not known) and its inertia's (the rotational term: the root's or the inertia's).
+template <class R, class X>
+struct body_sum_frames {
+  using B = typename X::frame;
+  using I = typename X::inertia_type::frame;
+  using type = std::conditional_t<spin_edge<B> || std::is_same_v<B, I>, list<R, I>, list<R, B, I>>;
+};
+template <class R, class X>
+struct mass_sum_frames {
+  using type = list<R>;
+};
+template <class R, class X>
+requires is_body<X>
+struct mass_sum_frames<R, X> : body_sum_frames<R, X> {
+};
+template <class Cols, class L>
+struct frame_of_columns;
+template <class Cols, class... F>
+struct frame_of_columns<Cols, list<F...>> : cheapest_frame<Cols, F...> {};
+// The sums of M and f over the items of Sys: each item's dot products in the frame where its
+// partial velocities hold the fewest rotations (foreign_units), M_rs and f_r being invariant.
 template <class Sys, bool RestRates, bool Forcing, class Out, class Ev, class Cols, class Ud>
 KANE_ALWAYS_INLINE void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using Sp = detail::speeds_of<Ev>;
   constexpr std::size_t n = Cols::n;
-  Eigen::Matrix<S, 3, 1> g = Eigen::Matrix<S, 3, 1>::Zero();
-  [&]<class... X>(detail::list<X...>) {
-    (
-        [&] {
-          if constexpr (Forcing && detail::is_gravity<X>) g += detail::in_root<R>(X::vector, ev);
-        }(),
-        ...);
-  }(typename Sys::items{});
-  // the partial velocities of x along the columns, and x's bias (a0 or alpha0)
-  const auto along = [&](const auto& x, const auto& x_dot, Eigen::Matrix<S, 3, 1>& bias) {
-    constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
-    const auto v = linear_parts_in<R, true, false>(x, ev);
+  // the gravity of the system in A
+  const auto gravity = [&]<class A>(std::type_identity<A>) {
+    Eigen::Matrix<S, 3, 1> g = Eigen::Matrix<S, 3, 1>::Zero();
+    [&]<class... X>(detail::list<X...>) {
+      (
+          [&] {
+            if constexpr (Forcing && detail::is_gravity<X>) g += detail::in_frame_of<A>(X::vector, ev);
+          }(),
+          ...);
+    }(typename Sys::items{});
+    return g;
+  };
+  // the partial velocities of x along the columns, and x's bias (a0 or alpha0), in A
+  const auto along = [&]<class A>(std::type_identity<A>, const auto& x, const auto& x_dot,
+                                  Eigen::Matrix<S, 3, 1>& bias) {
+    constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>, A>();
+    const auto v = linear_parts_in<A, true, false>(x, ev);
     if constexpr (Forcing) {
-      bias = detail::in_root<R>(x_dot, ev);
+      bias = detail::in_frame_of<A>(x_dot, ev);
       if constexpr (!RestRates) bias -= v * ud;
       cols.template add_bias<nz>(bias, v);
     }
     return Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(v));
   };
-  const auto mass = [&](const auto& point_velocity, const auto& point_acceleration, const auto& m) {
+  const auto mass = [&]<class Frames>(Frames, const auto& point_velocity, const auto& point_acceleration,
+                                      const auto& m) {
+    using A =
+        typename frame_of_columns<columns_t<Sp, std::remove_cvref_t<decltype(point_velocity)>>, Frames>::type;
     Eigen::Matrix<S, 3, 1> a0;
-    const auto v = along(point_velocity, point_acceleration, a0);
+    const auto v = along(std::type_identity<A>{}, point_velocity, point_acceleration, a0);
     const Eigen::Matrix<S, 3, int(n)> mv = detail::eval_scalar(m, ev) * v;
-    constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(point_velocity)>>();
-    detail::add_upper<Cols::template nonzero<nz>()>(out.M, v, mv);
-    if constexpr (Forcing) out.f.noalias() += mv.transpose() * (g - a0);
+    detail::add_upper<reached_columns<Cols, Sp, std::remove_cvref_t<decltype(point_velocity)>>>(out.M, v, mv);
+    if constexpr (Forcing) out.f.noalias() += mv.transpose() * (gravity(std::type_identity<A>{}) - a0);
   };
   [&]<class... X>(detail::list<X...>) {
     (
         [&] {
           if constexpr (detail::is_particle<X>) {
             using P = typename X::point;
-            mass(velocity<R, P>(), acceleration<R, P>(), X::mass);
+            mass(list<R>{}, velocity<R, P>(), acceleration<R, P>(), X::mass);
           } else if constexpr (detail::is_body<X>) {
             using B = typename X::frame;
             using P = typename X::centre;
-            mass(velocity<R, P>(), acceleration<R, P>(), X::mass);
+            using I = typename X::inertia_type;
+            mass(typename body_sum_frames<R, X>::type{}, velocity<R, P>(), acceleration<R, P>(), X::mass);
+            using A = typename frame_of_columns<columns_t<Sp, decltype(angular_velocity<R, B>())>,
+                                                list<R, typename I::frame>>::type;
             Eigen::Matrix<S, 3, 1> alpha0;
-            const auto w = along(angular_velocity<R, B>(), angular_acceleration<R, B>(), alpha0);
-            const Eigen::Matrix<S, 3, 3> i = detail::inertia_in_root<typename X::inertia_type>(ev);
+            const auto w = along(std::type_identity<A>{}, angular_velocity<R, B>(),
+                                 angular_acceleration<R, B>(), alpha0);
+            const Eigen::Matrix<S, 3, 3> i = [&] {
+              if constexpr (std::is_same_v<A, typename I::frame>)
+                return detail::inertia_in_own<I>(ev);
+              else
+                return detail::inertia_in_root<I>(ev);
+            }();
             const Eigen::Matrix<S, 3, int(n)> iw = i * w;
-            constexpr auto nz = detail::nonzero_columns<Sp, decltype(angular_velocity<R, B>())>();
-            detail::add_upper<Cols::template nonzero<nz>()>(out.M, w, iw);
+            detail::add_upper<reached_columns<Cols, Sp, decltype(angular_velocity<R, B>())>>(out.M, w, iw);
             if constexpr (Forcing) {
-              const Eigen::Matrix<S, 3, 1> omega = detail::in_root<R>(angular_velocity<R, B>(), ev);
+              const Eigen::Matrix<S, 3, 1> omega = detail::in_frame_of<A>(angular_velocity<R, B>(), ev);
               out.f.noalias() -= w.transpose() * (i * alpha0 + omega.cross(i * omega));
             }
           } else if constexpr (Forcing && detail::is_force<X>) {

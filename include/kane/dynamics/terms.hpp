@@ -38,6 +38,49 @@ constexpr auto inertia_column_rows() {  // the j of I_jk not zero at compile tim
   (std::make_index_sequence<3>{});
   return out;
 }
+// I in its own frame's components.
+template <class I, class Ev>
+Eigen::Matrix<typename Ev::scalar, 3, 3> inertia_in_own(const Ev& ev) {
+  using S = typename Ev::scalar;
+  using Cs = std::remove_cvref_t<decltype(I::components)>;
+  Eigen::Matrix<S, 3, 3> out;
+  static_for<9>([&](auto jk) {
+    constexpr std::size_t k = inertia_at[jk / 3][jk % 3];
+    out(Eigen::Index(jk / 3), Eigen::Index(jk % 3)) =
+        is_zero_v<std::tuple_element_t<k, Cs>> ? S(0) : S(eval_scalar(std::get<k>(I::components), ev));
+  });
+  return out;
+}
+// How many unit vectors of frames other than A the vector V holds (each a rotation to A).
+template <class A, class V>
+constexpr int foreign_units() {
+  if constexpr (is_zero_vector_v<V>)
+    return 0;
+  else if constexpr (is_unit<V>::value)
+    return std::is_same_v<typename V::frame, A> ? 0 : 1;
+  else if constexpr (is_v<V, scaled> || is_v<V, vneg> || Quantity<V>)
+    return foreign_units<A, std::remove_cvref_t<decltype(std::declval<V>().v)>>();
+  else if constexpr (is_v<V, vsum> || is_v<V, vdiff> || is_v<V, vcross>)
+    return foreign_units<A, std::remove_cvref_t<decltype(std::declval<V>().l)>>() +
+           foreign_units<A, std::remove_cvref_t<decltype(std::declval<V>().r)>>();
+  else
+    return 1;
+}
+template <class A, class... V>
+constexpr int foreign_units(list<V...>) {
+  return (0 + ... + foreign_units<A, V>());
+}
+// Of the frames Fs (the first the root), the one in which the vectors of list L hold the
+// fewest foreign unit vectors: the sums take their dot products there.
+template <class L, class F, class... Fs>
+struct cheapest_frame {
+  using type = F;
+};
+template <class L, class F, class G, class... Fs>
+struct cheapest_frame<L, F, G, Fs...> {
+  using rest = typename cheapest_frame<L, G, Fs...>::type;
+  using type = std::conditional_t<(foreign_units<rest>(L{}) < foreign_units<F>(L{})), rest, F>;
+};
 template <class I, class Ev>
 Eigen::Matrix<typename Ev::scalar, 3, 3> inertia_in_root(const Ev& ev) {
   using S = typename Ev::scalar;

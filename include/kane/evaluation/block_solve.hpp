@@ -87,6 +87,14 @@ KANE_ALWAYS_INLINE Eigen::Matrix<S, int(Size), int(Size)> scaled_block(const tab
   return block;
 }
 
+// Block b of Sys has orthogonal rows (Sys::orthogonal, where given).
+template <class Sys>
+constexpr bool orthogonal_block(std::size_t b) {
+  if constexpr (requires { Sys::orthogonal; })
+    return Sys::orthogonal[b];
+  else
+    return false;
+}
 // Sys: static constexpr n, m (pattern n x n), form (blocks_of(m)).
 template <class Sys, class S>
 KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S, Sys::n, Sys::n>& m) {
@@ -132,6 +140,20 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
         const S pivot = m[row][c];
         out.singular = out.singular || (pivot == pivot && !(abs(pivot) * S(inverse_tol) > scale));
       }
+    } else if constexpr (orthogonal_block<Sys>(b)) {  // B^-1 = B^T (B B^T)^-1, B B^T diagonal
+      const real f = out.f;
+      const S tol = limits::epsilon() * S(n) * (scale * f);
+      const auto block = scaled_block<Sys, first, size>(m, f);
+      Eigen::Matrix<S, int(size), int(size)> inverse;
+      static_for<size>([&](auto a) {
+        const S norm2 = block.row(Eigen::Index(a)).squaredNorm();
+        out.singular = out.singular || (norm2 == norm2 && !(norm2 > tol * tol));
+        inverse.col(Eigen::Index(a)) = block.row(Eigen::Index(a)).transpose() * (S(1) / norm2);
+      });
+      static_for<size * size>([&](auto ab) {
+        constexpr std::size_t a = ab / size, e = ab % size;
+        out.inverse[Sys::form.order[first + a]][Sys::form.order[first + e]] = inverse(a, e);
+      });
     } else {
       const real f = out.f;
       const S tol = limits::epsilon() * S(n) * (scale * f);

@@ -118,6 +118,14 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
     speeds_at(s);
   }
 
+  // update(s) for the reads of one computation (motion.hpp): at the acceleration level the
+  // angular accelerations of the frames of Reads::alpha (by closure index) and the q'' of
+  // Reads::qdd (by coordinate) only; the others are NaN.
+  template <class Reads>
+  KANE_INLINE_FLATTEN void update_for(const St& s) {
+    pass_at<true, Reads>(s);
+  }
+
   // The inputs r for what is evaluated from now on (loads read them; no pass reads them).
   void set_inputs(const typename St::inputs_type& r) { st_.r = r; }
 
@@ -186,7 +194,11 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
     return residue;
   }
 
-  template <bool Rates>
+  struct everything {
+    static constexpr auto alpha = pass_type::all_frames;
+    static constexpr auto qdd = equations::every_coordinate::qdd;
+  };
+  template <bool Rates, class Reads = everything>
   KANE_ALWAYS_INLINE void pass_at(const St& s) {
     st_.q = s.q, st_.p = s.p, st_.t = s.t, st_.r = s.r, updated_ = true;
     const scalar norm_residue = normalise(closure{});  // Euler parameters of unit norm
@@ -204,25 +216,27 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
                     : rotations ? solve_status::ok
                                 : solve_status::not_a_rotation;
     if constexpr (!solves) {
-      this->template pass<true, velocity, acceleration>(tr, *this);  // frame after frame, all levels at once
+      this->template pass<true, velocity, acceleration, Reads>(
+          tr, *this);  // frame after frame, all levels at once
       this->store_trig(tr);
     } else {  // Y, Z need the axes; Y', Z' the angular velocities
       this->template pass<true, false, false>(tr, *this);
       this->store_trig(tr);
       if constexpr (!direct) this->solve_kinematic_equations(*this);
-      if constexpr (Rates) rates_at(s, tr);
+      if constexpr (Rates) rates_at<Reads>(s, tr);
     }
   }
 
   // The velocity and acceleration levels at s.u and s.ud (a speed set), the pose kept.
+  template <class Reads = everything>
   KANE_ALWAYS_INLINE void rates_at(const St& s, const trig_type& tr) {
     if constexpr (velocity) {
       this->solve_rates(s);
       this->template pass<false, true, false>(tr, *this);
     }
     if constexpr (acceleration) {
-      this->solve_accelerations(*this, s);
-      this->template pass<false, false, true>(tr, *this);
+      this->template solve_accelerations<Reads>(*this, s);
+      this->template pass<false, false, true, Reads>(tr, *this);
     }
   }
   KANE_ALWAYS_INLINE void speeds_at(const St& s) {

@@ -193,28 +193,55 @@ class kinematic_equations {
     return out;
   }
 
-  // u' = Y q'' + Y' q' + Z', so q'' = W (u' - Y' q' - Z').
-  template <class Ev>
+  struct every_coordinate {
+    static constexpr std::array<bool, nq> qdd = [] {
+      std::array<bool, nq> a{};
+      a.fill(true);
+      return a;
+    }();
+  };
+  // u' = Y q'' + Y' q' + Z', so q'' = W (u' - Y' q' - Z'): the q_c'' of Reads::qdd only (the
+  // rows of u' - Y' q' - Z' that W mixes into them), the others NaN.
+  template <class Reads = every_coordinate, class Ev>
   KANE_ALWAYS_INLINE void solve_accelerations(const Ev& ev, const St& s) {
+    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
     if constexpr (Speeds::identity) {
-      for (std::size_t i = 0; i < nq; ++i) qdd_[i] = s.ud[i];
+      static_for<nq>([&](auto i) { qdd_[i] = Reads::qdd[i] ? s.ud[i] : nan; });
     } else {
+      constexpr auto rows = [] {
+        std::array<bool, nq> r{};
+        for (std::size_t c = 0; c < nq; ++c)
+          for (std::size_t j = 0; j < nq; ++j)
+            r[j] = r[j] || (Reads::qdd[c] && system::x[c][j] != entry::zero);
+        return r;
+      }();
       std::array<scalar, nq> v;
       static_for<nq>([&](auto r) {
-        scalar sum = scalar(0);  // u' = 0 in held rows
-        if constexpr (r < nd) sum = s.ud[r];
-        constexpr auto zd = dt(at_rest(definition<r>()));
-        if constexpr (!is_zero_v<std::remove_cv_t<decltype(zd)>>) sum -= eval_scalar(zd, ev);
-        static_for<nq>([&](auto c) {
-          constexpr auto yd = dt(diff(definition<r>(), coordinate<c + 1, 1>{}));
-          if constexpr (!is_zero_v<std::remove_cv_t<decltype(yd)>>) sum -= eval_scalar(yd, ev) * qd_[c];
-        });
-        v[r] = sum;
+        if constexpr (rows[r]) {
+          scalar sum = scalar(0);  // u' = 0 in held rows
+          if constexpr (r < nd) sum = s.ud[r];
+          constexpr auto zd = dt(at_rest(definition<r>()));
+          if constexpr (!is_zero_v<std::remove_cv_t<decltype(zd)>>) sum -= eval_scalar(zd, ev);
+          static_for<nq>([&](auto c) {
+            constexpr auto yd = dt(diff(definition<r>(), coordinate<c + 1, 1>{}));
+            if constexpr (!is_zero_v<std::remove_cv_t<decltype(yd)>>) sum -= eval_scalar(yd, ev) * qd_[c];
+          });
+          v[r] = sum;
+        }
       });
-      qdd_ = apply<false, nq>(v);
+      static_for<nq>([&](auto c) {
+        if constexpr (Reads::qdd[c])
+          qdd_[c] = apply_row<c, false, nq>(v);
+        else
+          qdd_[c] = nan;
+      });
     }
-    if (status_ == solve_status::ok && !all_finite(qdd_)) status_ = solve_status::not_finite;
-    if (status_ != solve_status::ok) qdd_.fill(std::numeric_limits<scalar>::quiet_NaN());
+    bool finite = true;
+    static_for<nq>([&](auto c) {
+      if constexpr (Reads::qdd[c]) finite = finite & (qdd_[c] - qdd_[c] == scalar(0));
+    });
+    if (status_ == solve_status::ok && !finite) status_ = solve_status::not_finite;
+    if (status_ != solve_status::ok) qdd_.fill(nan);
   }
 
   solve_status status_ = solve_status::ok;

@@ -142,6 +142,8 @@ class recalling {
   static constexpr bool recalls = Plan::template index<X>() < Plan::repeated.n;
 
   explicit recalling(const Ev& ev) : ev_(ev) {}
+  // The evaluator without the slots, for evaluation in an order the plan does not know.
+  const Ev& base() const { return ev_; }
 
   template <class X>
   scalar recall_scalar(const X& x) const {

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 
 #include <Eigen/Core>
@@ -20,8 +21,10 @@
 #include "kane/detail/v3.hpp"
 #include "kane/evaluation/edge_structure.hpp"
 #include "kane/evaluation/evaluate.hpp"
+#include "kane/evaluation/status.hpp"
 #include "kane/frames/frame.hpp"
 #include "kane/frames/orientation.hpp"
+#include "kane/speeds/generalized_speeds.hpp"
 
 namespace kane {
 
@@ -79,10 +82,63 @@ class outward_pass {
     fill_nan(trig_.s), fill_nan(trig_.c), fill_nan(c_), fill_nan(w_), fill_nan(a_), init_roots(closure{});
   }
 
-  // One pass at the levels asked for, frame after frame.
-  template <bool Pose, bool Velocity, bool Acceleration, class Rates>
+  // Every frame's angular acceleration.
+  static constexpr std::array<bool, size> all_frames = [] {
+    std::array<bool, size> a{};
+    a.fill(true);
+    return a;
+  }();
+  struct every_frame {
+    static constexpr std::array<bool, size> alpha = all_frames;
+  };
+  // One pass at the levels asked for, frame after frame; at the acceleration level the
+  // frames of Reads::alpha only (by closure index).
+  template <bool Pose, bool Velocity, bool Acceleration, class Reads = every_frame, class Rates>
   KANE_ALWAYS_INLINE void pass(const trig_type& t, const Rates& rates) {
-    pass_over<Pose, Velocity, Acceleration>(closure{}, t, rates);
+    pass_over<Pose, Velocity, Acceleration, Reads>(closure{}, t, rates);
+  }
+
+ public:
+  // k when the speeds u_k, u_k+1, u_k+2 are the components of ^R w^F in a frame G whose axes
+  // are known before F's (G = F, an ancestor, or the root): then ^R w^F = sum u g_i, and
+  // ^R alpha^F = sum u' g_i + ^R w^G x ^R w^F. 0: F's rates come from its edge.
+  template <class F, class Rates>
+  static constexpr std::size_t component_speeds_of() {
+    using Sp = typename Rates::speed_set;
+    if constexpr (std::is_void_v<Sp> || !is_edge<F>)
+      return 0;
+    else if constexpr (component_speeds<Sp, F>() == 0)
+      return 0;
+    else {
+      constexpr std::size_t k = component_speeds<Sp, F>();
+      using G = typename component_row<row_t<Sp, k - 1>>::frame;
+      if constexpr (!is_edge<G>)
+        return k;
+      else if constexpr (contains<G, closure>::value && !spin_edge<G>)
+        return index<G>() <= index<F>() ? k : 0;
+      else
+        return 0;
+    }
+  }
+
+ protected:
+  template <class F, class Rates>
+  using component_frame =
+      typename component_row<row_t<typename Rates::speed_set, component_speeds_of<F, Rates>() - 1>>::frame;
+  // sum x_i g_i, x_i = u_k+i-1 (D = 0) or u'_k+i-1 (D = 1)
+  template <class F, std::size_t D, class Rates>
+  KANE_ALWAYS_INLINE v3<scalar> components_value(const Rates& rates) const {
+    constexpr std::size_t k = component_speeds_of<F, Rates>();
+    using G = component_frame<F, Rates>;
+    // NaN where the kinematic equations failed, as for the rates they give (evaluator.hpp)
+    const auto spoil = nan_unless<scalar>(rates.status() == solve_status::ok);
+    scalar x = eval_scalar(speed<k, D>{}, rates), y = eval_scalar(speed<k + 1, D>{}, rates),
+           z = eval_scalar(speed<k + 2, D>{}, rates);
+    spoil(x), spoil(y), spoil(z);
+    if constexpr (!is_edge<G>)
+      return {x, y, z};
+    else
+      return x * column<G>(0) + y * column<G>(1) + z * column<G>(2);
   }
   // element by element (a wide copy of values just written narrowly would stall) and unrolled
   // (after a loop g++ no longer forwards the pass's stores to the reads that follow)
@@ -124,15 +180,33 @@ class outward_pass {
         ...);
   }
 
-  template <bool Pose, bool Velocity, bool Acceleration, class Rates, class... F>
+  template <bool Pose, bool Velocity, bool Acceleration, class Reads, class Rates, class... F>
   KANE_ALWAYS_INLINE void pass_over(list<F...>, const trig_type& t, const Rates& rates) {
-    (edge<Pose, Velocity, Acceleration, F>(t, rates), ...);  // no lambdas: g++ -O2 left them out of line
+    // no lambdas: g++ -O2 left them out of line
+    (edge < Pose, Velocity, Acceleration && Reads::alpha[index<F>()], F,
+     Acceleration && !Reads::alpha[index<F>()] > (t, rates), ...);
   }
-  template <bool Pose, bool Velocity, bool Acceleration, class F, class Rates>
+  template <bool Pose, bool Velocity, bool Acceleration, class F, bool Skipped = false, class Rates>
   KANE_ALWAYS_INLINE void edge(const trig_type& t, const Rates& rates) {
     if constexpr (Pose) pose_edge<F>(t, rates);
-    if constexpr (Velocity) velocity_edge<F>(rates);
-    if constexpr (Acceleration) acceleration_edge<F>(rates);
+    if constexpr (Velocity) {
+      if constexpr (component_speeds_of<F, Rates>() != 0)
+        store3(w_[index<F>()].data(), components_value<F, 0>(rates));
+      else
+        velocity_edge<F>(rates);
+    }
+    if constexpr (Skipped) {
+      a_[index<F>()].fill(std::numeric_limits<scalar>::quiet_NaN());
+    } else if constexpr (Acceleration) {
+      if constexpr (component_speeds_of<F, Rates>() != 0) {
+        using G = component_frame<F, Rates>;
+        vec3 a = components_value<F, 1>(rates);
+        if constexpr (is_edge<G> && !std::is_same_v<G, F>)
+          a = a + cross3(load3(w_[index<G>()].data()), load3(w_[index<F>()].data()));
+        store3(a_[index<F>()].data(), a);
+      } else
+        acceleration_edge<F>(rates);
+    }
   }
 
   using vec3 = v3<scalar>;

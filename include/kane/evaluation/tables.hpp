@@ -48,7 +48,7 @@ KANE_ALWAYS_INLINE auto numbers(const X& x, const Ev& ev) {
   if constexpr (ScalarExpr<X>) {
     return Eigen::Matrix<S, 1, 1>(eval_scalar(x, ev));
   } else {
-    const auto r = in_frame<A>(eval_vector(x, ev), ev);
+    const auto r = eval_in<A>(x, ev);
     return Eigen::Matrix<S, 3, 1>(r.x, r.y, r.z);
   }
 }
