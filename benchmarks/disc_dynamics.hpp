@@ -21,4 +21,5 @@ struct output {
 void kane_rates(const input&, output&);          // constrained_motion, built once
 void kane_reduced_rates(const input&, output&);  // A from a pose-level pass, one acceleration-level pass
 void hand_rates(const input&, output&);
+void sympy_rates(const input&, output&);  // SymPy's KanesMethod printed to C (gen_disc_dynamics_sympy.py)
 }  // namespace disc_dynamics

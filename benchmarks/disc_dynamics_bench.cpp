@@ -1,5 +1,5 @@
 // The rolling disc's forward dynamics: kane (constrained_motion; and the reduced equations
-// written out) beside the hand-written closed form.
+// written out) beside the hand-written closed form and SymPy's generated code.
 #include <random>
 #include <vector>
 
@@ -23,16 +23,19 @@ const std::vector<disc_dynamics::input> states = inputs();
 
 void agree() {
   for (const auto& in : states) {
-    disc_dynamics::output k{}, l{}, h{};
+    disc_dynamics::output k{}, l{}, h{}, s{};
     disc_dynamics::kane_rates(in, k);
     disc_dynamics::kane_reduced_rates(in, l);
     disc_dynamics::hand_rates(in, h);
-    bench::require_agreement(std::fmax(bench::max_diff(k.xd, h.xd, 8), bench::max_diff(l.xd, h.xd, 8)));
+    disc_dynamics::sympy_rates(in, s);
+    const double kane = std::fmax(bench::max_diff(k.xd, h.xd, 8), bench::max_diff(l.xd, h.xd, 8));
+    bench::require_agreement(std::fmax(kane, bench::max_diff(s.xd, h.xd, 8)));
   }
 }
 }  // namespace
 
 BENCHMARK(bench::run<disc_dynamics::hand_rates, states>)->Name("disc_dynamics/forward/hand");
+BENCHMARK(bench::run<disc_dynamics::sympy_rates, states>)->Name("disc_dynamics/forward/sympy");
 BENCHMARK(bench::run<disc_dynamics::kane_rates, states>)->Name("disc_dynamics/forward/kane");
 BENCHMARK(bench::run<disc_dynamics::kane_reduced_rates, states>)->Name("disc_dynamics/forward/kane_reduced");
 
