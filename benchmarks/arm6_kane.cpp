@@ -1,5 +1,4 @@
-// kane's implementation of the 6-revolute chain (arm6.hpp). The evaluators
-// live as long as the program, as a controller's would.
+// kane's implementation of the 6-revolute chain (arm6.hpp).
 #include "../examples/models/arm6.hpp"
 #include "arm6.hpp"
 
@@ -7,16 +6,18 @@ namespace {
 using namespace models::arm6;
 
 using state = kane::state<double, 6>;
-// Q2 to Q4 read nothing of B6 but its angular velocity and acceleration (one edge below B5) and
-// e_B6,1 = e_B5,1 (B6 turns about it): their evaluators hold B1 .. B5, and q6 is not turned.
-template <class Frame, kane::level Level>
-using evaluator = kane::evaluator<state, kane::frames<Frame>, Level>;
 
 constexpr auto r_end = kane::position<O, End>();
 constexpr auto w6 = kane::angular_velocity<N, B6>();
 constexpr auto v_end = kane::velocity<N, End>();
 constexpr auto alpha6 = kane::angular_acceleration<N, B6>();
 constexpr auto a_end = kane::acceleration<N, End>();
+// Each evaluator holds what its quantities read (kane::evaluator_for): Q2 to Q4 read nothing of
+// B6 but its angular velocity and acceleration (one edge below B5) and e_B6,1 = e_B5,1, so they
+// hold B1 .. B5 and q6 is not turned; the Jacobian's columns need the pose level only.
+using pose_reads = kane::reads<r_end, kane::e<B6, 1>, kane::e<B6, 2>, kane::e<B6, 3>>;
+using velocity_reads = kane::reads<w6, v_end>;
+using acceleration_reads = kane::reads<alpha6, a_end>;
 
 template <class V>
 void store(const V& v, double* out) {
@@ -48,14 +49,14 @@ void q4(const Ev& ev, arm6::output& out) {
 namespace arm6 {
 void kane_q1(const input& in, output& out) {
   state s;
-  evaluator<B6, kane::level::pose> ev_pose;
+  kane::evaluator_for<state, pose_reads> ev_pose;
   s.q = in.q;
   ev_pose.update(s);
   q1(ev_pose, out);
 }
 void kane_q2(const input& in, output& out) {
   state s;
-  evaluator<B5, kane::level::velocity> ev_velocity;
+  kane::evaluator_for<state, velocity_reads> ev_velocity;
   s.q = in.q;
   s.qd = in.qd;
   ev_velocity.update(s);
@@ -63,14 +64,14 @@ void kane_q2(const input& in, output& out) {
 }
 void kane_q3(const input& in, output& out) {
   state s;
-  evaluator<B5, kane::level::pose> ev_jacobian;
+  kane::evaluator<state, velocity_reads::frames, kane::level::pose> ev_jacobian;
   s.q = in.q;
   ev_jacobian.update(s);
   q3(ev_jacobian, out);
 }
 void kane_q4(const input& in, output& out) {
   state s;
-  evaluator<B5, kane::level::acceleration> ev_acceleration;
+  kane::evaluator_for<state, acceleration_reads> ev_acceleration;
   s.q = in.q;
   s.qd = in.qd;
   s.qdd = in.qdd;
@@ -79,7 +80,7 @@ void kane_q4(const input& in, output& out) {
 }
 void kane_all(const input& in, output& out) {
   state s;
-  evaluator<B6, kane::level::acceleration> ev_all;
+  kane::evaluator_for<state, kane::reads<r_end, kane::e<B6, 2>, w6, v_end, alpha6, a_end>> ev_all;
   s.q = in.q;
   s.qd = in.qd;
   s.qdd = in.qdd;

@@ -17,28 +17,32 @@ int main() {
   s.qd = {0.5, 0.2, -0.3, 1.0, 0.4, -0.7};
   s.qdd = {0.1, -0.2, 0.3, -0.1, 0.2, 0.05};
 
-  kane::evaluator<decltype(s), kane::frames<B6>> ev;
+  constexpr auto r = kane::position<O, End>();
+  constexpr auto v = kane::velocity<N, End>();
+  constexpr auto a = kane::acceleration<N, End>();
+  constexpr auto w = kane::angular_velocity<N, B6>();
+  constexpr auto alpha = kane::angular_acceleration<N, B6>();
+  // the frames these read (B1 .. B5: B6 is one edge below B5 and e_B6,1 = e_B5,1), acceleration level
+  kane::evaluator_for<decltype(s), kane::reads<r, v, a, w, alpha>> ev;
   ev.update(s);  // one outward pass: sin/cos, e_Bi, ^N w^Bi, ^N alpha^Bi
 
   const auto NPB6 = kane::direction_cosines<N, B6>(s);
   std::printf("^N P^B6 row 1  (% .6f, % .6f, % .6f)\n", NPB6(0, 0), NPB6(0, 1), NPB6(0, 2));
-  show("r^O/End", kane::express<N>(kane::position<O, End>(), ev));
-  show("^N v^End", kane::express<N>(kane::velocity<N, End>(), ev));
-  show("^N a^End", kane::express<N>(kane::acceleration<N, End>(), ev));
-  show("^N w^B6", kane::express<N>(kane::angular_velocity<N, B6>(), ev));
-  show("^N al^B6", kane::express<N>(kane::angular_acceleration<N, B6>(), ev));
+  show("r^O/End", kane::express<N>(r, ev));
+  show("^N v^End", kane::express<N>(v, ev));
+  show("^N a^End", kane::express<N>(a, ev));
+  show("^N w^B6", kane::express<N>(w, ev));
+  show("^N al^B6", kane::express<N>(alpha, ev));
   // The 6x6 geometric Jacobian: partial angular velocities of B6 over partial
   // velocities of the end point, u = q'.
   Eigen::Matrix<double, 6, 6> J;
-  J << kane::partial_velocities<N>(kane::angular_velocity<N, B6>(), ev),
-      kane::partial_velocities<N>(kane::velocity<N, End>(), ev);
+  J << kane::partial_velocities<N>(w, ev), kane::partial_velocities<N>(v, ev);
   std::printf("J row 4  ");
   for (int j = 0; j < 6; ++j) std::printf(" % .4f", J(3, j));
   std::printf("\n");
   const Eigen::Matrix<double, 6, 1> u = Eigen::Map<const Eigen::Matrix<double, 6, 1>>(s.qd.data());
-  const bool jacobian_ok =
-      (J.bottomRows<3>() * u - kane::express<N>(kane::velocity<N, End>(), ev).eigen()).norm() < 1e-14;
+  const bool jacobian_ok = (J.bottomRows<3>() * u - kane::express<N>(v, ev).eigen()).norm() < 1e-14;
   // The end point is fixed in B6: the two-point theorem from J6 gives the same velocity.
   const auto v2pt = kane::express<N>(kane::two_point_velocity<N, B6, J6, End>(), ev);
-  return jacobian_ok && kane::is_approx(v2pt, kane::express<N>(kane::velocity<N, End>(), ev), 1e-14) ? 0 : 1;
+  return jacobian_ok && kane::is_approx(v2pt, kane::express<N>(v, ev), 1e-14) ? 0 : 1;
 }

@@ -27,11 +27,11 @@ int main() {
   s.qdd = {-0.2, 0.5};
   s.p = {1.2, 0.7};
 
-  kane::evaluator<decltype(s), kane::frames<B>> ev;
-  ev.update(s);
-
   constexpr auto v2 = kane::velocity<N, P2>();  // ^N v^P2, derived at compile time
   constexpr auto a2 = kane::acceleration<N, P2>();
+  kane::evaluator_for<decltype(s), kane::reads<v2, a2>> ev;  // the frames and the level v2, a2 read
+  ev.update(s);
+
   std::printf("^N v^P2 = %s\n", kane::to_string(v2).c_str());
   const kane::vec<N> vN = kane::express<N>(v2, ev);
   const kane::vec<N> aN = kane::express<N>(a2, ev);

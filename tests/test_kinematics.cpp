@@ -148,6 +148,35 @@ TEST_CASE("kinematics: the spherical pendulum against SymPy") {
   }
 }
 
+// An evaluator for the quantities asked: the frames they read (e_B6,1 = e_B5,1, and B6's w and
+// alpha one edge below B5) and the lowest level that gives them, with SymPy's numbers.
+TEST_CASE("kinematics: evaluator_for holds the frames and the level its expressions read") {
+  using St = kane::state<double, 6>;
+  constexpr auto r = kane::position<O, End>();
+  constexpr auto v = kane::velocity<N, End>();
+  constexpr auto w = kane::angular_velocity<N, B6>();
+  constexpr auto a = kane::acceleration<N, End>();
+  using pose = kane::reads<r>;
+  using velocity = kane::reads<w, v>;
+  using acceleration = kane::reads<a, kane::e<B6, 2>>;
+  static_assert(pose::needed == kane::level::pose && velocity::needed == kane::level::velocity &&
+                acceleration::needed == kane::level::acceleration);
+  static_assert(kane::detail::size<kane::evaluator_for<St, velocity>::closure>::value == 6);  // N, B1 .. B5
+  static_assert(kane::detail::size<kane::evaluator_for<St, acceleration>::closure>::value == 7);
+  for (const auto& c : sympy_kin::arm) {
+    St s;
+    load(s, c);
+    kane::evaluator_for<St, pose> ev_pose;
+    kane::evaluator_for<St, velocity> ev_velocity;
+    kane::evaluator_for<St, acceleration> ev_acceleration;
+    ev_pose.update(s), ev_velocity.update(s), ev_acceleration.update(s);
+    CHECK(near(kane::express<N>(r, ev_pose), c.r_N, 1e-13));
+    CHECK(near(kane::express<N>(v, ev_velocity), c.v_N, 1e-13));
+    CHECK(near(kane::express<N>(w, ev_velocity), c.w_N, 1e-13));
+    CHECK(near(kane::express<N>(a, ev_acceleration), c.a_N, 1e-13));
+  }
+}
+
 TEST_CASE("kinematics: the end point of a 6-revolute arm against SymPy") {
   using St = kane::state<double, 6>;
   for (const auto& c : sympy_kin::arm) {

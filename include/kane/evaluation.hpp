@@ -5,6 +5,7 @@
 #include "kane/evaluation/configuration.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/evaluator.hpp"
+#include "kane/evaluation/evaluator_for.hpp"
 #include "kane/evaluation/kinematic_equations.hpp"
 #include "kane/evaluation/outward_pass.hpp"
 #include "kane/evaluation/status.hpp"

@@ -25,6 +25,7 @@
 // case level_velocity: kane: this evaluator computes no angular accelerations.*level::acceleration
 // case frame_not_held: evaluator_does_not_hold_the_frame_add_it_to_frames<C>
 // case third_derivative_in_state: kane: a state holds q, q' and q'' only
+// case reads_only_root: kane: these expressions read no frame but a root. hold one with kane::evaluator<State, kane::frames<F>>
 #include <kane/kane.hpp>
 
 using q1 = kane::coordinate<1>;
@@ -180,6 +181,13 @@ double use() {
 #else
   x += kane::express<N>(kane::e<C, 2>, ev_c)[0];
 #endif
+#ifdef KANE_CASE_reads_only_root
+  kane::evaluator_for<St, kane::reads<kane::e<N, 1>>> ev_for;
+#else
+  kane::evaluator_for<St, kane::reads<kane::e<A, 1>>> ev_for;
+#endif
+  ev_for.update(s);
+  x += kane::express<N>(kane::e<N, 1>, ev_for)[0];
 #ifdef KANE_CASE_third_derivative_in_state
   x += s[kane::dt(kane::dt(kane::dt(kane::q<1>)))];
 #else
