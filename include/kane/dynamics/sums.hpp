@@ -24,6 +24,7 @@
 #include "kane/dynamics/bodies.hpp"
 #include "kane/dynamics/terms.hpp"
 #include "kane/evaluation/evaluate.hpp"
+#include "kane/evaluation/evaluate_in.hpp"
 #include "kane/evaluation/memo.hpp"
 #include "kane/evaluation/status.hpp"
 #include "kane/evaluation/tables.hpp"

@@ -195,7 +195,7 @@ class evaluator<St, frames<Fs...>, Level, Speeds>
   }
 
   struct everything {
-    static constexpr auto alpha = pass_type::all_frames;
+    static constexpr auto alpha = pass_type::every_frame::alpha;
     static constexpr auto qdd = equations::every_coordinate::qdd;
   };
   template <bool Rates, class Reads = everything>

@@ -15,6 +15,7 @@
 #include "kane/detail/structure.hpp"
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/evaluate.hpp"
+#include "kane/evaluation/orthogonal_solve.hpp"
 #include "kane/evaluation/status.hpp"
 #include "kane/frames/state.hpp"
 #include "kane/speeds/generalized_speeds.hpp"
@@ -125,53 +126,6 @@ class kinematic_equations {
       return system::offset;
   }
 
-  // Y is block diagonal, each block a 1 (u = q') or of orthogonal rows (Euler parameters):
-  // W_B = Y_B^T (Y_B Y_B^T)^-1 row by row, no factorization.
-  static constexpr bool orthogonal_form = [] {
-    bool ok = !direct;
-    for (std::size_t b = 0; ok && b < system::form.count; ++b) {
-      const std::size_t first = system::form.start[b], size = system::form.start[b + 1] - first;
-      const std::size_t c = system::form.order[first];
-      ok = size == 1 ? system::m[system::form.row[c]][c] == entry::one : system::orthogonal[b];
-    }
-    for (std::size_t c = 0; ok && c < nq; ++c)
-      for (std::size_t d = 0; d < nq; ++d)
-        ok = ok && (system::m[system::form.row[c]][d] == entry::zero ||
-                    system::form.block[d] == system::form.block[c]);
-    return ok;
-  }();
-  KANE_ALWAYS_INLINE solve_status solve_orthogonal(const table<scalar, nq, nq>& y) {
-    scalar residue = scalar(0);  // NaN or inf in a row, or a row norm that overflows
-    bool singular = false;
-    static_for<system::form.count>([&](auto b) {
-      constexpr std::size_t first = system::form.start[b], size = system::form.start[b + 1] - first;
-      if constexpr (size > 1) {
-        static_for<size>([&](auto a) {
-          constexpr std::size_t row = system::form.row[system::form.order[first + a]];
-          std::array<scalar, size> v;
-          static_for<size>([&](auto e) {
-            constexpr std::size_t c = system::form.order[first + e];
-            v[e] = system::m[row][c] == entry::one    ? scalar(1)
-                   : system::m[row][c] == entry::zero ? scalar(0)
-                                                      : y[row][c];
-          });
-          scalar n2 = scalar(0);
-          static_for<size>([&](auto e) { n2 += v[e] * v[e]; });
-          singular = singular || n2 == scalar(0);
-          const scalar k = scalar(1) / n2;
-          residue += k - k;
-          static_for<size>([&](auto e) {
-            constexpr std::size_t c = system::form.order[first + e];
-            if constexpr (system::x[c][row] == entry::other) kde_w_[c][row] = v[e] * k;
-          });
-        });
-      }
-    });
-    return !(residue == scalar(0)) && !singular ? solve_status::not_finite
-           : singular                           ? solve_status::singular
-                                                : solve_status::ok;
-  }
-
   // Y q' + Z = u, so q' = W u + X with W = Y^-1 (evaluation/block_solve.hpp) and X = -W Z:
   // W and X depend on q alone. The zeros and ones of W are written once, by the constructor.
   // status_ holds the check of the state; a failure there or here makes W's numbers and X NaN.
@@ -186,8 +140,8 @@ class kinematic_equations {
       }
     });
     const solve_status solved = [&] {
-      if constexpr (orthogonal_form)
-        return solve_orthogonal(y);
+      if constexpr (!direct && orthogonal_form<system>())
+        return solve_orthogonal<system>(y, kde_w_);
       else
         return solve_structured<system, false>(y, y, kde_w_);
     }();

@@ -19,6 +19,8 @@
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
 #include "kane/detail/v3.hpp"
+#include "kane/evaluation/component_rates.hpp"
+#include "kane/evaluation/edge_columns.hpp"
 #include "kane/evaluation/edge_structure.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/status.hpp"
@@ -82,14 +84,12 @@ class outward_pass {
     fill_nan(trig_.s), fill_nan(trig_.c), fill_nan(c_), fill_nan(w_), fill_nan(a_), init_roots(closure{});
   }
 
-  // Every frame's angular acceleration.
-  static constexpr std::array<bool, size> all_frames = [] {
-    std::array<bool, size> a{};
-    a.fill(true);
-    return a;
-  }();
-  struct every_frame {
-    static constexpr std::array<bool, size> alpha = all_frames;
+  struct every_frame {  // every frame's angular acceleration
+    static constexpr std::array<bool, size> alpha = [] {
+      std::array<bool, size> a{};
+      a.fill(true);
+      return a;
+    }();
   };
   // One pass at the levels asked for, frame after frame; at the acceleration level the
   // frames of Reads::alpha only (by closure index).
@@ -98,47 +98,15 @@ class outward_pass {
     pass_over<Pose, Velocity, Acceleration, Reads>(closure{}, t, rates);
   }
 
- public:
-  // k when the speeds u_k, u_k+1, u_k+2 are the components of ^R w^F in a frame G whose axes
-  // are known before F's (G = F, an ancestor, or the root): then ^R w^F = sum u g_i, and
-  // ^R alpha^F = sum u' g_i + ^R w^G x ^R w^F. 0: F's rates come from its edge.
-  template <class F, class Rates>
-  static constexpr std::size_t component_speeds_of() {
-    using Sp = typename Rates::speed_set;
-    if constexpr (std::is_void_v<Sp> || !is_edge<F>)
-      return 0;
-    else if constexpr (component_speeds<Sp, F>() == 0)
-      return 0;
-    else {
-      constexpr std::size_t k = component_speeds<Sp, F>();
-      using G = typename component_row<row_t<Sp, k - 1>>::frame;
-      if constexpr (!is_edge<G>)
-        return k;
-      else if constexpr (contains<G, closure>::value && !spin_edge<G>)
-        return index<G>() <= index<F>() ? k : 0;
-      else
-        return 0;
-    }
-  }
-
- protected:
-  template <class F, class Rates>
-  using component_frame =
-      typename component_row<row_t<typename Rates::speed_set, component_speeds_of<F, Rates>() - 1>>::frame;
-  // sum x_i g_i, x_i = u_k+i-1 (D = 0) or u'_k+i-1 (D = 1)
+  // ^R w^F = sum u_k+i-1 g_i (D = 0), ^R alpha^F = sum u'_k+i-1 g_i + ^R w^G x ^R w^F (D = 1)
   template <class F, std::size_t D, class Rates>
   KANE_ALWAYS_INLINE v3<scalar> components_value(const Rates& rates) const {
-    constexpr std::size_t k = component_speeds_of<F, Rates>();
-    using G = component_frame<F, Rates>;
-    // NaN where the kinematic equations failed, as for the rates they give (evaluator.hpp)
-    const auto spoil = nan_unless<scalar>(rates.status() == solve_status::ok);
-    scalar x = eval_scalar(speed<k, D>{}, rates), y = eval_scalar(speed<k + 1, D>{}, rates),
-           z = eval_scalar(speed<k + 2, D>{}, rates);
-    spoil(x), spoil(y), spoil(z);
-    if constexpr (!is_edge<G>)
-      return {x, y, z};
-    else
-      return x * column<G>(0) + y * column<G>(1) + z * column<G>(2);
+    using G = component_frame_t<closure, F, Rates>;
+    v3<scalar> x = component_values<component_speeds_in<closure, F, Rates>(), D>(rates);
+    if constexpr (is_edge<G>) x = x.x * column<G>(0) + x.y * column<G>(1) + x.z * column<G>(2);
+    if constexpr (D == 1 && is_edge<G> && !std::is_same_v<G, F>)
+      x = x + cross3(load3(w_[index<G>()].data()), load3(w_[index<F>()].data()));
+    return x;
   }
   // element by element (a wide copy of values just written narrowly would stall) and unrolled
   // (after a loop g++ no longer forwards the pass's stores to the reads that follow)
@@ -189,24 +157,16 @@ class outward_pass {
   template <bool Pose, bool Velocity, bool Acceleration, class F, bool Skipped = false, class Rates>
   KANE_ALWAYS_INLINE void edge(const trig_type& t, const Rates& rates) {
     if constexpr (Pose) pose_edge<F>(t, rates);
-    if constexpr (Velocity) {
-      if constexpr (component_speeds_of<F, Rates>() != 0)
-        store3(w_[index<F>()].data(), components_value<F, 0>(rates));
-      else
-        velocity_edge<F>(rates);
-    }
-    if constexpr (Skipped) {
+    if constexpr (Velocity && component_speeds_in<closure, F, Rates>() != 0)
+      store3(w_[index<F>()].data(), components_value<F, 0>(rates));
+    else if constexpr (Velocity)
+      velocity_edge<F>(rates);
+    if constexpr (Skipped)
       a_[index<F>()].fill(std::numeric_limits<scalar>::quiet_NaN());
-    } else if constexpr (Acceleration) {
-      if constexpr (component_speeds_of<F, Rates>() != 0) {
-        using G = component_frame<F, Rates>;
-        vec3 a = components_value<F, 1>(rates);
-        if constexpr (is_edge<G> && !std::is_same_v<G, F>)
-          a = a + cross3(load3(w_[index<G>()].data()), load3(w_[index<F>()].data()));
-        store3(a_[index<F>()].data(), a);
-      } else
-        acceleration_edge<F>(rates);
-    }
+    else if constexpr (Acceleration && component_speeds_in<closure, F, Rates>() != 0)
+      store3(a_[index<F>()].data(), components_value<F, 1>(rates));
+    else if constexpr (Acceleration)
+      acceleration_edge<F>(rates);
   }
 
   using vec3 = v3<scalar>;
@@ -299,45 +259,8 @@ class outward_pass {
 
   template <class F, class Rates>
   KANE_ALWAYS_INLINE void pose_edge(const trig_type& t, const Rates& rates) {
-    if constexpr (spin_edge<F>) {
-      // axes unknown: they stay NaN, and no expression can read them (axes<F>)
-    } else if constexpr (is_edge<F> && matrix_edge<F>) {
-      const matrix3 e = F::step::template matrix<scalar>(t, rates.state());
-      Eigen::Map<matrix3> m(c_[index<F>()].data());
-      if constexpr (!is_edge<typename F::tree_parent>)
-        m = e.transpose();
-      else
-        m.noalias() = axes<typename F::tree_parent>() * e.transpose();
-    } else if constexpr (is_edge<F>) {
-      using P = typename F::tree_parent;
-      using K = typename F::step::axis;
-      constexpr std::size_t q = F::step::coordinate_index;
-      constexpr int p = unit_axis<K>::principal;
-      scalar c, s;
-      if constexpr (q != 0) {
-        c = t.template cos<q>(), s = t.template sin<q>();
-      } else {
-        using std::cos;
-        using std::sin;
-        const scalar a = angle_value<scalar>(F::step::angle, rates.state());
-        c = cos(a), s = sin(a);
-      }
-      scalar* cf = c_[index<F>()].data();
-      if constexpr (p >= 0 && !is_edge<P>) {  // the parent's axes are the identity
-        constexpr int a = (p + 1) % 3, b = (p + 2) % 3;
-        c_[index<F>()] = {};
-        cf[3 * p + p] = scalar(1), cf[3 * a + a] = c, cf[3 * a + b] = s, cf[3 * b + a] = -s,
-                   cf[3 * b + b] = c;
-      } else if constexpr (p >= 0) {
-        turn_columns<column_pattern<P>(), p>(cf, axes<P>().data(), c, s);
-      } else {  // e_Fj = sum_k (^P P^F)_jk e_Pk
-        const matrix3 e = elementary<scalar, K>(c, s);
-        Eigen::Map<matrix3> m(cf);
-        if constexpr (!is_edge<P>)
-          m = e.transpose();
-        else
-          m.noalias() = axes<P>() * e.transpose();
-      }
+    if constexpr (is_edge<F> && !spin_edge<F>) {  // a spinning frame's axes stay NaN: axes<F> refuses them
+      edge_columns<F>(c_[index<F>()].data(), c_[index<typename F::tree_parent>()].data(), t, rates.state());
     }
   }
 

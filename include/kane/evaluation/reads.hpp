@@ -71,11 +71,11 @@ constexpr void mark_reads(Out& out) {
 
 // The reads of the expressions Xs at the acceleration level of the pass Pass with rates
 // Rates (an evaluator): alphas propagate to parents through edges, not through frames
-// whose speeds give their rates (outward_pass::component_speeds_of).
+// whose speeds give their rates (component_rates.hpp).
 template <class Rates, class... Xs>
 constexpr auto acceleration_reads_of(list<Xs...>) {
   using Closure = typename Rates::closure;
-  using Pass = outward_pass<double, Closure, level::acceleration>;
+  using Pass = outward_pass<double, Closure, level::acceleration>;  // its size
   constexpr std::size_t NQ = Rates::state_type::nq;
   acceleration_reads<Pass::size, NQ> out;
   (mark_reads<Closure, Xs>(out), ...);
@@ -88,7 +88,7 @@ constexpr auto acceleration_reads_of(list<Xs...>) {
         return std::size_t(index_of<typename F::tree_parent, Closure>::value);
     }()...};
     constexpr std::array<bool, n> by_edge{
-        (!std::is_void_v<typename F::tree_parent> && Pass::template component_speeds_of<F, Rates>() == 0)...};
+        (!std::is_void_v<typename F::tree_parent> && component_speeds_in<Closure, F, Rates>() == 0)...};
     using edge_marker = void (*)(acceleration_reads<Pass::size, NQ>&);
     constexpr std::array<edge_marker, n> edges{&mark_edge<Closure, F, acceleration_reads<Pass::size, NQ>>...};
     for (std::size_t k = n; k-- > 0;)

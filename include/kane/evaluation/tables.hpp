@@ -16,6 +16,7 @@
 
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/evaluate.hpp"
+#include "kane/evaluation/evaluate_in.hpp"
 #include "kane/evaluation/evaluator.hpp"
 #include "kane/evaluation/memo.hpp"
 #include "kane/evaluation/status.hpp"
