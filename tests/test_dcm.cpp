@@ -1,4 +1,5 @@
 #include <catch2/catch.hpp>
+#include <type_traits>
 
 #include <cmath>
 #include <limits>
@@ -265,4 +266,16 @@ TEST_CASE("dcm: float evaluation agrees with double") {
   const auto pf = direction_cosines<N, F>(sf);
   static_assert(std::is_same_v<decltype(pf), const kane::dcm<N, F, float>>);
   CHECK((pf.eigen().cast<double>() - direction_cosines<N, F>(sd).eigen()).cwiseAbs().maxCoeff() < 1e-5);
+}
+
+// eigen() of a temporary, const or not, is a copy: a view would outlive it.
+TEST_CASE("dcm: eigen() of an rvalue, const or not, is a matrix, not a view") {
+  kane::state<double, 3> s;
+  s.q = {0.3, -0.2, 0.9};
+  using M = kane::dcm<N, C>;
+  static_assert(std::is_same_v<decltype(std::declval<const M&&>().eigen()), Eigen::Matrix3d>);
+  static_assert(std::is_same_v<decltype(std::declval<M&&>().eigen()), Eigen::Matrix3d>);
+  const auto make = [&]() -> const M { return kane::direction_cosines<N, C>(s); };
+  const Eigen::Matrix3d m = make().eigen();
+  CHECK((m - kane::direction_cosines<N, C>(s).eigen()).cwiseAbs().maxCoeff() == 0);
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
 
 #include <kane/kane.hpp>
 
@@ -46,6 +47,14 @@ TEST_CASE("dynamics: a pendulum, m L^2 q'' = -m g L sin q") {
   CHECK(st == kane::solve_status::ok);
   CHECK(ud(0) == Approx(-9.81 / 0.7 * std::sin(0.4)).epsilon(1e-14));
   CHECK(kane::kinetic_energy<pendulum>(ev) == Approx(0.5 * 2.0 * 0.49 * 1.3 * 1.3).epsilon(1e-15));
+}
+
+TEST_CASE("dynamics: statuses have names") {
+  CHECK(std::string(kane::to_string(kane::solve_status::ok)) == "ok");
+  CHECK(std::string(kane::to_string(kane::solve_status::singular)) == "singular");
+  CHECK(std::string(kane::to_string(kane::solve_status::not_finite)) == "not_finite");
+  CHECK(std::string(kane::to_string(kane::solve_status::not_converged)) == "not_converged");
+  CHECK(std::string(kane::to_string(kane::solve_status::not_a_rotation)) == "not_a_rotation");
 }
 
 TEST_CASE("dynamics: kane::motion over an evaluator without a speed set integrates u = q'") {

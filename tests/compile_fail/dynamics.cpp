@@ -9,6 +9,9 @@
 // case equations_on_other_speeds: evaluator_and_constraints_use_different_speed_sets<kane::qdot_speeds<2>, kane::speeds<
 // case particle_mass_not_scalar: kane: particle<P, m> takes a scalar expression m
 // case inertia_not_inertia: kane: rigid_body<B, Bo, m, I> takes I = kane::inertia<F, Bo, ...>
+// case motion_wrong_size: kane: x and dx/dt of kane::motion hold nq \+ nu numbers
+#include <array>
+
 #include <kane/kane.hpp>
 
 template <std::size_t I>
@@ -83,4 +86,18 @@ double use_tied() {
   ev.update(s);
   return kane::reduced_mass_matrix_and_forcing<sys, tied>(ev, kane::solve_constraints<tied>(ev))
       .reduced.M(0, 0);
+}
+
+double integrate() {
+  kane::state<double, 2, 2, 9> s;
+  using ev_type =
+      kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, kane::qdot_speeds<2>>;
+  kane::motion<sys, ev_type> f(s);
+#ifdef KANE_CASE_motion_wrong_size
+  std::array<double, 3> x{}, dx{};
+#else
+  std::array<double, 4> x{}, dx{};
+#endif
+  f(x, dx, 0.0);
+  return dx[0];
 }

@@ -8,7 +8,8 @@
 //   kane::constrained_motion<System, NH, Evaluator>  // nonholonomic: x = (q, u_ind)
 //
 // Without a speed set the evaluator's speeds are u = q' (x = (q, q'), dx/dt = (q', q'')).
-// x and dxdt are any containers with operator[] and nq + nu entries
+// x and dxdt are any containers with operator[] and nq + nu entries (a size known at compile time
+// is checked; motion::size)
 // (std::array, Eigen vectors or maps, plain arrays); no allocation. status()
 // is that of the last call: when it is not ok, dxdt is NaN.
 #pragma once
@@ -16,6 +17,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <tuple>
 #include <type_traits>
 
 #include "kane/dynamics/inverse_dynamics.hpp"
@@ -23,6 +25,31 @@
 #include "kane/evaluation/reads.hpp"
 
 namespace kane {
+
+namespace detail {
+// The number of entries of a container known at compile time (std::array, a C array, a
+// fixed-size Eigen vector), or 0.
+template <class X>
+constexpr std::size_t fixed_size() {
+  using T = std::remove_cvref_t<X>;
+  if constexpr (std::is_array_v<T>)
+    return std::extent_v<T>;
+  else if constexpr (requires { std::tuple_size<T>::value; })
+    return std::tuple_size<T>::value;
+  else if constexpr (requires { T::SizeAtCompileTime; })
+    return T::SizeAtCompileTime > 0 ? std::size_t(T::SizeAtCompileTime) : 0;
+  else
+    return 0;
+}
+template <std::size_t Size, class X, class DX>
+constexpr bool sizes_checked() {
+  static_assert((fixed_size<X>() == 0 || fixed_size<X>() == Size) &&
+                    (fixed_size<DX>() == 0 || fixed_size<DX>() == Size),
+                "kane: x and dx/dt of kane::motion hold nq + nu numbers (constrained_motion: nq + p); "
+                "declare them with motion::size entries");
+  return true;
+}
+}  // namespace detail
 
 template <class Sys, class Ev>
 class motion {
@@ -34,8 +61,9 @@ class motion {
   explicit motion(const state_type& s) : s_(s) { s_.ud = {}, s_.qdd = {}; }
 
   // Numbers: one function body (the passes, the tables and Eigen's fixed-size loops inlined).
+  // A container of a size known at compile time is checked then; others must hold size entries.
   template <class X, class DX>
-  void operator()(const X& x, DX& dxdt, scalar time) {
+  requires(detail::sizes_checked<size, X, DX>()) void operator()(const X& x, DX& dxdt, scalar time) {
     detail::flat<scalar>([&] { step(x, dxdt, time); });
   }
 
@@ -92,8 +120,9 @@ class constrained_motion {
   explicit constrained_motion(const state_type& s) : s_(s) { s_.ud = {}; }
 
   // Numbers: one function body (the passes, the tables and Eigen's fixed-size loops inlined).
+  // A container of a size known at compile time is checked then; others must hold size entries.
   template <class X, class DX>
-  void operator()(const X& x, DX& dxdt, scalar time) {
+  requires(detail::sizes_checked<size, X, DX>()) void operator()(const X& x, DX& dxdt, scalar time) {
     detail::flat<scalar>([&] { step(x, dxdt, time); });
   }
 

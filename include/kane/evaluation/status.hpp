@@ -24,6 +24,22 @@
 namespace kane {
 
 enum class solve_status { ok, singular, not_finite, not_converged, not_a_rotation };
+// The name of a status ("ok", "singular", ...).
+constexpr const char* to_string(solve_status s) {
+  switch (s) {
+    case solve_status::ok:
+      return "ok";
+    case solve_status::singular:
+      return "singular";
+    case solve_status::not_finite:
+      return "not_finite";
+    case solve_status::not_converged:
+      return "not_converged";
+    case solve_status::not_a_rotation:
+      return "not_a_rotation";
+  }
+  return "unknown";
+}
 
 namespace detail {
 // 0 if every number of a is finite, NaN otherwise: x - x is 0 for a finite x and

@@ -41,6 +41,7 @@ class dcm {
   // On a temporary it is a copy, so that no view outlives its matrix.
   Eigen::Map<const eigen_type> eigen() const& { return Eigen::Map<const eigen_type>(m_); }
   eigen_type eigen() && { return Eigen::Map<const eigen_type>(m_); }
+  eigen_type eigen() const&& { return Eigen::Map<const eigen_type>(m_); }  // a copy: no view of a temporary
 
   // ^B P^A = (^A P^B)^T.
   dcm<B, A, S> transpose() const { return dcm<B, A, S>(eigen().transpose()); }
