@@ -14,7 +14,7 @@
 
 #include "kane/detail/list.hpp"
 #include "kane/detail/tree.hpp"
-#include "kane/evaluation/outward_pass.hpp"
+#include "kane/evaluation/component_rates.hpp"
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative_traits.hpp"
 
@@ -69,15 +69,15 @@ constexpr void mark_reads(Out& out) {
     mark_reads<Closure, std::remove_cvref_t<decltype(std::declval<const X&>().x)>>(out);
 }
 
-// The reads of the expressions Xs at the acceleration level of the pass Pass with rates
-// Rates (an evaluator): alphas propagate to parents through edges, not through frames
+// The reads of the expressions Xs at the acceleration level of the evaluator Rates: alphas
+// propagate to parents through edges, not through frames
 // whose speeds give their rates (component_rates.hpp).
 template <class Rates, class... Xs>
 constexpr auto acceleration_reads_of(list<Xs...>) {
   using Closure = typename Rates::closure;
-  using Pass = outward_pass<double, Closure, level::acceleration>;  // its size
+  constexpr std::size_t N = size<Closure>::value;
   constexpr std::size_t NQ = Rates::state_type::nq;
-  acceleration_reads<Pass::size, NQ> out;
+  acceleration_reads<N, NQ> out;
   (mark_reads<Closure, Xs>(out), ...);
   [&]<class... F>(list<F...>) {
     constexpr std::size_t n = sizeof...(F);
@@ -89,8 +89,8 @@ constexpr auto acceleration_reads_of(list<Xs...>) {
     }()...};
     constexpr std::array<bool, n> by_edge{
         (!std::is_void_v<typename F::tree_parent> && component_speeds_in<Closure, F, Rates>() == 0)...};
-    using edge_marker = void (*)(acceleration_reads<Pass::size, NQ>&);
-    constexpr std::array<edge_marker, n> edges{&mark_edge<Closure, F, acceleration_reads<Pass::size, NQ>>...};
+    using edge_marker = void (*)(acceleration_reads<N, NQ>&);
+    constexpr std::array<edge_marker, n> edges{&mark_edge<Closure, F, acceleration_reads<N, NQ>>...};
     for (std::size_t k = n; k-- > 0;)
       if (out.alpha[k] && by_edge[k]) {
         out.alpha[parents[k]] = true;
