@@ -256,8 +256,9 @@ S dynamics(const kane::state<S, 6>& s6) {
   const auto lin = kane::linearize<m::system, decltype(ev), kane::inputs<m::p<19>>>(s);
   const S active =
       kane::evaluate(kane::generalized_active_force<m::N, m::system, kane::qdot_speeds<2>, 1>(), ev);
-  return eom.M.sum() + ud.sum() + kane::kinetic_energy<m::system>(ev) + dx[3] + lin.A.sum() + lin.B.sum() +
-         active;
+  return eom.M.sum() + ud.sum() + kane::kinetic_energy<m::system>(ev) + kane::potential_energy<m::system>(ev) +
+         kane::linear_momentum<m::system>(ev)[0] + kane::angular_momentum<m::system>(ev)[1] + dx[3] + lin.A.sum() +
+         lin.B.sum() + active;
 }
 
 // Printing.

@@ -112,28 +112,4 @@ std::pair<Eigen::Matrix<S, int(N), 1>, solve_status> speed_derivatives(const equ
   });
 }
 
-// T = sum m v . v / 2 + w . I . w / 2 at the evaluator's state (level::velocity or higher).
-template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value typename Ev::scalar kinetic_energy(const Ev& ev) {
-  using S = typename Ev::scalar;
-  using R = typename Ev::root;
-  S energy = S(0);
-  [&]<class... X>(detail::list<X...>) {
-    (
-        [&] {
-          if constexpr (detail::is_particle<X> || detail::is_body<X>) {
-            using P = typename detail::point_of_mass<X>::type;
-            const Eigen::Matrix<S, 3, 1> v = detail::in_root<R>(velocity<R, P>(), ev);
-            energy += detail::eval_scalar(X::mass, ev) * v.squaredNorm() / 2;
-          }
-          if constexpr (detail::is_body<X>) {
-            const Eigen::Matrix<S, 3, 1> w = detail::in_root<R>(angular_velocity<R, typename X::frame>(), ev);
-            energy += w.dot(detail::inertia_in_root<typename X::inertia_type>(ev) * w) / 2;
-          }
-        }(),
-        ...);
-  }(typename Sys::items{});
-  return energy;
-}
-
 }  // namespace kane

@@ -1,0 +1,170 @@
+// Momenta and energies of a system, measured in the evaluator's root frame R:
+//
+//   kane::linear_momentum<Sys>(ev)       ^R p = sum m ^R v^P
+//   kane::angular_momentum<Sys, O>(ev)   ^R H^O = sum r^OP x m ^R v^P + I . ^R w^B
+//                                        (O = kane::mass_centre, the default: the system's)
+//   kane::kinetic_energy<Sys>(ev)        T = sum m v . v / 2 + w . I . w / 2
+//   kane::potential_energy<Sys, O>(ev)   V = -sum m g . r^OP over the gravity loads, zero at O
+//                                        (default: the origin that locates the first mass)
+//
+// P runs over the particles and mass centres. Positions need level::pose, the rest
+// level::velocity; the vectors come as vec<R>.
+#pragma once
+
+#include <type_traits>
+
+#include <Eigen/Core>
+
+#include "kane/dynamics/bodies.hpp"
+#include "kane/dynamics/sums.hpp"
+#include "kane/dynamics/terms.hpp"
+#include "kane/evaluation/evaluate.hpp"
+#include "kane/frames/vec.hpp"
+#include "kane/kinematics/point.hpp"
+
+namespace kane {
+
+// The mass centre of the system, as the point of angular_momentum.
+struct mass_centre {};
+
+namespace detail {
+template <class P>
+struct chain_origin {
+  using type = typename chain_origin<typename P::from>::type;
+};
+template <class F>
+struct chain_origin<origin<F>> {
+  using type = origin<F>;
+};
+template <class P>
+requires std::is_void_v<typename P::from> && (!std::is_same_v<P, origin<typename P::fixed_frame>>)
+struct chain_origin<P> {
+  using type = P;
+};
+
+template <class X>
+inline constexpr bool has_mass = is_particle<X> || is_body<X>;
+template <class... X>
+struct first_mass;
+template <class X, class... Xs>
+struct first_mass<X, Xs...> {
+  using type = std::conditional_t<has_mass<X>, X, typename first_mass<Xs...>::type>;
+};
+template <>
+struct first_mass<> {
+  using type = void;
+};
+template <class Sys>
+struct reference_point {
+  using items = typename Sys::items;
+  using X = typename decltype([]<class... Y>(list<Y...>) { return std::type_identity<first_mass<Y...>>{}; }(
+      items{}))::type::type;
+  static_assert(!std::is_void_v<X>, "kane: a system without particles or bodies has no momenta or energies");
+  using type = typename chain_origin<typename point_of_mass<X>::type>::type;
+};
+
+// f(X, r^{Ref,P} in R) for every item with mass; Ref = the reference point of Sys.
+template <class Sys, class Ev, class F>
+void for_each_mass(const Ev& ev, F&& f) {
+  using R = typename Ev::root;
+  using Ref = typename reference_point<Sys>::type;
+  [&]<class... X>(list<X...>) {
+    (
+        [&] {
+          if constexpr (has_mass<X>) {
+            using P = typename point_of_mass<X>::type;
+            f(std::type_identity<X>{}, in_root<R>(position<Ref, P>(), ev));
+          }
+        }(),
+        ...);
+  }(typename Sys::items{});
+}
+}  // namespace detail
+
+template <class Sys, class Ev>
+requires detail::is_evaluator<Ev>::value vec<typename Ev::root, typename Ev::scalar> linear_momentum(const Ev& ev) {
+  using S = typename Ev::scalar;
+  using R = typename Ev::root;
+  Eigen::Matrix<S, 3, 1> p = Eigen::Matrix<S, 3, 1>::Zero();
+  detail::for_each_mass<Sys>(ev, [&]<class X>(std::type_identity<X>, const auto&) {
+    p += detail::eval_scalar(X::mass, ev) * detail::in_root<R>(velocity<R, typename detail::point_of_mass<X>::type>(), ev);
+  });
+  return vec<R, S>(p);
+}
+
+template <class Sys, class O = mass_centre, class Ev>
+requires detail::is_evaluator<Ev>::value && (std::is_same_v<O, mass_centre> || Point<O>)
+vec<typename Ev::root, typename Ev::scalar> angular_momentum(const Ev& ev) {
+  using S = typename Ev::scalar;
+  using R = typename Ev::root;
+  using V = Eigen::Matrix<S, 3, 1>;
+  V o = V::Zero();  // r^{Ref,O}
+  if constexpr (std::is_same_v<O, mass_centre>) {
+    S total = S(0);
+    detail::for_each_mass<Sys>(ev, [&]<class X>(std::type_identity<X>, const V& r) {
+      const S m = detail::eval_scalar(X::mass, ev);
+      o += m * r;
+      total += m;
+    });
+    o /= total;
+  } else {
+    o = detail::in_root<R>(position<typename detail::reference_point<Sys>::type, O>(), ev);
+  }
+  V h = V::Zero();
+  detail::for_each_mass<Sys>(ev, [&]<class X>(std::type_identity<X>, const V& r) {
+    using P = typename detail::point_of_mass<X>::type;
+    h += (r - o).cross(detail::eval_scalar(X::mass, ev) * detail::in_root<R>(velocity<R, P>(), ev));
+    if constexpr (detail::is_body<X>)
+      h += detail::inertia_in_root<typename X::inertia_type>(ev) *
+           detail::in_root<R>(angular_velocity<R, typename X::frame>(), ev);
+  });
+  return vec<R, S>(h);
+}
+
+template <class Sys, class Ev>
+requires detail::is_evaluator<Ev>::value typename Ev::scalar kinetic_energy(const Ev& ev) {
+  using S = typename Ev::scalar;
+  using R = typename Ev::root;
+  S energy = S(0);
+  [&]<class... X>(detail::list<X...>) {
+    (
+        [&] {
+          if constexpr (detail::has_mass<X>) {
+            using P = typename detail::point_of_mass<X>::type;
+            const Eigen::Matrix<S, 3, 1> v = detail::in_root<R>(velocity<R, P>(), ev);
+            energy += detail::eval_scalar(X::mass, ev) * v.squaredNorm() / 2;
+          }
+          if constexpr (detail::is_body<X>) {
+            const Eigen::Matrix<S, 3, 1> w = detail::in_root<R>(angular_velocity<R, typename X::frame>(), ev);
+            energy += w.dot(detail::inertia_in_root<typename X::inertia_type>(ev) * w) / 2;
+          }
+        }(),
+        ...);
+  }(typename Sys::items{});
+  return energy;
+}
+
+template <class Sys, class O = void, class Ev>
+requires detail::is_evaluator<Ev>::value && (std::is_void_v<O> || Point<O>)
+typename Ev::scalar potential_energy(const Ev& ev) {
+  using S = typename Ev::scalar;
+  using R = typename Ev::root;
+  using V = Eigen::Matrix<S, 3, 1>;
+  V g = V::Zero();
+  [&]<class... X>(detail::list<X...>) {
+    ([&] {
+      if constexpr (detail::is_gravity<X>) g += detail::in_root<R>(X::vector, ev);
+    }(),
+     ...);
+  }(typename Sys::items{});
+  V o = V::Zero();
+  if constexpr (!std::is_void_v<O>)
+    o = detail::in_root<R>(position<typename detail::reference_point<Sys>::type, O>(), ev);
+  S energy = S(0);
+  detail::for_each_mass<Sys>(ev, [&]<class X>(std::type_identity<X>, const V& r) {
+    energy -= detail::eval_scalar(X::mass, ev) * g.dot(r - o);
+  });
+  return energy;
+}
+
+}  // namespace kane

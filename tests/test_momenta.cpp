@@ -1,0 +1,127 @@
+// Momenta and energies (dynamics/momenta.hpp): against SymPy's angular momentum and
+// potential energy (tests/data/gen_dynamics.py), closed forms, and their conservation
+// along RK4 runs of free systems.
+#include <array>
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include <kane/kane.hpp>
+
+#include "../examples/models/free_body.hpp"
+#include "../examples/models/pendulum3d.hpp"
+#include "../examples/rk4.hpp"
+#include "data/sympy_dynamics.hpp"
+
+namespace {
+using kane::e;
+template <std::size_t I>
+inline constexpr kane::parameter<I> p{};
+namespace pd = models::pendulum3d;
+namespace fm = models::free_body;
+
+// SymPy's free body (test_dynamics.cpp): m p4, inertia p5..p10 about Bo in B, gravity p11.
+using body = kane::rigid_body<fm::B, fm::Bo, p<4>, kane::inertia<fm::B, fm::Bo, p<5>, p<6>, p<7>, p<8>, p<9>, p<10>>>;
+using free_system = kane::system<body, kane::gravity<-p<11> * e<fm::N, 3>>>;
+using body_state = kane::state<double, 7, 6, 17>;
+using body_evaluator = kane::evaluator<body_state, kane::frames<fm::B>, kane::level::acceleration, fm::speeds>;
+
+body_state body_at(const sympy_dynamics::body_case& x) {
+  body_state s;
+  const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> c(x.dcm);
+  const Eigen::Quaterniond q(Eigen::Matrix3d(c.transpose()));
+  s.q = {q.w(), q.x(), q.y(), q.z(), x.q[3], x.q[4], x.q[5]};
+  for (int i = 0; i < 6; ++i) s.u[i] = x.u[i];
+  const auto& bp = sympy_dynamics::body_p;
+  for (int i = 0; i < 17; ++i) s.p[i] = i < 3 ? bp[11 + i] : i < 14 ? bp[i - 3] : bp[i];
+  return s;
+}
+}  // namespace
+
+TEST_CASE("momenta: a free body's momenta against SymPy and the transfer to another point") {
+  for (const auto& x : sympy_dynamics::body) {
+    const body_state s = body_at(x);
+    body_evaluator ev;
+    ev.update(s);
+    const double m = s.p[3];
+    const Eigen::Vector3d v(x.u[3], x.u[4], x.u[5]), r(x.q[3], x.q[4], x.q[5]);
+    const Eigen::Vector3d h(x.H_N[0], x.H_N[1], x.H_N[2]);
+    const kane::vec<fm::N> p = kane::linear_momentum<free_system>(ev);
+    CHECK((p.eigen() - m * v).norm() < 1e-14 * m * v.norm());
+    const kane::vec<fm::N> hg = kane::angular_momentum<free_system>(ev);
+    CHECK((hg.eigen() - h).norm() < 1e-14 * h.norm());
+    CHECK((kane::angular_momentum<free_system, fm::Bo>(ev).eigen() - h).norm() < 1e-14 * h.norm());
+    // H^O = H^Bo + r^OBo x m v^Bo
+    const Eigen::Vector3d ho = h + r.cross(m * v);
+    CHECK((kane::angular_momentum<free_system, fm::O>(ev).eigen() - ho).norm() < 1e-14 * ho.norm());
+    CHECK(kane::kinetic_energy<free_system>(ev) == Approx(x.T).epsilon(1e-14));
+    // V = m g z, zero at O; zero at Bo
+    CHECK(kane::potential_energy<free_system>(ev) == Approx(m * s.p[10] * x.q[5]).epsilon(1e-14));
+    CHECK(kane::potential_energy<free_system, fm::Bo>(ev) == 0.0);
+  }
+}
+
+TEST_CASE("momenta: the 3D double pendulum's potential energy against SymPy's") {
+  for (const auto& x : sympy_dynamics::pendulum) {
+    pd::state s;
+    for (int i = 0; i < 21; ++i) s.p[i] = sympy_dynamics::pendulum_p[i];
+    s.q = {x.q[0], x.q[1]};
+    s.u = {x.u[0], x.u[1]};
+    pd::evaluator ev;
+    ev.update(s);
+    // SymPy's V adds the torsion spring k q2^2 / 2, which is a torque load here
+    const double spring = s.p[18] * x.q[1] * x.q[1] / 2;
+    CHECK(kane::potential_energy<pd::system>(ev) + spring == Approx(x.V).epsilon(1e-14));
+    // zero at the joint J: V^J = V^O - m_total g . r^OJ = V^O + m_total g z_J
+    const double mass = s.p[2] + s.p[3] + s.p[4], zj = -s.p[0] * std::cos(x.q[0]);
+    CHECK(kane::potential_energy<pd::system, pd::J>(ev) ==
+          Approx(kane::potential_energy<pd::system>(ev) - mass * s.p[17] * zj).epsilon(1e-13));
+  }
+}
+
+TEST_CASE("momenta: a tumbling free body keeps its momenta over an RK4 run") {
+  using gravity_free = kane::system<body>;
+  using rhs = kane::motion<gravity_free, body_evaluator>;
+  body_state s;
+  s.p = {0, 0, 0, 1.3, 0.7, 0.9, 1.1, 0.05, -0.04, 0.08, 0};
+  rhs f(s);
+  std::array<double, rhs::size> x = {1, 0, 0, 0, 0.1, -0.2, 0.3, 0.3, -2.0, 5.0, 1.0, 0.5, -0.7};
+  const auto momenta = [&] {
+    body_state b = s;
+    for (std::size_t i = 0; i < 7; ++i) b.q[i] = x[i];
+    for (std::size_t i = 0; i < 6; ++i) b.u[i] = x[7 + i];
+    body_evaluator ev;
+    ev.update(b);
+    return std::array<Eigen::Vector3d, 3>{kane::linear_momentum<gravity_free>(ev).eigen(),
+                                          kane::angular_momentum<gravity_free>(ev).eigen(),
+                                          kane::angular_momentum<gravity_free, fm::O>(ev).eigen()};
+  };
+  const auto m0 = momenta();
+  for (int k = 0; k < 2000; ++k) rk4_step(f, x, 1e-3 * k, 1e-3);
+  REQUIRE(f.status() == kane::solve_status::ok);
+  const auto m1 = momenta();
+  for (int i = 0; i < 3; ++i) CHECK((m1[i] - m0[i]).norm() < 1e-12 * m0[i].norm());
+  // the body turned: H^O is constant in N, not in B
+  CHECK(std::abs(x[0] - 1.0) > 0.1);
+}
+
+TEST_CASE("momenta: an undamped 3D double pendulum keeps T + V over an RK4 run") {
+  using rhs = kane::motion<pd::system, pd::evaluator>;
+  pd::state s;
+  for (int i = 0; i < 21; ++i) s.p[i] = sympy_dynamics::pendulum_p[i];
+  s.p[18] = s.p[19] = s.p[20] = 0;  // no spring, damper or drag
+  rhs f(s);
+  std::array<double, rhs::size> x = {0.9, -0.6, 1.5, 2.0};
+  const auto energy = [&] {
+    pd::state b = s;
+    b.q = {x[0], x[1]};
+    b.u = {x[2], x[3]};
+    pd::evaluator ev;
+    ev.update(b);
+    return kane::kinetic_energy<pd::system>(ev) + kane::potential_energy<pd::system>(ev);
+  };
+  const double e0 = energy();
+  for (int k = 0; k < 4000; ++k) rk4_step(f, x, 5e-4 * k, 5e-4);  // RK4 keeps T + V to O(h^4)
+  REQUIRE(f.status() == kane::solve_status::ok);
+  INFO("T + V = " << e0 << ", drift " << energy() - e0);
+  CHECK(std::abs(energy() - e0) < 1e-12 * std::abs(e0));
+}
