@@ -17,6 +17,12 @@
 #include "../examples/models/free_body.hpp"
 #include "../examples/models/pendulum3d.hpp"
 
+// Globals with the short names a model uses: no local of a header shadows them (-Wshadow).
+[[maybe_unused]] inline constexpr int a = 0, b = 0, c = 0, d = 0, f = 0, g = 0, h = 0, i = 0, j = 0, k = 0, l = 0,
+                                      m = 0, n = 0, o = 0, p = 0, r = 0, s = 0, t = 0, v = 0, w = 0, x = 0, y = 0,
+                                      z = 0, I = 0, J = 0, K = 0, L = 0, M = 0, R = 0, T = 0, V = 0, W = 0, X = 0,
+                                      Y = 0;
+
 namespace warnings {
 using kane::cross;
 using kane::dot;
@@ -115,7 +121,7 @@ S kinematics(const state6<S>& s) {
   pose.update(s);
   velocity.update(s);
   acceleration.update(s);
-  const auto sum = [](const auto& v) { return v[0] + v[1] + v[2]; };
+  const auto sum = [](const auto& xs) { return xs[0] + xs[1] + xs[2]; };
   return sum(kane::express<N>(r, pose)) + sum(kane::express<C>(vector_expr, pose)) +
          kane::evaluate(dq, pose) + pose.template sin_q<1>() + pose.template cos_q<6>() +
          sum(kane::express<N>(w, velocity)) + sum(kane::express<B>(v3, velocity)) +

@@ -8,6 +8,9 @@
 
 #include <cstddef>
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 struct root_frame;
@@ -20,3 +23,5 @@ template <class A, class B, class S>
 class dcm;
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

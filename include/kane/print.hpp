@@ -20,6 +20,9 @@
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/point.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 // A type's name as written in its declaration, without namespaces
@@ -209,3 +212,5 @@ requires ScalarExpr<X> || VectorExpr<X> std::ostream& operator<<(std::ostream& o
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

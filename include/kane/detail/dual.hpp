@@ -4,6 +4,9 @@
 
 #include <cmath>
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 template <class S>
@@ -59,3 +62,5 @@ struct dual {
 };
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

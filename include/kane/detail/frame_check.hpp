@@ -8,6 +8,9 @@
 
 #include <type_traits>
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 template <class F1, class F2>
@@ -97,3 +100,5 @@ inline constexpr bool check<false, Rule> = sizeof(Rule) > 0;
 }  // namespace detail
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

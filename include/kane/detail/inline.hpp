@@ -33,6 +33,9 @@
 #endif
 #endif
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 // f() in one function body when S is a number; other scalars (jets) keep
 // their calls, whose flattened bodies would multiply the compile's cost.
@@ -43,3 +46,5 @@ decltype(auto) flat(F&& f) {
   return f();
 }
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

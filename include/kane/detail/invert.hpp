@@ -16,6 +16,9 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // inv = m^-1 and true, or false if a pivot is not above tol (m finite). tol < 0:
@@ -163,3 +166,5 @@ bool solve_positive_definite(const Eigen::Matrix<S, N, N>& m, const Eigen::Matri
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

@@ -6,6 +6,9 @@
 #include <type_traits>
 #include <utility>
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 template <std::size_t I>
@@ -130,3 +133,5 @@ struct not_void<list<T...>> {
 };
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

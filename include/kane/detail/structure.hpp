@@ -9,6 +9,9 @@
 #include <cstddef>
 #include <type_traits>
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 enum class entry : unsigned char { zero, one, other };
@@ -139,3 +142,5 @@ constexpr pattern<N, N> identity_pattern() {
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

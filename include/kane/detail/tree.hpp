@@ -13,6 +13,9 @@
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/list.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // list<F, tree parent of F, ..., root>
@@ -80,3 +83,5 @@ struct frame_up {
   using type = typename F::tree_parent;
 };
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

@@ -11,6 +11,9 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 template <class S, auto Needed>
@@ -108,3 +111,5 @@ KANE_ALWAYS_INLINE trig<typename State::scalar, Needed> make_trig(const State& s
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

@@ -11,6 +11,9 @@
 
 #include "kane/detail/inline.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // Every number of a (an array of arrays of S) NaN, one store each: caches
@@ -68,3 +71,5 @@ constexpr void store3(S* p, const v3<S>& a) {
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

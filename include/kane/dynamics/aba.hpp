@@ -26,6 +26,9 @@
 #include "kane/dynamics/crba.hpp"
 #include "kane/dynamics/rnea.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 template <class S>
@@ -206,3 +209,5 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

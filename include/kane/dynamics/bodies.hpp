@@ -27,6 +27,9 @@
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/point.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -251,3 +254,5 @@ constexpr bool forces_checked(list<X...>) {
 }  // namespace detail
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

@@ -27,6 +27,9 @@
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/frames/axis.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // The edge of F as a screw in F: its axis k_F (a unit vector of F), 0 for a constant edge.
@@ -188,3 +191,5 @@ struct body_frames<JF, Ev, list<F...>> {
 };
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

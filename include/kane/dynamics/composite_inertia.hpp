@@ -17,6 +17,9 @@
 #include "kane/dynamics/body_frames.hpp"
 #include "kane/dynamics/terms.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 template <class S>
@@ -187,3 +190,5 @@ template <class JF, std::size_t F>
 using frame_at = typename at<typename JF::frame_list, F>::type;
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

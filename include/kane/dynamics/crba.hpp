@@ -24,6 +24,9 @@
 #include "kane/dynamics/composite_inertia.hpp"
 #include "kane/dynamics/terms.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // The pattern of k x h
@@ -188,3 +191,5 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

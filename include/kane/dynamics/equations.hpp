@@ -27,6 +27,9 @@
 #include "kane/evaluation/tables.hpp"
 #include "kane/frames/vec.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -113,3 +116,5 @@ std::pair<Eigen::Matrix<S, int(N), 1>, solve_status> speed_derivatives(const equ
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

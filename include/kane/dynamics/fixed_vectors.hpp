@@ -15,6 +15,9 @@
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/derivative.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 struct no_frame {};     // the zero vector: fixed in every frame
@@ -161,3 +164,5 @@ constexpr std::array<entry, 3> own_pattern() {
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

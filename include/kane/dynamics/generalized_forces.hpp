@@ -16,6 +16,9 @@
 #include "kane/dynamics/bodies.hpp"
 #include "kane/speeds/partial_velocity.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -91,3 +94,5 @@ constexpr auto generalized_inertia_force() {
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

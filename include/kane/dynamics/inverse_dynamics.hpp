@@ -22,6 +22,9 @@
 #include "kane/dynamics/aba.hpp"
 #include "kane/dynamics/equations.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -101,3 +104,5 @@ forward_dynamics(const Ev& ev) {
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

@@ -27,6 +27,9 @@
 #include "kane/kinematics/point.hpp"
 #include "kane/speeds/generalized_speeds.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // The frame a vector is fixed in, void for none.
@@ -298,3 +301,5 @@ struct joint_form {
 };
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

@@ -22,6 +22,9 @@
 #include "kane/frames/vec.hpp"
 #include "kane/kinematics/point.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 // The mass centre of the system, as the point of angular_momentum.
@@ -168,3 +171,5 @@ typename Ev::scalar potential_energy(const Ev& ev) {
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

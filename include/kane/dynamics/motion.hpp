@@ -24,6 +24,9 @@
 #include "kane/dynamics/reduced_equations.hpp"
 #include "kane/evaluation/reads.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -161,3 +164,5 @@ class constrained_motion {
 };
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

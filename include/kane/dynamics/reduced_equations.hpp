@@ -15,6 +15,9 @@
 #include "kane/evaluation/status.hpp"
 #include "kane/evaluation/tables.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -132,3 +135,5 @@ reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

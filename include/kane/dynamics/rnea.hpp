@@ -22,6 +22,9 @@
 #include "kane/dynamics/body_frames.hpp"
 #include "kane/dynamics/crba.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // u_r (Order 1) or u_r' (Order 2) of the evaluator's state, u_r = q_r'.
@@ -194,3 +197,5 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

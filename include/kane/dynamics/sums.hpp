@@ -30,6 +30,9 @@
 #include "kane/evaluation/tables.hpp"
 #include "kane/frames/vec.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 template <class S, std::size_t N>
@@ -265,3 +268,5 @@ equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, 
 }  // namespace detail
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

@@ -20,6 +20,9 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/point.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // I in the root's components: C (I)_F C^T, C the columns e_F1, e_F2, e_F3; the
@@ -164,3 +167,5 @@ auto system_terms(list<X...>) {
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

@@ -17,6 +17,9 @@
 #include "kane/frames/axis.hpp"
 #include "kane/kinematics/edges.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // A symmetric 3 x 3 matrix: 11 22 33 12 23 31.
@@ -145,3 +148,5 @@ KANE_ALWAYS_INLINE turn<typename Ev::scalar, turn_axis<F>()> make_turn(const Ev&
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

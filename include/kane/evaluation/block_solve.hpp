@@ -32,6 +32,9 @@
 #include "kane/evaluation/status.hpp"
 #include "kane/frames/scalar.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 template <class S, std::size_t R, std::size_t C>
@@ -264,3 +267,5 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

@@ -13,6 +13,9 @@
 #include "kane/kinematics/edges.hpp"
 #include "kane/speeds/component_speeds.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // k when u_k, u_k+1, u_k+2 are the components of ^R w^F in a frame G whose axes an outward pass
@@ -52,3 +55,5 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> component_values(const Ev& ev) {
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

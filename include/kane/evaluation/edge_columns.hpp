@@ -17,6 +17,9 @@
 #include "kane/frames/orientation.hpp"
 #include "kane/kinematics/edges.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // cf: F's columns; parent: P's columns (not read for P the root).
@@ -64,3 +67,5 @@ KANE_ALWAYS_INLINE void edge_columns(S* cf, const S* parent, const Trig& t, cons
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

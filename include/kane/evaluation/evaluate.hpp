@@ -17,6 +17,9 @@
 #include "kane/kinematics/derivative.hpp"
 #include "kane/speeds/generalized_speeds.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -218,3 +221,5 @@ requires(detail::is_evaluator<Ev>::value &&
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

@@ -34,6 +34,9 @@
 #include "kane/evaluation/status.hpp"
 #include "kane/frames/state.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 template <State St, class Frames, level Level = level::acceleration, class Speeds = void>
@@ -296,3 +299,5 @@ struct is_evaluator<evaluator<St, Fr, L, Sp>> : std::true_type {};
 }  // namespace detail
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

@@ -20,6 +20,9 @@
 #include "kane/frames/state.hpp"
 #include "kane/speeds/generalized_speeds.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // Speeds: void to read q' and q'' from the state; a speed set to solve them from u and u'.
@@ -259,3 +262,5 @@ class kinematic_equations {
 };
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

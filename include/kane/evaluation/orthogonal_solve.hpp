@@ -11,6 +11,9 @@
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/status.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // Sys's M is block diagonal, each block a 1 or of orthogonal rows (orthogonal_block): then
@@ -64,3 +67,5 @@ KANE_ALWAYS_INLINE solve_status solve_orthogonal(const table<S, Sys::n, Sys::n>&
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

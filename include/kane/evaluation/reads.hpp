@@ -18,6 +18,9 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative_traits.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 template <std::size_t N, std::size_t NQ>
@@ -101,3 +104,5 @@ constexpr auto acceleration_reads_of(list<Xs...>) {
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

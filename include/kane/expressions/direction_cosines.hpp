@@ -11,6 +11,9 @@
 #include "kane/expressions/functions.hpp"
 #include "kane/frames/axis.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // The principal axis (0, 1, 2) the edge above F turns about; -1 for a root, another axis or no axis.
@@ -87,3 +90,5 @@ constexpr auto tree_dot() {
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

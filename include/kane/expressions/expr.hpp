@@ -17,6 +17,9 @@
 
 #include "kane/frames/coordinate.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 // the builtin (GCC, Clang): std::derived_from would instantiate std::is_convertible
@@ -218,3 +221,5 @@ requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator/(L l_, R r_) {
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

@@ -9,6 +9,9 @@
 #include "kane/detail/dual.hpp"
 #include "kane/expressions/expr.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 // Elementary functions: sin, cos, sqrt as tags of one node. Each tag says how
@@ -133,3 +136,5 @@ constexpr auto invoke(F f, X x) {
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

@@ -15,6 +15,9 @@
 #include "kane/expressions/vector_rules.hpp"
 #include "kane/frames/frame.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -240,3 +243,5 @@ constexpr auto dot(L l, R r) {
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

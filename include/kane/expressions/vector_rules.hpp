@@ -7,6 +7,9 @@
 #include "kane/detail/tree.hpp"
 #include "kane/expressions/expr.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 template <class S, class V>
@@ -142,3 +145,5 @@ inline constexpr bool summable_v = one_tree_v<tree_of_t<vsum<L, R>>>&& same_obse
 }  // namespace detail
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

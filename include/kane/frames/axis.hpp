@@ -10,6 +10,9 @@
 #include <array>
 #include <concepts>
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -69,3 +72,5 @@ struct unit_axis {
 
 }  // namespace detail
 }  // namespace kane
+
+#pragma GCC diagnostic pop

@@ -15,6 +15,9 @@
 #include "kane/frames/frame.hpp"
 #include "kane/frames/vec.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 template <class A, class B, class S = double>
@@ -86,3 +89,5 @@ operator*(const dcm<LeftFrom, LeftTo, S>&, const dcm<RightFrom, RightTo, S>&) {
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

@@ -16,6 +16,9 @@
 #include "kane/frames/orientation.hpp"
 #include "kane/fwd.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -69,3 +72,5 @@ struct frame : detail::frame_tag {
 };
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

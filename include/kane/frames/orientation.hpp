@@ -19,6 +19,9 @@
 #include "kane/frames/axis.hpp"
 #include "kane/frames/coordinate.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -256,3 +259,5 @@ concept Orientation = requires {
 &&detail::size<typename O::steps>::value >= 1;
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

@@ -3,6 +3,9 @@
 
 #include <concepts>
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 // Specialise to admit a new number type (dual numbers, interval types).
@@ -19,3 +22,5 @@ template <class S>
 concept Scalar = is_scalar<S>::value;
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

@@ -12,6 +12,9 @@
 #include "kane/frames/scalar.hpp"
 #include "kane/fwd.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 // p = a1 e_F1 + a2 e_F2 + a3 e_F3 held as (a1, a2, a3); index 0..2.
@@ -170,3 +173,5 @@ bool is_approx(const vec<LeftFrame, S>&, const vec<RightFrame, S>&, S) {
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

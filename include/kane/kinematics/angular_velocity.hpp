@@ -14,6 +14,9 @@
 #include "kane/detail/tree.hpp"
 #include "kane/expressions/vector.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 template <class A, class B>
@@ -112,3 +115,5 @@ constexpr auto operator-(angular_velocity_of<A, B>, angular_velocity_of<C, D>) {
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

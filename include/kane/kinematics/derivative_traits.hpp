@@ -18,6 +18,9 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/edges.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -217,3 +220,5 @@ constexpr leaf_set leaf_query() {
 }  // namespace detail
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

@@ -18,6 +18,9 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -219,3 +222,5 @@ constexpr auto body_point_velocity() {
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

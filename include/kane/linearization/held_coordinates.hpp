@@ -19,6 +19,9 @@
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/edges.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 using coordinate_mask = std::uint64_t;  // bit I - 1: q_I
@@ -124,3 +127,5 @@ constexpr auto coordinate_slots() {
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

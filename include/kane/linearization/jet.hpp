@@ -19,6 +19,9 @@
 #include "kane/detail/invert.hpp"
 #include "kane/frames/scalar.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -225,6 +228,8 @@ struct real_type<jet<S, N>> {
 };
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop
 
 template <class S, std::size_t N>
 class std::numeric_limits<kane::jet<S, N>> : public std::numeric_limits<S> {

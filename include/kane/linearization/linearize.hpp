@@ -29,6 +29,9 @@
 #include "kane/linearization/held_coordinates.hpp"
 #include "kane/linearization/jet.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 // The inputs of B: parameters (kane::parameter<k>{}) or inputs of the state (kane::r<k>).
@@ -282,3 +285,5 @@ auto linearize_equations(const typename Ev::state_type& s) {
 }
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

@@ -16,6 +16,9 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/edges.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
 // Speeds u_K..u_K+2 = ^R w^B . f_1..3 with R the root: then ^R w^B = sum_i u_K+i-1 f_i
@@ -93,3 +96,5 @@ constexpr std::array<std::size_t, 4> euler_row() {
 }
 
 }  // namespace kane::detail
+
+#pragma GCC diagnostic pop

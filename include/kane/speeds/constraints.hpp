@@ -19,6 +19,9 @@
 #include "kane/speeds/generalized_speeds.hpp"
 #include "kane/speeds/partial_velocity.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 template <std::size_t Particles, std::size_t RigidBodies, auto... F>
@@ -125,3 +128,5 @@ struct dense_right_side {
 }  // namespace detail
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop

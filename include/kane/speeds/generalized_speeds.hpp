@@ -25,6 +25,9 @@
 #include "kane/kinematics/edges.hpp"
 #include "kane/speeds/component_speeds.hpp"
 
+// A user's global may share the name of a local here (-Wshadow).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
@@ -283,3 +286,5 @@ constexpr auto offset() {
 }  // namespace detail
 
 }  // namespace kane
+
+#pragma GCC diagnostic pop
