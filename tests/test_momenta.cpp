@@ -20,10 +20,12 @@ namespace pd = models::pendulum3d;
 namespace fm = models::free_body;
 
 // SymPy's free body (test_dynamics.cpp): m p4, inertia p5..p10 about Bo in B, gravity p11.
-using body = kane::rigid_body<fm::B, fm::Bo, p<4>, kane::inertia<fm::B, fm::Bo, p<5>, p<6>, p<7>, p<8>, p<9>, p<10>>>;
+using body =
+    kane::rigid_body<fm::B, fm::Bo, p<4>, kane::inertia<fm::B, fm::Bo, p<5>, p<6>, p<7>, p<8>, p<9>, p<10>>>;
 using free_system = kane::system<body, kane::gravity<-p<11> * e<fm::N, 3>>>;
 using body_state = kane::state<double, 7, 6, 17>;
-using body_evaluator = kane::evaluator<body_state, kane::frames<fm::B>, kane::level::acceleration, fm::speeds>;
+using body_evaluator =
+    kane::evaluator<body_state, kane::frames<fm::B>, kane::level::acceleration, fm::speeds>;
 
 body_state body_at(const sympy_dynamics::body_case& x) {
   body_state s;

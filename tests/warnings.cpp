@@ -18,10 +18,10 @@
 #include "../examples/models/pendulum3d.hpp"
 
 // Globals with the short names a model uses: no local of a header shadows them (-Wshadow).
-[[maybe_unused]] inline constexpr int a = 0, b = 0, c = 0, d = 0, f = 0, g = 0, h = 0, i = 0, j = 0, k = 0, l = 0,
-                                      m = 0, n = 0, o = 0, p = 0, r = 0, s = 0, t = 0, v = 0, w = 0, x = 0, y = 0,
-                                      z = 0, I = 0, J = 0, K = 0, L = 0, M = 0, R = 0, T = 0, V = 0, W = 0, X = 0,
-                                      Y = 0;
+[[maybe_unused]] inline constexpr int a = 0, b = 0, c = 0, d = 0, f = 0, g = 0, h = 0, i = 0, j = 0, k = 0,
+                                      l = 0, m = 0, n = 0, o = 0, p = 0, r = 0, s = 0, t = 0, v = 0, w = 0,
+                                      x = 0, y = 0, z = 0, I = 0, J = 0, K = 0, L = 0, M = 0, R = 0, T = 0,
+                                      V = 0, W = 0, X = 0, Y = 0;
 
 namespace warnings {
 using kane::cross;
@@ -262,9 +262,9 @@ S dynamics(const kane::state<S, 6>& s6) {
   const auto lin = kane::linearize<m::system, decltype(ev), kane::inputs<m::p<19>>>(s);
   const S active =
       kane::evaluate(kane::generalized_active_force<m::N, m::system, kane::qdot_speeds<2>, 1>(), ev);
-  return eom.M.sum() + ud.sum() + kane::kinetic_energy<m::system>(ev) + kane::potential_energy<m::system>(ev) +
-         kane::linear_momentum<m::system>(ev)[0] + kane::angular_momentum<m::system>(ev)[1] + dx[3] + lin.A.sum() +
-         lin.B.sum() + active;
+  return eom.M.sum() + ud.sum() + kane::kinetic_energy<m::system>(ev) +
+         kane::potential_energy<m::system>(ev) + kane::linear_momentum<m::system>(ev)[0] +
+         kane::angular_momentum<m::system>(ev)[1] + dx[3] + lin.A.sum() + lin.B.sum() + active;
 }
 
 // Printing.

@@ -31,37 +31,28 @@ namespace kane {
 struct mass_centre {};
 
 namespace detail {
-template <class P>
+template <class P, class From = typename P::from>
 struct chain_origin {
-  using type = typename chain_origin<typename P::from>::type;
-};
-template <class F>
-struct chain_origin<origin<F>> {
-  using type = origin<F>;
+  using type = typename chain_origin<From>::type;
 };
 template <class P>
-requires std::is_void_v<typename P::from> && (!std::is_same_v<P, origin<typename P::fixed_frame>>)
-struct chain_origin<P> {
+struct chain_origin<P, void> {
   using type = P;
 };
 
 template <class X>
 inline constexpr bool has_mass = is_particle<X> || is_body<X>;
-template <class... X>
-struct first_mass;
-template <class X, class... Xs>
-struct first_mass<X, Xs...> {
-  using type = std::conditional_t<has_mass<X>, X, typename first_mass<Xs...>::type>;
-};
-template <>
-struct first_mass<> {
+template <class L>
+struct first_mass {
   using type = void;
+};
+template <class X, class... Xs>
+struct first_mass<list<X, Xs...>> {
+  using type = std::conditional_t<has_mass<X>, X, typename first_mass<list<Xs...>>::type>;
 };
 template <class Sys>
 struct reference_point {
-  using items = typename Sys::items;
-  using X = typename decltype([]<class... Y>(list<Y...>) { return std::type_identity<first_mass<Y...>>{}; }(
-      items{}))::type::type;
+  using X = typename first_mass<typename Sys::items>::type;
   static_assert(!std::is_void_v<X>, "kane: a system without particles or bodies has no momenta or energies");
   using type = typename chain_origin<typename point_of_mass<X>::type>::type;
 };
@@ -85,19 +76,22 @@ void for_each_mass(const Ev& ev, F&& f) {
 }  // namespace detail
 
 template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value vec<typename Ev::root, typename Ev::scalar> linear_momentum(const Ev& ev) {
+requires detail::is_evaluator<Ev>::value vec<typename Ev::root, typename Ev::scalar> linear_momentum(
+    const Ev& ev) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   Eigen::Matrix<S, 3, 1> p = Eigen::Matrix<S, 3, 1>::Zero();
   detail::for_each_mass<Sys>(ev, [&]<class X>(std::type_identity<X>, const auto&) {
-    p += detail::eval_scalar(X::mass, ev) * detail::in_root<R>(velocity<R, typename detail::point_of_mass<X>::type>(), ev);
+    p += detail::eval_scalar(X::mass, ev) *
+         detail::in_root<R>(velocity<R, typename detail::point_of_mass<X>::type>(), ev);
   });
   return vec<R, S>(p);
 }
 
 template <class Sys, class O = mass_centre, class Ev>
-requires detail::is_evaluator<Ev>::value && (std::is_same_v<O, mass_centre> || Point<O>)
-vec<typename Ev::root, typename Ev::scalar> angular_momentum(const Ev& ev) {
+requires detail::is_evaluator<Ev>::value &&
+    (std::is_same_v<O, mass_centre> ||
+     Point<O>)vec<typename Ev::root, typename Ev::scalar> angular_momentum(const Ev& ev) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using V = Eigen::Matrix<S, 3, 1>;
@@ -148,17 +142,18 @@ requires detail::is_evaluator<Ev>::value typename Ev::scalar kinetic_energy(cons
 }
 
 template <class Sys, class O = void, class Ev>
-requires detail::is_evaluator<Ev>::value && (std::is_void_v<O> || Point<O>)
-typename Ev::scalar potential_energy(const Ev& ev) {
+requires detail::is_evaluator<Ev>::value &&(std::is_void_v<O> || Point<O>)typename Ev::scalar
+    potential_energy(const Ev& ev) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using V = Eigen::Matrix<S, 3, 1>;
   V g = V::Zero();
   [&]<class... X>(detail::list<X...>) {
-    ([&] {
-      if constexpr (detail::is_gravity<X>) g += detail::in_root<R>(X::vector, ev);
-    }(),
-     ...);
+    (
+        [&] {
+          if constexpr (detail::is_gravity<X>) g += detail::in_root<R>(X::vector, ev);
+        }(),
+        ...);
   }(typename Sys::items{});
   V o = V::Zero();
   if constexpr (!std::is_void_v<O>)
