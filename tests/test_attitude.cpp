@@ -135,12 +135,14 @@ TEST_CASE("attitude: an input that is not a rotation gives not_a_rotation and Na
     ev.update(s);
     CHECK(ev.status() == kane::solve_status::not_a_rotation);
     CHECK(std::isnan(kane::express<N>(w, ev)[0]));
+    CHECK(std::isnan(kane::direction_cosines<N, by_matrix::B>(s)(1, 1)));
   }
   SECTION("a reflection") {
     for (int j = 0; j < 3; ++j) s.p[6 + j] = -s.p[6 + j];  // c3 -> -c3: orthonormal, det -1
     ev.update(s);
     CHECK(ev.status() == kane::solve_status::not_a_rotation);
     CHECK(std::isnan(kane::express<N>(kane::velocity<N, by_matrix::P>(), ev)[2]));
+    CHECK(kane::direction_cosines<N, by_matrix::B>(s).eigen().array().isNaN().all());
   }
   SECTION("NaN") {
     s.p[2] = std::nan("");
@@ -154,9 +156,11 @@ TEST_CASE("attitude: an input that is not a rotation gives not_a_rotation and Na
     eq.update(sq);
     CHECK(eq.status() == kane::solve_status::not_a_rotation);
     CHECK(std::isnan(eq.axes<by_quaternion::B>()(0, 0)));
+    CHECK(kane::direction_cosines<by_quaternion::B, N>(sq).eigen().array().isNaN().all());
     for (int i = 0; i < 4; ++i) sq.p[i] = body[1].q[i] * (1 + 1e-12);
     eq.update(sq);
     CHECK(eq.status() == kane::solve_status::ok);
     CHECK(diff(eq.axes<by_quaternion::B>().transpose(), body[1].dcm) < 1e-15);
+    CHECK(diff(kane::direction_cosines<N, by_quaternion::B>(sq).eigen(), body[1].dcm) < 1e-15);
   }
 }

@@ -2,6 +2,8 @@
 // components re-expressed in another frame.
 #pragma once
 
+#include <limits>
+
 #include <Eigen/Core>
 
 #include "kane/detail/tree.hpp"
@@ -34,12 +36,18 @@ struct edge {
   static Eigen::Matrix<S, 3, 3> matrix(const Trig& t, const St& st) {
     static_assert(check<!requires { F::step::speed_index; },
                         error::a_spinning_frame_has_no_known_axes_but_its_spin_axis<F>>);
-    if constexpr (requires { F::step::speed_index; })
+    if constexpr (requires { F::step::speed_index; }) {
       return Eigen::Matrix<S, 3, 3>::Identity();
-    else if constexpr (Up)
-      return F::step::template matrix<S>(t, st).transpose();
-    else
-      return F::step::template matrix<S>(t, st);
+    } else {
+      if constexpr (requires { F::step::rate_speeds; })  // an attitude: NaN unless a rotation
+        if (!F::step::rotation(st))
+          return Eigen::Matrix<S, 3, 3>::Constant(std::numeric_limits<S>::quiet_NaN());
+      const Eigen::Matrix<S, 3, 3> m = F::step::template matrix<S>(t, st);
+      if constexpr (Up)
+        return m.transpose();
+      else
+        return m;
+    }
   }
 };
 
@@ -68,7 +76,8 @@ struct factors<list<Up...>, list<Down...>> {
 }  // namespace detail
 
 // ^A P^B at the state st; sin and cos of each coordinate on the path once
-// (and of each angle that is not a bare coordinate).
+// (and of each angle that is not a bare coordinate). All NaN if an attitude on
+// the path is not a rotation within rotation_tolerance (an evaluator's not_a_rotation).
 template <Frame A, Frame B, State St>
 dcm<A, B, typename St::scalar> direction_cosines(const St& st) {
   using S = typename St::scalar;
