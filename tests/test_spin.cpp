@@ -118,3 +118,29 @@ TEST_CASE("spin: a free speed defines no q' and needs no coordinate") {
   es.update(b);
   CHECK(es.status() == kane::solve_status::not_finite);
 }
+
+namespace {
+// a wheel spinning at u5 about the oblique axis (l1 + 2 l2 + 2 l3) / 3: of its axes only that one is known
+struct T : kane::frame<L, kane::spin<kane::direction<1, 2, 2>, kane::speed<5>>> {};
+using eval_t = kane::evaluator<state_s, kane::frames<T>, kane::level::velocity, speeds_s>;
+}  // namespace
+
+TEST_CASE("spin: the partial angular velocities of a frame spinning about an oblique axis") {
+  state_s b;
+  b.q = {0.3, -0.2, 1.0, 2.0};
+  b.u = {0.1, 0.2, 0.3, 0.4, 7.0};
+  b.p[0] = 0.4;
+  eval_t ev;
+  ev.update(b);
+  REQUIRE(ev.status() == kane::solve_status::ok);
+  const auto w = kane::angular_velocity<N, T>();
+  const Eigen::Matrix<double, 3, 5> pw = kane::partial_velocities<N>(w, ev);
+  // ^N w^T = q1' n3 + q2' y1 + u5 k: the columns, and their sum against w itself
+  const Eigen::Vector3d k = ev.axes<L>() * Eigen::Vector3d(1, 2, 2) / 3;
+  CHECK((pw.col(4) - k).norm() < 1e-15);
+  CHECK((pw.col(0) - Eigen::Vector3d(0, 0, 1)).norm() < 1e-15);
+  CHECK((pw.col(1) - Eigen::Vector3d(std::cos(0.3), std::sin(0.3), 0)).norm() < 1e-15);
+  CHECK(pw.col(2).norm() == 0);
+  const Eigen::Map<const Eigen::Matrix<double, 5, 1>> u(b.u.data());
+  CHECK((pw * u - kane::express<N>(w, ev).eigen()).norm() < 1e-14);
+}

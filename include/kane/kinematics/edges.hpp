@@ -60,8 +60,8 @@ constexpr auto quaternion_rates() {
                     two * (a * dh - b * dg + g * db - h * da)};
 }
 
-// k of the edge above X, a unit vector of X (components equal in its parent).
-template <class X>
+// k of the edge above X: X's axis if principal, else by its components in U (X or its parent).
+template <class X, class U = X>
 constexpr auto axis_vector() {
   using K = typename X::step::axis;
   constexpr int p = unit_axis<K>::principal;
@@ -69,8 +69,8 @@ constexpr auto axis_vector() {
   if constexpr (p >= 0)
     return unit<X, p + 1>{};
   else
-    return fixed<literal(k[0])>{} * unit<X, 1>{} + fixed<literal(k[1])>{} * unit<X, 2>{} +
-           fixed<literal(k[2])>{} * unit<X, 3>{};
+    return fixed<literal(k[0])>{} * unit<U, 1>{} + fixed<literal(k[1])>{} * unit<U, 2>{} +
+           fixed<literal(k[2])>{} * unit<U, 3>{};
 }
 
 // d(^P w^X)/dq_R', a vector in X: d(theta)/dq_R k for a simple rotation by theta about k.
@@ -99,7 +99,7 @@ template <std::size_t R, class X>
 constexpr auto edge_spin() {
   if constexpr (spin_edge<X>) {
     if constexpr (X::step::speed_index == R)
-      return axis_vector<X>();
+      return axis_vector<X, typename X::tree_parent>();  // of X's axes only k is known
     else
       return zero_vector{};
   } else if constexpr (attitude_edge<X>) {
