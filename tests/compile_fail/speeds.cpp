@@ -13,6 +13,7 @@
 // case dependent_not_in_constraints: kane: the constraints do not determine the dependent speeds
 // case solution_of_other_constraints: constraint_solution_of_other_constraints_solve_these<kane::nonholonomic<.*>, kane::nonholonomic<
 // case remainder_other_speeds: evaluator_and_constraints_use_different_speed_sets<kane::qdot_speeds<2(UL)?>, kane::speeds<
+// case partial_other_speeds: partial_velocity_of_another_speed_set_build_it_for_the_evaluators<kane::qdot_speeds<2(UL)?>, kane::speeds<
 // case u_without_speed_set: evaluator_without_speed_set_reads_no_u_declare_the_speed_set<kane::speed<1(UL)?, 0(UL)?> ?>
 // case rate_below_level: kane: q' and q'' are solved from the speeds at the velocity and acceleration levels
 #include <kane/kane.hpp>
@@ -22,6 +23,8 @@ using q2 = kane::coordinate<2>;
 struct N : kane::root_frame {};
 struct A : kane::frame<N, kane::simple<kane::axis::z, q1>> {};
 struct B : kane::frame<A, kane::simple<kane::axis::x, q2>> {};
+struct O : kane::origin<N> {};
+struct P : kane::point<O, kane::e<B, 2>> {};
 
 inline constexpr auto w = kane::angular_velocity<N, B>();
 using sp = kane::speeds<kane::dot(w, kane::e<B, 1>), kane::dot(w, kane::e<B, 3>)>;
@@ -115,6 +118,13 @@ double use() {
   x += kane::nonholonomic_remainder<N, nh>(w, evq, sol)(0);
 #else
   x += kane::nonholonomic_remainder<N, nh>(w, ev, sol)(0);
+#endif
+  // a symbolic partial velocity of sp reads sp's W = dq'/du: an evaluator of sp, not of q'
+  constexpr auto v1 = kane::partial_velocity<sp>(kane::velocity<N, P>(), kane::u<2>);
+#ifdef KANE_CASE_partial_other_speeds
+  x += kane::express<N>(v1, evq)[0];
+#else
+  x += kane::express<N>(v1, ev)[0];
 #endif
   // without a speed set u = q' and s.u is not read: reading u does not compile
   kane::evaluator<St, kane::frames<B>> ev0;

@@ -63,6 +63,9 @@ template <class EvaluatorSpeeds, class TableSpeeds>
 struct evaluator_and_constraints_use_different_speed_sets;
 template <class SolvedConstraints, class UsedConstraints>
 struct constraint_solution_of_other_constraints_solve_these;
+// partial_velocity<Sp>(v, u<r>) or velocity_remainder<Sp>(v) read with an evaluator of other speeds.
+template <class EvaluatorSpeeds, class PartialSpeeds>
+struct partial_velocity_of_another_speed_set_build_it_for_the_evaluators;
 // u_r read by an evaluator without a speed set (u = q', s.u unread): declare the speeds.
 template <class Speed>
 struct evaluator_without_speed_set_reads_no_u_declare_the_speed_set;

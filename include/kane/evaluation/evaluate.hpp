@@ -78,6 +78,9 @@ KANE_ALWAYS_INLINE typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
   else if constexpr (is_constant<X>::value)
     return S(X::num) / S(X::den);
   else if constexpr (kde_info<X>::value) {
+    static_assert(check<std::is_same_v<typename X::speed_set, typename Ev::speed_set>,
+                        error::partial_velocity_of_another_speed_set_build_it_for_the_evaluators<
+                            typename Ev::speed_set, typename X::speed_set>>);
     if constexpr (requires { X::column; })
       return ev.template stored_weight<X::row - 1, X::column - 1>();
     else

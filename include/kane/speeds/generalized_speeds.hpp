@@ -134,23 +134,25 @@ using angular_velocity_speeds =
     speeds<dot(angular_velocity<A, B>(), e<F, 1>), dot(angular_velocity<A, B>(), e<F, 2>),
            dot(angular_velocity<A, B>(), e<F, 3>), Extra...>;
 
-// W_SR = dq_S'/du_R and X_S = q_S' at u = 0: numbers the evaluator solves for.
-template <std::size_t S, std::size_t R>
+// W_SR = dq_S'/du_R and X_S = q_S' at u = 0 of the speed set Sp: numbers the evaluator solves for.
+template <std::size_t S, std::size_t R, class Sp>
 struct kde_weight : detail::scalar_tag {
   static constexpr std::size_t row = S, column = R;
+  using speed_set = Sp;
 };
-template <std::size_t S>
+template <std::size_t S, class Sp>
 struct kde_offset : detail::scalar_tag {
   static constexpr std::size_t row = S;
+  using speed_set = Sp;
 };
 
 namespace detail {
 template <class X>
 struct kde_info : std::false_type {};
-template <std::size_t S, std::size_t R>
-struct kde_info<kde_weight<S, R>> : std::true_type {};
-template <std::size_t S>
-struct kde_info<kde_offset<S>> : std::true_type {};
+template <std::size_t S, std::size_t R, class Sp>
+struct kde_info<kde_weight<S, R, Sp>> : std::true_type {};
+template <std::size_t S, class Sp>
+struct kde_info<kde_offset<S, Sp>> : std::true_type {};
 
 // Replace q', q'', u, u' by zero (the part of an expression linear in them
 // drops out): x at rest.
@@ -273,14 +275,14 @@ constexpr auto weight() {
   else if constexpr (kde_system<Sp>::x[S - 1][R - 1] == entry::one)
     return one_t{};
   else
-    return kde_weight<S, R>{};
+    return kde_weight<S, R, Sp>{};
 }
 template <class Sp, std::size_t S>
 constexpr auto offset() {
   if constexpr (Sp::identity || !kde_system<Sp>::offset[S - 1])
     return zero_t{};
   else
-    return kde_offset<S>{};
+    return kde_offset<S, Sp>{};
 }
 
 }  // namespace detail
