@@ -441,7 +441,8 @@ static_assert(disc5_kde::form.count == 5);  // five blocks of one unknown: subst
 // W: q1' = u3 / c2, q2' = u1, q3' = u2 - s2/c2 u3, q4' = u4, q5' = u5; X = 0
 static_assert(std::is_same_v<decltype(kane::detail::weight<disc5_speeds, 2, 1>()), kane::one_t>);
 static_assert(std::is_same_v<decltype(kane::detail::weight<disc5_speeds, 1, 1>()), kane::zero_t>);
-static_assert(std::is_same_v<decltype(kane::detail::weight<disc5_speeds, 1, 3>()), kane::kde_weight<1, 3, disc5_speeds>>);
+static_assert(std::is_same_v<decltype(kane::detail::weight<disc5_speeds, 1, 3>()),
+                             kane::kde_weight<1, 3, disc5_speeds>>);
 static_assert(std::is_same_v<decltype(kane::detail::offset<disc5_speeds, 1>()), kane::zero_t>);
 // The 3-2-1 body: q1', q2' coupled in one block of two, then q3' from u1 = q3' - s2 q1'.
 using body_kde = kane::detail::kde_system<body_speeds>;
