@@ -9,6 +9,7 @@
 // case equations_on_other_speeds: evaluator_and_constraints_use_different_speed_sets<kane::qdot_speeds<2>, kane::speeds<
 // case particle_mass_not_scalar: kane: particle<P, m> takes a scalar expression m
 // case inertia_not_inertia: kane: rigid_body<B, Bo, m, I> takes I = kane::inertia<F, Bo, ...>
+// case wheel_speed_not_in_set: a_frame_turns_at_free_speeds_of_the_evaluators_speed_set<.*W>
 // case motion_wrong_size: kane: x and dx/dt of kane::motion hold nq \+ nu numbers
 #include <array>
 
@@ -57,6 +58,18 @@ using wheel = kane::rigid_body<W, Bo, p<3>, kane::inertia<B, Bo, p<4>, p<5>, p<6
 using wheel = kane::rigid_body<W, Bo, p<3>, kane::inertia<B, Bo, p<4>, p<5>, p<4>>>;
 #endif
 static_assert(sizeof(wheel) > 0);
+// the wheel's speed u3 is a free speed of the evaluator's speed set, though W is not among its frames
+#ifdef KANE_CASE_wheel_speed_not_in_set
+using wheel_speeds = kane::qdot_speeds<2>;
+#else
+using wheel_speeds = kane::speeds<kane::dt(kane::q<1>), kane::dt(kane::q<2>), kane::free_speed>;
+#endif
+double use_wheel() {
+  kane::state<double, 2, 3, 9> s;
+  kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, wheel_speeds> ev;
+  ev.update(s);
+  return kane::mass_matrix_and_forcing<kane::system<body, wheel>>(ev).M(0, 0);
+}
 struct M : kane::root_frame {};  // another tree
 #ifdef KANE_CASE_torque_from_other_tree
 using twist = kane::torque<B, p<9> * e<M, 1>>;

@@ -25,6 +25,7 @@
 #include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/derivative.hpp"
+#include "kane/kinematics/edges.hpp"
 #include "kane/kinematics/point.hpp"
 
 // A user's global may share the name of a local here (-Wshadow).
@@ -244,11 +245,28 @@ requires is_body<X>
 struct point_of_mass<X> {
   using type = typename X::centre;
 };
-template <class Sys, class... X>
-constexpr bool forces_checked(list<X...>) {
+// The frames an item turns with (and their ancestors).
+template <class X>
+struct turning_frames {
+  using type = list<>;
+};
+template <class X>
+requires is_body<X>
+struct turning_frames<X> {
+  using type = typename closure<typename X::frame, typename X::inertia_type::frame>::type;
+};
+template <class X>
+requires is_torque<X>
+struct turning_frames<X> {
+  using type = typename closure<typename X::frame>::type;
+};
+// Every force at a point of a mass, every frame of a body or torque turning at speeds of Sp.
+template <class Sys, class Sp, class... X>
+constexpr bool system_checked(list<X...>) {
   return (
-      check<force_applies<X>(typename Sys::items{}),
-            error::force_at_a_point_that_is_no_particle_and_fixed_in_no_body<typename point_of<X>::type>> &&
+      (check<force_applies<X>(typename Sys::items{}),
+             error::force_at_a_point_that_is_no_particle_and_fixed_in_no_body<typename point_of<X>::type>> &&
+       free_speeds_checked<Sp>(typename turning_frames<X>::type{})) &&
       ...);
 }
 }  // namespace detail

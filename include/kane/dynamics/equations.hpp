@@ -43,7 +43,7 @@ equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n> recursive_equations(c
   using S = typename Ev::scalar;
   using JF = joint_form_of<Sys, Ev>;
   constexpr std::size_t n = speeds_of<Ev>::n;
-  static_assert(detail::forces_checked<Sys>(typename Sys::items{}));
+  static_assert(detail::system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
   equations_of_motion<S, n> out{Eigen::Matrix<S, int(n), int(n)>(), Eigen::Matrix<S, int(n), 1>::Zero(),
                                 ev.status()};
   const body_frames<JF, Ev> bf(ev);

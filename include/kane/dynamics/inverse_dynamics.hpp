@@ -38,7 +38,7 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> inverse_at(const Ev& ev) {
   constexpr std::size_t n = speeds_of<Ev>::n;
   Eigen::Matrix<S, int(n), 1> tau;
   if constexpr (recursive_form<Sys, Ev>) {
-    static_assert(forces_checked<Sys>(typename Sys::items{}));
+    static_assert(system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
     using JF = joint_form_of<Sys, Ev>;
     const body_frames<JF, Ev> bf(ev);
     joint_forces<Rest, JF, Sys>(bf, ev, tau);
@@ -66,7 +66,7 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> forward_at(const Ev& ev) {
   using S = typename Ev::scalar;
   constexpr std::size_t n = speeds_of<Ev>::n;
   if constexpr (recursive_form<Sys, Ev> && (n > articulated_above) && std::is_floating_point_v<S>) {
-    static_assert(forces_checked<Sys>(typename Sys::items{}));
+    static_assert(system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
     using JF = joint_form_of<Sys, Ev>;
     Eigen::Matrix<S, int(n), 1> ud;
     const body_frames<JF, Ev> bf(ev);

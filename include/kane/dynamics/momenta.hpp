@@ -60,6 +60,7 @@ struct reference_point {
 // f(X, r^{Ref,P} in R) for every item with mass; Ref = the reference point of Sys.
 template <class Sys, class Ev, class F>
 void for_each_mass(const Ev& ev, F&& f) {
+  static_assert(system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
   using R = typename Ev::root;
   using Ref = typename reference_point<Sys>::type;
   [&]<class... X>(list<X...>) {
@@ -120,6 +121,7 @@ requires detail::is_evaluator<Ev>::value &&
 
 template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value typename Ev::scalar kinetic_energy(const Ev& ev) {
+  static_assert(detail::system_checked<Sys, detail::speeds_of<Ev>>(typename Sys::items{}));
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   S energy = S(0);

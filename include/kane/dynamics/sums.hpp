@@ -252,7 +252,7 @@ equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, 
   using R = typename Ev::root;
   using Sp = detail::speeds_of<Ev>;
   constexpr std::size_t n = Cols::n;
-  static_assert(detail::forces_checked<Sys>(typename Sys::items{}));
+  static_assert(detail::system_checked<Sys, Sp>(typename Sys::items{}));
   equations_of_motion<S, n> out{Eigen::Matrix<S, int(n), int(n)>::Zero(), Eigen::Matrix<S, int(n), 1>::Zero(),
                                 ev.status()};
   const auto ud = detail::speed_rates(ev);

@@ -33,6 +33,7 @@
 #include "kane/evaluation/outward_pass.hpp"
 #include "kane/evaluation/status.hpp"
 #include "kane/frames/state.hpp"
+#include "kane/kinematics/edges.hpp"
 
 // A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
@@ -41,28 +42,6 @@ namespace kane {
 
 template <State St, class Frames, level Level = level::acceleration, class Speeds = void>
 class evaluator;
-
-namespace detail {
-// A frame of the closure that spins or has an attitude turns at free speeds of Speeds.
-template <class Speeds, class F>
-constexpr bool turns_freely() {
-  if constexpr (!spin_edge<F> && !attitude_edge<F>)
-    return true;
-  else if constexpr (std::is_void_v<Speeds>)
-    return false;
-  else {
-    bool ok = true;
-    for (std::size_t i : free_speeds<F>()) ok = ok && (i == 0 || (i > Speeds::defined && i <= Speeds::n));
-    return ok;
-  }
-}
-template <class Speeds, class... F>
-constexpr bool free_speeds_checked(list<F...>) {
-  return (
-      check<turns_freely<Speeds, F>(), error::a_frame_turns_at_free_speeds_of_the_evaluators_speed_set<F>> &&
-      ...);
-}
-}  // namespace detail
 
 template <State St, Frame... Fs, level Level, class Speeds>
 class evaluator<St, frames<Fs...>, Level, Speeds>

@@ -10,6 +10,7 @@
 #include <tuple>
 #include <type_traits>
 
+#include "kane/detail/frame_check.hpp"
 #include "kane/detail/list.hpp"
 #include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
@@ -122,6 +123,25 @@ constexpr std::array<std::size_t, 3> free_speeds() {
     return X::step::rate_speeds;
   else
     return {0, 0, 0};
+}
+// A frame that spins or has an attitude turns at free speeds of Speeds.
+template <class Speeds, class F>
+constexpr bool turns_freely() {
+  if constexpr (!spin_edge<F> && !attitude_edge<F>)
+    return true;
+  else if constexpr (std::is_void_v<Speeds>)
+    return false;
+  else {
+    bool ok = true;
+    for (std::size_t i : free_speeds<F>()) ok = ok && (i == 0 || (i > Speeds::defined && i <= Speeds::n));
+    return ok;
+  }
+}
+template <class Speeds, class... F>
+constexpr bool free_speeds_checked(list<F...>) {
+  return (
+      check<turns_freely<Speeds, F>(), error::a_frame_turns_at_free_speeds_of_the_evaluators_speed_set<F>> &&
+      ...);
 }
 // d(^A w^B)/dq_R' (Speed false) or d(^A w^B)/du_R (Speed true) over the path A -> B.
 template <std::size_t R, bool Speed = false, class... Up, class... Down>
