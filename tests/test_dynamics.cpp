@@ -238,6 +238,34 @@ TEST_CASE("dynamics: parallel_axis moves an inertia about O to the mass centre")
   CHECK(kane::mass_matrix_and_forcing<rod>(ev).M(0, 0) == Approx(1.1).epsilon(1e-14));
 }
 
+// The lower link B turns in A about b2 = a2: an inertia symmetric about b2 may be given in A.
+template <class F>
+using pendulum_with = kane::system<
+    kane::rigid_body<
+        pd::A, pd::Ao, fb::p<3>,
+        kane::inertia<pd::A, pd::Ao, fb::p<6>, fb::p<7>, fb::p<8>, fb::p<9>, fb::p<10>, fb::p<11>>>,
+    kane::rigid_body<pd::B, pd::Bo, fb::p<4>, kane::inertia<F, pd::Bo, fb::p<12>, fb::p<13>, fb::p<12>>>,
+    kane::particle<pd::Q, fb::p<5>>, kane::gravity<-fb::p<18> * e<pd::N, 3>>>;
+
+TEST_CASE("dynamics: an inertia symmetric about a joint axis, given in the joint's parent frame") {
+  static_assert(kane::detail::recursive_form<pendulum_with<pd::A>, pd::evaluator>);
+  for (const auto& x : sympy_dynamics::pendulum) {
+    pd::state s;
+    for (int i = 0; i < 21; ++i) s.p[i] = sympy_dynamics::pendulum_p[i];
+    s.q = {x.q[0], x.q[1]};
+    s.u = {x.u[0], x.u[1]};
+    pd::evaluator ev;
+    ev.update(s);
+    const auto in_a = kane::mass_matrix_and_forcing<pendulum_with<pd::A>>(ev);
+    const auto in_b = kane::mass_matrix_and_forcing<pendulum_with<pd::B>>(ev);
+    REQUIRE(in_a.status == kane::solve_status::ok);
+    CHECK((in_a.M - in_b.M).norm() < 1e-14 * in_b.M.norm());
+    CHECK((in_a.f - in_b.f).norm() < 1e-14 * in_b.f.norm());
+    CHECK(kane::kinetic_energy<pendulum_with<pd::A>>(ev) ==
+          Approx(kane::kinetic_energy<pendulum_with<pd::B>>(ev)).epsilon(1e-14));
+  }
+}
+
 #include "../examples/models/gyrostat.hpp"
 #include "../examples/models/heavy_top.hpp"
 

@@ -11,8 +11,8 @@
 //
 // Masses and components are scalar expressions (a parameter, kane::literal(2.0),
 // kane::constant<1, 2>); loads are vector expressions of q, u, t and parameters.
-// The inertia's frame is fixed in the body (or B spins in it about an axis of
-// symmetry of I: a wheel, kane::spin) and its point is the mass centre
+// The inertia's frame is fixed in the body (or B turns in it about an axis of
+// symmetry of I: a wheel, a disc) and its point is the mass centre
 // (kane::parallel_axis moves a dyadic there); a force acts at a particle or at a
 // point fixed in a body, where its partial velocities are those of a mass.
 #pragma once
@@ -51,13 +51,13 @@ template <class... F>
 constexpr bool constant_edges(list<F...>) {
   return (constant_edge<F>() && ...);
 }
-// B spins relative to F about a coordinate axis k of both, and I (in F) is
-// symmetric about k: equal moments about the other two axes (the same
-// expression), no products. I has the same components in B (a wheel).
+// B turns relative to its parent F (by an angle or a spin) about a coordinate axis k of
+// both, and I (in F) is symmetric about k: equal moments about the other two axes (the same
+// expression), no products. I has the same components in B (a wheel, a disc).
 template <class B, class I>
 constexpr bool spins_symmetric() {
   using F = typename I::frame;
-  if constexpr (!requires { B::step::speed_index; } || !std::is_same_v<typename B::tree_parent, F>)
+  if constexpr (!requires { typename B::step::axis; } || !std::is_same_v<typename B::tree_parent, F>)
     return false;
   else {
     constexpr int k = unit_axis<typename B::step::axis>::principal;
