@@ -295,13 +295,23 @@ TEST_CASE("dynamics: a heavy top and a gyrostat with body rates against Euler's 
   }
   namespace gs = models::gyrostat;
   kane::motion<gs::system, gs::evaluator> body(gs::state{});
+  // the wheel's inertia given in the spinning wheel's own frame: symmetric about w3, the same dyadic
+  using in_wheel = kane::system<kane::rigid_body<gs::B, gs::Bo, kane::literal(10),
+                                                 kane::inertia<gs::B, gs::Bo, kane::literal(1.2),
+                                                               kane::literal(1.5), kane::literal(1.9)>>,
+                                kane::rigid_body<gs::W, gs::Bo, kane::literal(0.5),
+                                                 kane::inertia<gs::W, gs::Bo, kane::literal(0.01),
+                                                               kane::literal(0.01), kane::literal(0.02)>>>;
+  kane::motion<in_wheel, gs::evaluator> body_w(gs::state{});
   for (int k = 0; k < 20; ++k) {
-    std::array<double, 14> x{}, dx{};
+    std::array<double, 14> x{}, dx{}, dw{};
     for (double& v : x) v = d(rng);
     const double n = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
     for (int i = 0; i < 4; ++i) x[std::size_t(i)] /= n;
     body(x, dx, 0.0);
     REQUIRE(body.status() == kane::solve_status::ok);
+    body_w(x, dw, 0.0);
+    for (std::size_t i = 0; i < 14; ++i) CHECK(dw[i] == Approx(dx[i]).margin(1e-14));
     // q' = E(q) w / 2; the gyrostat I w' + w x (I w + J u7 b3) = 0, J (w3 + u7)' = 0
     const double J = 0.02, I1 = 1.21, I2 = 1.51, I3 = 1.92, w1 = x[7], w2 = x[8], w3 = x[9], u7 = x[13];
     const double e0 = x[0], e1 = x[1], e2 = x[2], e3 = x[3];

@@ -3,8 +3,9 @@
 // Each case is a misuse (#ifdef) and its fix (#else).
 // case inertia_in_turning_frame: inertia_given_in_a_frame_that_turns_relative_to_the_body<.*A, .*B>
 // case inertia_about_other_point: inertia_about_another_point_than_the_mass_centre_use_parallel_axis<.*J, .*Bo>
-// case force_at_massless_point: force_at_a_point_that_is_no_particle_and_fixed_in_no_body<.*S>
+// case force_at_massless_point: force_at_a_point_of_no_mass_apply_it_at_a_particle_or_a_point_fixed_in_a_body<.*S>
 // case wheel_inertia_not_symmetric: inertia_given_in_a_frame_that_turns_relative_to_the_body<.*B, .*W>
+// case spinning_inertia_not_symmetric: inertia_in_a_spinning_frame_is_symmetric_about_its_spin_axis<.*W>
 // case torque_from_other_tree: frames_of_two_trees_relate_them_through_a_common_root_frame<M, N>
 // case equations_on_other_speeds: evaluator_and_constraints_use_different_speed_sets<kane::qdot_speeds<2>, kane::speeds<
 // case particle_mass_not_scalar: kane: particle<P, m> takes a scalar expression m
@@ -58,6 +59,13 @@ using wheel = kane::rigid_body<W, Bo, p<3>, kane::inertia<B, Bo, p<4>, p<5>, p<6
 using wheel = kane::rigid_body<W, Bo, p<3>, kane::inertia<B, Bo, p<4>, p<5>, p<4>>>;
 #endif
 static_assert(sizeof(wheel) > 0);
+// given in the spinning frame itself, the inertia is symmetric about the spin axis too
+#ifdef KANE_CASE_spinning_inertia_not_symmetric
+using wheel_in_w = kane::rigid_body<W, Bo, p<3>, kane::inertia<W, Bo, p<4>, p<5>, p<6>>>;
+#else
+using wheel_in_w = kane::rigid_body<W, Bo, p<3>, kane::inertia<W, Bo, p<4>, p<5>, p<4>>>;
+#endif
+static_assert(sizeof(wheel_in_w) > 0);
 // the wheel's speed u3 is a free speed of the evaluator's speed set, though W is not among its frames
 #ifdef KANE_CASE_wheel_speed_not_in_set
 using wheel_speeds = kane::qdot_speeds<2>;

@@ -83,6 +83,10 @@ struct a_spinning_frame_has_no_known_axes_but_its_spin_axis;
 // evaluator's speed set (kane::free_speed).
 template <class Frame>
 struct a_frame_turns_at_free_speeds_of_the_evaluators_speed_set;
+// Of a spinning frame's axes only the spin axis is known: an inertia given in it is symmetric
+// about that axis (equal moments about the other two, no products).
+template <class SpinningFrame>
+struct inertia_in_a_spinning_frame_is_symmetric_about_its_spin_axis;
 // The inertia of a rigid body is given in a frame fixed in the body (constant rotations from it).
 template <class InertiaFrame, class Body>
 struct inertia_given_in_a_frame_that_turns_relative_to_the_body;
@@ -91,7 +95,7 @@ template <class About, class MassCentre>
 struct inertia_about_another_point_than_the_mass_centre_use_parallel_axis;
 // A force acts at a particle or at a point fixed in a rigid body of the system.
 template <class Point>
-struct force_at_a_point_that_is_no_particle_and_fixed_in_no_body;
+struct force_at_a_point_of_no_mass_apply_it_at_a_particle_or_a_point_fixed_in_a_body;
 }  // namespace error
 
 namespace detail {

@@ -122,11 +122,37 @@ struct moved_inertia {
 template <class I, Point G, auto Mass>
 using parallel_axis = typename detail::moved_inertia<I, G, Mass>::type;
 
-template <Frame B, Point Bo, auto Mass, class I>
+namespace detail {
+// I as given, or, in a frame W that spins, I in W's parent: the same components if
+// symmetric about the spin axis, the only inertia a frame of unknown axes can have.
+template <class I>
+struct inertia_for {
+  using type = I;
+};
+template <class I>
+requires spin_edge<typename I::frame>
+struct inertia_for<I> {
+  using P = typename I::frame::tree_parent;
+  static constexpr auto c = I::components;
+  using in_parent = inertia<P, typename I::about, std::get<0>(c), std::get<1>(c), std::get<2>(c),
+                            std::get<3>(c), std::get<4>(c), std::get<5>(c)>;
+  static constexpr bool symmetric = spins_symmetric<typename I::frame, in_parent>();
+  static_assert(
+      check<symmetric,
+            error::inertia_in_a_spinning_frame_is_symmetric_about_its_spin_axis<typename I::frame>>);
+  // after the error, an inertia that raises no other
+  using type =
+      std::conditional_t<symmetric, in_parent,
+                         inertia<P, typename I::about, std::get<0>(c), std::get<0>(c), std::get<0>(c)>>;
+};
+}  // namespace detail
+
+template <Frame B, Point Bo, auto Mass, class Given>
 struct rigid_body : detail::body_tag {
   static_assert(ScalarExpr<decltype(Mass)>, "kane: rigid_body<B, Bo, m, I> takes a scalar expression m");
-  static_assert(std::derived_from<I, detail::inertia_tag>,
+  static_assert(std::derived_from<Given, detail::inertia_tag>,
                 "kane: rigid_body<B, Bo, m, I> takes I = kane::inertia<F, Bo, ...>");
+  using I = typename detail::inertia_for<Given>::type;
   static_assert(detail::joined_frames<B, typename I::frame>::joined);
   static_assert(detail::check < detail::fixed_frames<B, typename I::frame>() ||
                     detail::spins_symmetric<B, I>(),
@@ -263,11 +289,11 @@ struct turning_frames<X> {
 // Every force at a point of a mass, every frame of a body or torque turning at speeds of Sp.
 template <class Sys, class Sp, class... X>
 constexpr bool system_checked(list<X...>) {
-  return (
-      (check<force_applies<X>(typename Sys::items{}),
-             error::force_at_a_point_that_is_no_particle_and_fixed_in_no_body<typename point_of<X>::type>> &&
-       free_speeds_checked<Sp>(typename turning_frames<X>::type{})) &&
-      ...);
+  return ((check<force_applies<X>(typename Sys::items{}),
+                 error::force_at_a_point_of_no_mass_apply_it_at_a_particle_or_a_point_fixed_in_a_body<
+                     typename point_of<X>::type>> &&
+           free_speeds_checked<Sp>(typename turning_frames<X>::type{})) &&
+          ...);
 }
 }  // namespace detail
 
