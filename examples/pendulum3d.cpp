@@ -14,15 +14,21 @@ namespace m = models::pendulum3d;
 using rhs = kane::motion<m::system, m::evaluator>;
 using vector = std::array<double, rhs::size>;
 
+// T + V: V of gravity (zero at the pivot's height), and the spring's k q2^2 / 2
 double energy(const rhs& f) {
-  return kane::kinetic_energy<m::system>(f.evaluator()) + kane::evaluate(m::potential, f.evaluator());
+  const auto& ev = f.evaluator();
+  const double q2 = ev.state()[kane::q<2>];
+  return kane::kinetic_energy<m::system>(ev) + kane::potential_energy<m::system>(ev) +
+         ev.state()[m::k] * q2 * q2 / 2;
 }
 
 int main(int argc, char** argv) {
   m::state s;
-  // lA, lB, mA, mB, mQ, IA1, IA2, IA3, IA12, IA23, IA31, IB1, IB2, IB3, IB12, IB23, IB31, g, k, c, d
-  s.p = {1.5,  1.4, 0.9, 1.0,  1.2,   0.7,   0.8,  0.9, 0.07, -0.06, 0.07,
-         0.66, 1.2, 1.0, 0.02, -0.03, -0.03, 9.81, 1.5, 0,    0};
+  s[m::lA] = 1.5, s[m::lB] = 1.4, s[m::mA] = 0.9, s[m::mB] = 1.0, s[m::mQ] = 1.2;
+  s[m::IA1] = 0.7, s[m::IA2] = 0.8, s[m::IA3] = 0.9, s[m::IA12] = 0.07, s[m::IA23] = -0.06, s[m::IA31] = 0.07;
+  s[m::IB1] = 0.66, s[m::IB2] = 1.2, s[m::IB3] = 1.0, s[m::IB12] = 0.02, s[m::IB23] = -0.03,
+  s[m::IB31] = -0.03;
+  s[m::g] = 9.81, s[m::k] = 1.5, s[m::c] = 0, s[m::d] = 0;  // no damper, no drag
   rhs f(s);
   vector x = {1.2, -0.7, 0.5, 2.0}, k1;
   FILE* csv = argc > 1 ? std::fopen(argv[1], "w") : nullptr;

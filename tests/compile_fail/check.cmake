@@ -1,7 +1,11 @@
-# Build TARGET in BUILD_DIR, or compile SOURCE with CXX and FLAGS (another
-# compiler); pass if the compile fails and its first error line matches every
-# regular expression of REGEX (separated by " && "). Only the first error line
-# counts: later lines quote the source, which would match anything it names.
+# Build TARGET in BUILD_DIR, or compile SOURCE with CXX and FLAGS; pass if the
+# compile fails, its first error line matches every regular expression of REGEX
+# (separated by " && ") and the whole diagnostic is at most MAX_BYTES (default 72 KB,
+# above the longest case's). Only the first error line counts: later lines quote
+# the source, which would match anything it names.
+if(NOT DEFINED MAX_BYTES)
+  set(MAX_BYTES 73728)
+endif()
 if(DEFINED CXX)
   separate_arguments(flags UNIX_COMMAND "${FLAGS}")
   execute_process(COMMAND ${CXX} ${flags} -fsyntax-only ${SOURCE} RESULT_VARIABLE result OUTPUT_VARIABLE out
@@ -14,6 +18,13 @@ else()
 endif()
 if(result EQUAL 0)
   message(FATAL_ERROR "${what} compiled, but it must not")
+endif()
+if(out MATCHES "invalid-pch|precompiled header .* (was not|cannot be) used")
+  message(FATAL_ERROR "${what}: the precompiled header was not used\n${out}")
+endif()
+string(LENGTH "${out}" bytes)
+if(bytes GREATER MAX_BYTES)
+  message(FATAL_ERROR "${what}: a diagnostic of ${bytes} bytes, over ${MAX_BYTES}\n${out}")
 endif()
 string(REGEX MATCH "[^\n]*error: [^\n]*" first "${out}")
 string(REPLACE " && " ";" regexes "${REGEX}")
