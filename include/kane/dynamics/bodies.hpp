@@ -84,6 +84,7 @@ constexpr bool fixed_frames() {
 template <Point P, auto Mass>
 struct particle : detail::particle_tag {
   static_assert(ScalarExpr<decltype(Mass)>, "kane: particle<P, m> takes a scalar expression m");
+  static constexpr bool well_formed = ScalarExpr<decltype(Mass)>;
   using point = P;
   static constexpr auto mass = detail::freeze<Mass>();
 };
@@ -147,6 +148,25 @@ struct inertia_for<I> {
 };
 }  // namespace detail
 
+namespace detail {
+// The rules of rigid_body<B, Bo, m, I> as one value, without an error.
+template <class B, class Bo, class Given>
+constexpr bool body_rules() {
+  if constexpr (!std::derived_from<Given, inertia_tag>)
+    return false;
+  else {
+    using F = typename Given::frame;
+    if constexpr (!path<B, F>::joined)
+      return false;
+    else if constexpr (spin_edge<F>)
+      return inertia_for<Given>::symmetric && std::is_same_v<typename Given::about, Bo>;
+    else
+      return (fixed_frames<B, F>() || spins_symmetric<B, Given>()) &&
+             std::is_same_v<typename Given::about, Bo>;
+  }
+}
+}  // namespace detail
+
 template <Frame B, Point Bo, auto Mass, class Given>
 struct rigid_body : detail::body_tag {
   static_assert(ScalarExpr<decltype(Mass)>, "kane: rigid_body<B, Bo, m, I> takes a scalar expression m");
@@ -161,6 +181,7 @@ struct rigid_body : detail::body_tag {
       detail::check<
           std::is_same_v<typename I::about, Bo>,
           error::inertia_about_another_point_than_the_mass_centre_use_parallel_axis<typename I::about, Bo>>);
+  static constexpr bool well_formed = ScalarExpr<decltype(Mass)> && detail::body_rules<B, Bo, Given>();
   using frame = B;
   using centre = Bo;
   using inertia_type = I;
@@ -176,6 +197,9 @@ struct force : detail::load_tag {
 template <Frame B, auto T>
 struct torque : detail::load_tag {
   static_assert(VectorExpr<decltype(T)>, "kane: torque<B, T> takes a vector expression T");
+  using trees = detail::join_trees_t<detail::tree_of_t<std::remove_cvref_t<decltype(T)>>, detail::root_of<B>>;
+  static_assert(detail::one_tree_v<trees>);
+  static constexpr bool well_formed = VectorExpr<decltype(T)> && !detail::is_two_roots_v<trees>;
   using frame = B;
   static constexpr auto vector = detail::freeze<T>();
 };
@@ -294,6 +318,37 @@ constexpr bool system_checked(list<X...>) {
                      typename point_of<X>::type>> &&
            free_speeds_checked<Sp>(typename turning_frames<X>::type{})) &&
           ...);
+}
+template <class Sp, class... F>
+constexpr bool turn_freely(list<F...>) {
+  return (turns_freely<Sp, F>() && ...);
+}
+// The item keeps its own rules (each broken one was reported where the item was named).
+template <class X>
+constexpr bool item_well_formed() {
+  if constexpr (requires { X::well_formed; })
+    return X::well_formed;
+  else
+    return std::derived_from<X, load_tag>;
+}
+template <class Sys, class Sp, class... X>
+constexpr bool system_holds(list<X...>) {
+  return ((item_well_formed<X>() && force_applies<X>(typename Sys::items{}) &&
+           turn_freely<Sp>(typename turning_frames<X>::type{})) &&
+          ...);
+}
+// Sys keeps every rule with the speeds Sp; the system's own are reported here. An entry point
+// computes only an admitted system, so a broken rule's error is not followed by those of the code
+// that would use it.
+template <class Sys, class Sp>
+constexpr bool admitted() {
+  if constexpr (!requires { typename Sys::items; })
+    return false;
+  else if constexpr (!system_holds<Sys, Sp>(typename Sys::items{})) {
+    static_assert(system_checked<Sys, Sp>(typename Sys::items{}));
+    return false;
+  } else
+    return true;
 }
 }  // namespace detail
 

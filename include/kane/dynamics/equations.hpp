@@ -36,7 +36,12 @@ namespace detail {
 template <class Sys, class Ev>
 using joint_form_of = joint_form<Sys, typename Ev::root, speeds_of<Ev>>;
 template <class Sys, class Ev>
-inline constexpr bool recursive_form = joint_form_of<Sys, Ev>::table.local;
+inline constexpr bool recursive_form = [] {
+  if constexpr (admitted<Sys, speeds_of<Ev>>())
+    return joint_form_of<Sys, Ev>::table.local;
+  else
+    return false;
+}();
 // M by composite bodies and f by inward sums (crba.hpp, rnea.hpp); without Forcing, f = 0.
 template <class Sys, bool Forcing, class Ev>
 equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n> recursive_equations(const Ev& ev) {
@@ -59,7 +64,9 @@ equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n> recursive_equations(c
 }
 template <class Sys, bool RestRates, class Ev>
 equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n> mass_matrix_and_forcing_at(const Ev& ev) {
-  if constexpr (recursive_form<Sys, Ev>)
+  if constexpr (!admitted<Sys, speeds_of<Ev>>())
+    return {};
+  else if constexpr (recursive_form<Sys, Ev>)
     return recursive_equations<Sys, true>(ev);
   else
     return equations_along<Sys, RestRates, true>(ev, all_speeds<speeds_of<Ev>::n>{});
@@ -87,8 +94,10 @@ requires detail::is_evaluator<Ev>::value mass_matrix_only<typename Ev::scalar, d
 mass_matrix(const Ev& ev) {
   constexpr std::size_t n = detail::speeds_of<Ev>::n;
   return detail::flat<typename Ev::scalar>([&] {
-    const auto e = [&] {
-      if constexpr (detail::recursive_form<Sys, Ev>)
+    const auto e = [&]() -> equations_of_motion<typename Ev::scalar, n> {
+      if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
+        return {};
+      else if constexpr (detail::recursive_form<Sys, Ev>)
         return detail::recursive_equations<Sys, false>(ev);
       else
         return detail::equations_along<Sys, true, false>(ev, detail::all_speeds<n>{});

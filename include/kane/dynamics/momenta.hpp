@@ -60,19 +60,20 @@ struct reference_point {
 // f(X, r^{Ref,P} in R) for every item with mass; Ref = the reference point of Sys.
 template <class Sys, class Ev, class F>
 void for_each_mass(const Ev& ev, F&& f) {
-  static_assert(system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
-  using R = typename Ev::root;
-  using Ref = typename reference_point<Sys>::type;
-  [&]<class... X>(list<X...>) {
-    (
-        [&] {
-          if constexpr (has_mass<X>) {
-            using P = typename point_of_mass<X>::type;
-            f(std::type_identity<X>{}, in_root<R>(position<Ref, P>(), ev));
-          }
-        }(),
-        ...);
-  }(typename Sys::items{});
+  if constexpr (admitted<Sys, speeds_of<Ev>>()) {
+    using R = typename Ev::root;
+    using Ref = typename reference_point<Sys>::type;
+    [&]<class... X>(list<X...>) {
+      (
+          [&] {
+            if constexpr (has_mass<X>) {
+              using P = typename point_of_mass<X>::type;
+              f(std::type_identity<X>{}, in_root<R>(position<Ref, P>(), ev));
+            }
+          }(),
+          ...);
+    }(typename Sys::items{});
+  }
 }
 }  // namespace detail
 
@@ -121,25 +122,27 @@ requires detail::is_evaluator<Ev>::value &&
 
 template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value typename Ev::scalar kinetic_energy(const Ev& ev) {
-  static_assert(detail::system_checked<Sys, detail::speeds_of<Ev>>(typename Sys::items{}));
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   S energy = S(0);
-  [&]<class... X>(detail::list<X...>) {
-    (
-        [&] {
-          if constexpr (detail::has_mass<X>) {
-            using P = typename detail::point_of_mass<X>::type;
-            const Eigen::Matrix<S, 3, 1> v = detail::in_root<R>(velocity<R, P>(), ev);
-            energy += detail::eval_scalar(X::mass, ev) * v.squaredNorm() / 2;
-          }
-          if constexpr (detail::is_body<X>) {
-            const Eigen::Matrix<S, 3, 1> w = detail::in_root<R>(angular_velocity<R, typename X::frame>(), ev);
-            energy += w.dot(detail::inertia_in_root<typename X::inertia_type>(ev) * w) / 2;
-          }
-        }(),
-        ...);
-  }(typename Sys::items{});
+  if constexpr (detail::admitted<Sys, detail::speeds_of<Ev>>()) {
+    [&]<class... X>(detail::list<X...>) {
+      (
+          [&] {
+            if constexpr (detail::has_mass<X>) {
+              using P = typename detail::point_of_mass<X>::type;
+              const Eigen::Matrix<S, 3, 1> v = detail::in_root<R>(velocity<R, P>(), ev);
+              energy += detail::eval_scalar(X::mass, ev) * v.squaredNorm() / 2;
+            }
+            if constexpr (detail::is_body<X>) {
+              const Eigen::Matrix<S, 3, 1> w =
+                  detail::in_root<R>(angular_velocity<R, typename X::frame>(), ev);
+              energy += w.dot(detail::inertia_in_root<typename X::inertia_type>(ev) * w) / 2;
+            }
+          }(),
+          ...);
+    }(typename Sys::items{});
+  }
   return energy;
 }
 

@@ -88,7 +88,9 @@ class motion {
         s_.u[i] = x[nq + i];
     }
     s_.t = time;
-    if constexpr (detail::recursive_form<Sys, Ev>)
+    if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
+      return;
+    else if constexpr (detail::recursive_form<Sys, Ev>)
       ev_.update(s_);
     else  // Kane's sums read a few angular accelerations and q'' (evaluation/reads.hpp)
       ev_.template update_for<equation_reads>(s_);

@@ -130,8 +130,11 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
 template <class Sys, class NH, class Ev, class Sol>
 requires detail::is_evaluator<Ev>::value reduced_equations<typename Ev::scalar, NH::n, NH::p>
 reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
-  return detail::flat<typename Ev::scalar>(
-      [&] { return detail::reduced_mass_matrix_and_forcing_at<Sys, NH, false>(ev, sol); });
+  if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
+    return {};
+  else
+    return detail::flat<typename Ev::scalar>(
+        [&] { return detail::reduced_mass_matrix_and_forcing_at<Sys, NH, false>(ev, sol); });
 }
 
 }  // namespace kane

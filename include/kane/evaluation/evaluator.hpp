@@ -43,10 +43,19 @@ namespace kane {
 template <State St, class Frames, level Level = level::acceleration, class Speeds = void>
 class evaluator;
 
-template <State St, Frame... Fs, level Level, class Speeds>
-class evaluator<St, frames<Fs...>, Level, Speeds>
+namespace detail {
+// The speed set, or none where the argument is not one (its error is reported, and no other follows).
+template <class Speeds>
+using usable_speeds = std::conditional_t<std::is_void_v<Speeds> || SpeedSet<Speeds>, Speeds, void>;
+}  // namespace detail
+
+template <State St, Frame... Fs, level Level, class Given>
+class evaluator<St, frames<Fs...>, Level, Given>
     : public detail::outward_pass<typename St::scalar, typename detail::closure<Fs...>::type, Level>,
-      public detail::kinematic_equations<St, Speeds> {
+      public detail::kinematic_equations<St, detail::usable_speeds<Given>> {
+  using Speeds = detail::usable_speeds<Given>;
+  static_assert(std::is_void_v<Given> || SpeedSet<Given>,
+                "kane: the fourth argument of evaluator is a speed set (speeds/generalized_speeds.hpp)");
   using pass_type = detail::outward_pass<typename St::scalar, typename detail::closure<Fs...>::type, Level>;
   static_assert((detail::one_tree_v<detail::join_trees_t<detail::root_of<Fs>, typename pass_type::root>> &&
                  ...));

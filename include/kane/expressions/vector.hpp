@@ -152,7 +152,7 @@ constexpr auto operator-(V v) {
 // (angular_velocity.hpp, point.hpp) through more specialised overloads.
 template <VectorExpr L, VectorExpr R>
 constexpr auto operator+(L l, R r) {
-  static_assert(detail::summable_v<L, R>);
+  static_assert(detail::summable<L, R>());
   if constexpr (is_zero_vector_v<L>)
     return r;
   else if constexpr (is_zero_vector_v<R>)
@@ -168,7 +168,7 @@ constexpr auto operator+(L l, R r) {
 }
 template <VectorExpr L, VectorExpr R>
 constexpr auto operator-(L l, R r) {
-  static_assert(detail::summable_v<L, R>);
+  static_assert(detail::summable<L, R>());
   if constexpr (is_zero_vector_v<R>)
     return l;
   else if constexpr (is_zero_vector_v<L>)

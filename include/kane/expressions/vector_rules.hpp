@@ -140,8 +140,11 @@ inline constexpr bool same_observer_v =
               std::is_same_v<observer_of_t<L>, observer_of_t<R>>,
           error::quantities_measured_in_different_frames_measure_both_in_one_frame<observer_of_t<L>,
                                                                                    observer_of_t<R>>>;
+// L + R, L - R: one tree, one observer (a function: a broken rule adds no error of its own).
 template <class L, class R>
-inline constexpr bool summable_v = one_tree_v<tree_of_t<vsum<L, R>>>&& same_observer_v<L, R>;
+constexpr bool summable() {
+  return one_tree_v<tree_of_t<vsum<L, R>>> && same_observer_v<L, R>;
+}
 }  // namespace detail
 
 }  // namespace kane
