@@ -74,9 +74,7 @@ TEST_CASE("dynamics: kane::motion over an evaluator without a speed set integrat
   CHECK(dy[1] == Approx(dx[1]).epsilon(1e-15));
 }
 
-#include "../examples/models/free_body.hpp"
-#include "../examples/models/pendulum3d.hpp"
-#include "data/sympy_dynamics.hpp"
+#include "sympy_states.hpp"
 
 namespace {
 // SymPy's 3D double pendulum (examples/models/pendulum3d.hpp), parameters in the order of
@@ -103,10 +101,7 @@ using B = m::B;
 
 TEST_CASE("dynamics: a 3D double pendulum with springs, dampers and drag against SymPy's KanesMethod") {
   for (const auto& x : sympy_dynamics::pendulum) {
-    pd::state s;
-    for (int i = 0; i < 21; ++i) s.p[i] = sympy_dynamics::pendulum_p[i];
-    s.q = {x.q[0], x.q[1]};
-    s.u = {x.u[0], x.u[1]};
+    pd::state s = sympy_states::pendulum(x);
     s.ud = {0.3, -7.0};
     pd::evaluator ev;
     ev.update(s);
@@ -124,15 +119,8 @@ TEST_CASE("dynamics: a 3D double pendulum with springs, dampers and drag against
 
 TEST_CASE("dynamics: a free body with Euler parameters, a torque and a force against SymPy's KanesMethod") {
   for (const auto& x : sympy_dynamics::body) {
-    fb::state s;
-    // the Euler parameters of the attitude: ^N P^B = dcm, the rotation that maps B's components to N's is its
-    // transpose
+    const fb::state s = sympy_states::free_body(x);
     const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> c(x.dcm);
-    const Eigen::Quaterniond e(Eigen::Matrix3d(c.transpose()));
-    s.q = {e.w(), e.x(), e.y(), e.z(), x.q[3], x.q[4], x.q[5]};
-    for (int i = 0; i < 6; ++i) s.u[i] = x.u[i];
-    const auto& bp = sympy_dynamics::body_p;  // m, I.., g, t.. (p4..p14); a, b, c (p1..p3); f.. (p15..p17)
-    for (int i = 0; i < 17; ++i) s.p[i] = i < 3 ? bp[11 + i] : i < 14 ? bp[i - 3] : bp[i];
     fb::evaluator ev;
     ev.update(s);
     REQUIRE((ev.axes<fb::B>().transpose() - c).norm() < 1e-14);
@@ -166,12 +154,8 @@ TEST_CASE("dynamics: mass_matrix alone from a pose-level evaluator is SymPy's ma
   using body_pose =
       kane::evaluator<fb::state, kane::frames<fb::B>, kane::level::pose, models::free_body::speeds>;
   for (const auto& x : sympy_dynamics::body) {
-    fb::state s;
-    const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> c(x.dcm);
-    const Eigen::Quaterniond e(Eigen::Matrix3d(c.transpose()));
-    s.q = {e.w(), e.x(), e.y(), e.z(), x.q[3], x.q[4], x.q[5]};
-    const auto& bp = sympy_dynamics::body_p;
-    for (int i = 0; i < 17; ++i) s.p[i] = i < 3 ? bp[11 + i] : i < 14 ? bp[i - 3] : bp[i];
+    fb::state s = sympy_states::free_body(x);
+    for (double& u : s.u) u = nan;  // read at no level below velocity
     body_pose ev;
     ev.update(s);
     const auto mm = kane::mass_matrix<fb::system>(ev);
@@ -250,10 +234,7 @@ using pendulum_with = kane::system<
 TEST_CASE("dynamics: an inertia symmetric about a joint axis, given in the joint's parent frame") {
   static_assert(kane::detail::recursive_form<pendulum_with<pd::A>, pd::evaluator>);
   for (const auto& x : sympy_dynamics::pendulum) {
-    pd::state s;
-    for (int i = 0; i < 21; ++i) s.p[i] = sympy_dynamics::pendulum_p[i];
-    s.q = {x.q[0], x.q[1]};
-    s.u = {x.u[0], x.u[1]};
+    pd::state s = sympy_states::pendulum(x);
     pd::evaluator ev;
     ev.update(s);
     const auto in_a = kane::mass_matrix_and_forcing<pendulum_with<pd::A>>(ev);

@@ -7,10 +7,8 @@
 
 #include <kane/kane.hpp>
 
-#include "../examples/models/free_body.hpp"
-#include "../examples/models/pendulum3d.hpp"
 #include "../examples/rk4.hpp"
-#include "data/sympy_dynamics.hpp"
+#include "sympy_states.hpp"
 
 namespace {
 using kane::e;
@@ -27,21 +25,11 @@ using body_state = kane::state<double, 7, 6, 17>;
 using body_evaluator =
     kane::evaluator<body_state, kane::frames<fm::B>, kane::level::acceleration, fm::speeds>;
 
-body_state body_at(const sympy_dynamics::body_case& x) {
-  body_state s;
-  const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> c(x.dcm);
-  const Eigen::Quaterniond q(Eigen::Matrix3d(c.transpose()));
-  s.q = {q.w(), q.x(), q.y(), q.z(), x.q[3], x.q[4], x.q[5]};
-  for (int i = 0; i < 6; ++i) s.u[i] = x.u[i];
-  const auto& bp = sympy_dynamics::body_p;
-  for (int i = 0; i < 17; ++i) s.p[i] = i < 3 ? bp[11 + i] : i < 14 ? bp[i - 3] : bp[i];
-  return s;
-}
 }  // namespace
 
 TEST_CASE("momenta: a free body's momenta against SymPy and the transfer to another point") {
   for (const auto& x : sympy_dynamics::body) {
-    const body_state s = body_at(x);
+    const body_state s = sympy_states::free_body(x);
     body_evaluator ev;
     ev.update(s);
     const double m = s.p[3];
@@ -64,10 +52,7 @@ TEST_CASE("momenta: a free body's momenta against SymPy and the transfer to anot
 
 TEST_CASE("momenta: the 3D double pendulum's potential energy against SymPy's") {
   for (const auto& x : sympy_dynamics::pendulum) {
-    pd::state s;
-    for (int i = 0; i < 21; ++i) s.p[i] = sympy_dynamics::pendulum_p[i];
-    s.q = {x.q[0], x.q[1]};
-    s.u = {x.u[0], x.u[1]};
+    const pd::state s = sympy_states::pendulum(x);
     pd::evaluator ev;
     ev.update(s);
     // SymPy's V adds the torsion spring k q2^2 / 2, which is a torque load here
