@@ -68,3 +68,26 @@ TEST_CASE("dynamics: the disc turns steadily where the closed form says so") {
     for (int i = 3; i < 5; ++i) CHECK(ud(i) == Approx(x.ud[i]).epsilon(1e-12));
   }
 }
+
+TEST_CASE("dynamics: the disc's generalized forces along its nonholonomic partial velocities") {
+  for (const auto& x : sympy_disc_dynamics::disc) {
+    disc_state s;
+    for (int i = 0; i < 5; ++i) s.q[i] = x.q[i], s.u[i] = x.u[i];
+    for (int i = 0; i < 3; ++i) s.p[i] = sympy_disc_dynamics::p[i];
+    const auto ud = disc_rates(x.q, x.u);  // u' by the reduced equations, summed along v~ directly
+    for (int i = 0; i < 5; ++i) s.ud[i] = ud(i);
+    disc_evaluator ev;
+    ev.update(s);
+    const auto sol = kane::solve_constraints<dd::rolling>(ev);
+    const auto g = kane::reduced_generalized_forces<dd::system, dd::rolling>(ev, sol);
+    REQUIRE(g.status == kane::solve_status::ok);
+    // Kane's equations along v~ hold at that u': F~ + F~* = 0
+    CHECK((g.active + g.inertia).norm() < 1e-12 * g.inertia.norm());
+    // gravity alone acts at the centre, whose height is r cos(q2): with u1 = q2' (the lean rate) its
+    // work rate is m g r sin(q2) u1, and u2, u3 do no work
+    const double m = s.p[1], gr = s.p[2], r = s.p[0], lean = x.q[1];
+    CHECK(g.active(0) == Approx(m * gr * r * std::sin(lean)).epsilon(1e-13).margin(1e-14));
+    CHECK(std::abs(g.active(1)) < 1e-14);
+    CHECK(std::abs(g.active(2)) < 1e-14);
+  }
+}

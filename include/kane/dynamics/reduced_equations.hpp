@@ -10,6 +10,7 @@
 
 #include "kane/detail/inline.hpp"
 #include "kane/dynamics/equations.hpp"
+#include "kane/dynamics/generalized_forces.hpp"
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/memo.hpp"
 #include "kane/evaluation/status.hpp"
@@ -135,6 +136,45 @@ reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
   else
     return detail::flat<typename Ev::scalar>(
         [&] { return detail::reduced_mass_matrix_and_forcing_at<Sys, NH, false>(ev, sol); });
+}
+
+// Kane's generalized forces along the nonholonomic partial velocities, F~ = T^T F and
+// F~* = T^T F*, at the evaluator's state (F* at its u'; F~ + F~* = 0 is the reduced equations).
+// F from generalized_active_force (one expression per speed), F* = f - F - M u' from the full
+// equations. status: the evaluator's, the solution's, or not_finite.
+template <class S, std::size_t P>
+struct reduced_forces {
+  Eigen::Matrix<S, int(P), 1> active;   // F~_r
+  Eigen::Matrix<S, int(P), 1> inertia;  // F~*_r
+  solve_status status;
+};
+template <class Sys, class NH, class Ev, class Sol>
+requires detail::is_evaluator<Ev>::value reduced_forces<typename Ev::scalar, NH::p>
+reduced_generalized_forces(const Ev& ev, const Sol& sol) {
+  using S = typename Ev::scalar;
+  constexpr std::size_t n = NH::n, p = NH::p;
+  static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
+  if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>()) {
+    return {};
+  } else {
+    Eigen::Matrix<S, int(n), 1> active;
+    detail::static_for<n>([&](auto r) {
+      active(Eigen::Index(r)) =
+          evaluate(generalized_active_force<typename Ev::root, Sys, typename NH::speed_set, r + 1>(), ev);
+    });
+    const auto e = mass_matrix_and_forcing<Sys>(ev);
+    const Eigen::Matrix<S, int(n), 1> inertia = e.f - active - e.M * detail::speed_rates(ev);
+    Eigen::Matrix<S, int(n), int(p)> t = Eigen::Matrix<S, int(n), int(p)>::Zero();
+    for (std::size_t k = 0; k < p; ++k) t(Eigen::Index(NH::independents[k] - 1), Eigen::Index(k)) = S(1);
+    for (std::size_t j = 0; j < NH::m; ++j)
+      t.row(Eigen::Index(NH::dependents[j] - 1)) = sol.A.row(Eigen::Index(j));
+    reduced_forces<S, p> out{t.transpose() * active, t.transpose() * inertia, e.status};
+    if (out.status == solve_status::ok) out.status = sol.status;
+    if (out.status == solve_status::ok &&
+        !(detail::all_finite_matrix(out.active) && detail::all_finite_matrix(out.inertia)))
+      out.status = solve_status::not_finite;
+    return out;
+  }
 }
 
 }  // namespace kane
