@@ -130,6 +130,12 @@ TEST_CASE("kinematics: the double pendulum against SymPy and closed forms") {
     const double a2y = l1 * (-s1 * w1 * w1 + c1 * w1d) + l2 * (-s12 * w * w + c12 * wd);
     CHECK(kane::is_approx(v2, vec<N>(v2x, v2y, 0), 1e-13));
     CHECK(kane::is_approx(a2, vec<N>(a2x, a2y, 0), 1e-13));
+    // the unit tangent t = v / |v| and its N-derivative (a - t (t . a)) / |v|
+    const auto tangent = kane::normalized(kane::velocity<N, Q2>());
+    const Eigen::Vector3d v(v2x, v2y, 0), a(a2x, a2y, 0), t = v / v.norm();
+    CHECK((kane::express<N>(tangent, ev).eigen() - t).norm() < 1e-14);
+    CHECK((kane::express<N>(kane::dt<N>(tangent), ev).eigen() - (a - t * t.dot(a)) / v.norm()).norm() <
+          1e-13 * (1 + a.norm() / v.norm()));
   }
 }
 

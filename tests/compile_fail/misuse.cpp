@@ -20,6 +20,7 @@
 // case not_a_speed_set: kane: the fourth argument of evaluator is a speed set
 // case fewer_speeds: kane: the state holds fewer speeds than the speed set defines
 // case all_dependent: kane: at least one speed must stay independent
+// case normalized_zero: kane: normalized.v. of the zero vector has no direction
 // case acceleration_not_linear: kane: an angular acceleration is not linear in the speeds
 #include <kane/kane.hpp>
 
@@ -41,6 +42,12 @@ double use() {
   using nh = kane::nonholonomic<kane::qdot_speeds<2>, kane::dependent<2>, kane::u<1> - kane::u<2>>;
   x += kane::solve_constraints<nh>(ev).A(0, 0);
   x += kane::dcm<N, A, float>()(0, 0) + kane::vec<N, float>()[0];
+  // e1 - e1 is the zero vector as a type
+#ifdef KANE_CASE_normalized_zero
+  (void)kane::normalized(kane::e<A, 1> - kane::e<A, 1>);
+#else
+  (void)kane::normalized(kane::e<A, 1> - kane::e<A, 2>);
+#endif
 #ifdef KANE_CASE_zero_denominator
   (void)kane::constant<1, 0>{};
 #else

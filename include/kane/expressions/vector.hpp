@@ -204,6 +204,12 @@ template <VectorExpr V, ScalarOperand S>
 constexpr auto operator/(V v, S s) {
   return (one_t{} / s) * v;
 }
+// v / |v|: a unit vector along v (NaN where v is zero at a state).
+template <VectorExpr V>
+constexpr auto normalized(V v) {
+  static_assert(!is_zero_vector_v<V>, "kane: normalized(v) of the zero vector has no direction");
+  return v / sqrt(dot(v, v));
+}
 
 namespace detail {
 // e_Fi x e_Fj
