@@ -8,7 +8,6 @@
 
 #include <cstddef>
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -23,5 +22,4 @@ template <class A, class B, class S>
 class dcm;
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -20,7 +20,6 @@
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/point.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -212,5 +211,4 @@ requires ScalarExpr<X> || VectorExpr<X> std::ostream& operator<<(std::ostream& o
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

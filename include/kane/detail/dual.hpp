@@ -4,7 +4,6 @@
 
 #include <cmath>
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -62,5 +61,4 @@ struct dual {
 };
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

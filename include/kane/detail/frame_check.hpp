@@ -8,7 +8,6 @@
 
 #include <type_traits>
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -107,5 +106,4 @@ inline constexpr bool check<false, Rule> = sizeof(Rule) > 0;
 }  // namespace detail
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

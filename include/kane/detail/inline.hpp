@@ -33,7 +33,6 @@
 #endif
 #endif
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -46,5 +45,4 @@ decltype(auto) flat(F&& f) {
   return f();
 }
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -16,7 +16,6 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -166,5 +165,4 @@ bool solve_positive_definite(const Eigen::Matrix<S, N, N>& m, const Eigen::Matri
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -6,7 +6,6 @@
 #include <type_traits>
 #include <utility>
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -133,5 +132,4 @@ struct not_void<list<T...>> {
 };
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -13,7 +13,6 @@
 #include "kane/detail/structure.hpp"
 #include "kane/detail/v3.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -188,5 +187,4 @@ constexpr std::array<entry, 9> turned_columns(const std::array<entry, 9>& parent
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -9,7 +9,6 @@
 #include <cstddef>
 #include <type_traits>
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -142,5 +141,4 @@ constexpr pattern<N, N> identity_pattern() {
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

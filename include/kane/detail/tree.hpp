@@ -13,7 +13,6 @@
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/list.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -83,5 +82,4 @@ struct frame_up {
   using type = typename F::tree_parent;
 };
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -11,7 +11,6 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -111,5 +110,4 @@ KANE_ALWAYS_INLINE trig<typename State::scalar, Needed> make_trig(const State& s
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

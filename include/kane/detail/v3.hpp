@@ -11,7 +11,6 @@
 
 #include "kane/detail/inline.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -71,5 +70,4 @@ constexpr void store3(S* p, const v3<S>& a) {
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -26,7 +26,6 @@
 #include "kane/dynamics/crba.hpp"
 #include "kane/dynamics/rnea.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -209,5 +208,4 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -27,7 +27,6 @@
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/frames/axis.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -191,5 +190,4 @@ struct body_frames<JF, Ev, list<F...>> {
 };
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

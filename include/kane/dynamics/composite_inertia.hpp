@@ -17,7 +17,6 @@
 #include "kane/dynamics/body_frames.hpp"
 #include "kane/dynamics/terms.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -190,5 +189,4 @@ template <class JF, std::size_t F>
 using frame_at = typename at<typename JF::frame_list, F>::type;
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

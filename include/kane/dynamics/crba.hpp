@@ -24,7 +24,6 @@
 #include "kane/dynamics/composite_inertia.hpp"
 #include "kane/dynamics/terms.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -191,5 +190,4 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -20,6 +20,7 @@
 #include "kane/dynamics/joint_form.hpp"
 #include "kane/dynamics/rnea.hpp"
 #include "kane/dynamics/sums.hpp"
+#include "kane/dynamics/system_rules.hpp"
 #include "kane/dynamics/terms.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/memo.hpp"
@@ -27,7 +28,6 @@
 #include "kane/evaluation/tables.hpp"
 #include "kane/frames/vec.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -125,5 +125,4 @@ std::pair<Eigen::Matrix<S, int(N), 1>, solve_status> speed_derivatives(const equ
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -15,7 +15,6 @@
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/derivative.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -164,5 +163,4 @@ constexpr std::array<entry, 3> own_pattern() {
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -16,7 +16,6 @@
 #include "kane/dynamics/bodies.hpp"
 #include "kane/speeds/partial_velocity.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -94,5 +93,4 @@ constexpr auto generalized_inertia_force() {
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -21,8 +21,8 @@
 #include "kane/detail/inline.hpp"
 #include "kane/dynamics/aba.hpp"
 #include "kane/dynamics/equations.hpp"
+#include "kane/dynamics/system_rules.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -104,5 +104,4 @@ forward_dynamics(const Ev& ev) {
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -1,17 +1,14 @@
 // When Kane's sums regroup over the tree (crba.hpp, rnea.hpp): the joint form
 // of a system, decided at compile time.
 //
-// Every speed u_r = q_r' turns exactly one edge of the frame tree, a simple
-// rotation by q_r about an axis k_r (the other edges turn by constant angles);
-// every point of the system (mass centres, particles, points of forces) is a
-// chain of vectors, each fixed in a frame, from the root's origin, the frames
-// of each chain ordered down one path of the tree. Then, for every item below
-// the edge of u_r,
-//   w_r = k_r,   v_r(P) = k_r x (P - X_r) = k_r x P + X_r x k_r,
-// with X_r the point of the chain where its vectors below the edge begin;
-// when every item below the edge has the same X_r, the partial velocities of
-// u_r are one screw S_r = (k_r, X_r x k_r): the composite-body sums hold. The tables
-// are constexpr arrays of indices, so their cost grows like the model, not its square.
+// Every speed u_r = q_r' turns exactly one edge of the frame tree, a simple rotation by q_r
+// about an axis k_r (other edges turn by constant angles); every point of the system is a chain
+// of vectors, each fixed in a frame, from the root's origin, down one path of the tree. Then for
+// every item below the edge of u_r, w_r = k_r and v_r(P) = k_r x (P - X_r) = k_r x P + X_r x k_r,
+// X_r the point of the chain where its vectors below the edge begin; when all items below the
+// edge share X_r, u_r's partial velocities are one screw S_r = (k_r, X_r x k_r) and the
+// composite-body sums hold. The tables are constexpr arrays of indices: their cost grows like
+// the model, not its square.
 #pragma once
 
 #include <array>
@@ -27,7 +24,6 @@
 #include "kane/kinematics/point.hpp"
 #include "kane/speeds/generalized_speeds.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -301,5 +297,4 @@ struct joint_form {
 };
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

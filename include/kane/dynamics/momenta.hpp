@@ -17,12 +17,12 @@
 
 #include "kane/dynamics/bodies.hpp"
 #include "kane/dynamics/sums.hpp"
+#include "kane/dynamics/system_rules.hpp"
 #include "kane/dynamics/terms.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/frames/vec.hpp"
 #include "kane/kinematics/point.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -171,5 +171,4 @@ requires detail::is_evaluator<Ev>::value &&(std::is_void_v<O> || Point<O>)typena
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

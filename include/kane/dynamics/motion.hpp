@@ -22,9 +22,9 @@
 
 #include "kane/dynamics/inverse_dynamics.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
+#include "kane/dynamics/system_rules.hpp"
 #include "kane/evaluation/reads.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -166,5 +166,4 @@ class constrained_motion {
 };
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -11,12 +11,12 @@
 #include "kane/detail/inline.hpp"
 #include "kane/dynamics/equations.hpp"
 #include "kane/dynamics/generalized_forces.hpp"
+#include "kane/dynamics/system_rules.hpp"
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/memo.hpp"
 #include "kane/evaluation/status.hpp"
 #include "kane/evaluation/tables.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -178,5 +178,4 @@ reduced_generalized_forces(const Ev& ev, const Sol& sol) {
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -22,7 +22,6 @@
 #include "kane/dynamics/body_frames.hpp"
 #include "kane/dynamics/crba.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -197,5 +196,4 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -22,6 +22,7 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/invert.hpp"
 #include "kane/dynamics/bodies.hpp"
+#include "kane/dynamics/system_rules.hpp"
 #include "kane/dynamics/terms.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/evaluate_in.hpp"
@@ -30,7 +31,6 @@
 #include "kane/evaluation/tables.hpp"
 #include "kane/frames/vec.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -268,5 +268,4 @@ equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, 
 }  // namespace detail
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

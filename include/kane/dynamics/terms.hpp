@@ -20,7 +20,6 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/point.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -167,5 +166,4 @@ auto system_terms(list<X...>) {
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

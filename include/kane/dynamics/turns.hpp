@@ -17,7 +17,6 @@
 #include "kane/frames/axis.hpp"
 #include "kane/kinematics/edges.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -148,5 +147,4 @@ KANE_ALWAYS_INLINE turn<typename Ev::scalar, turn_axis<F>()> make_turn(const Ev&
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

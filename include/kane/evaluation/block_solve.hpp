@@ -32,7 +32,6 @@
 #include "kane/evaluation/status.hpp"
 #include "kane/frames/scalar.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -267,5 +266,4 @@ KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>&
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

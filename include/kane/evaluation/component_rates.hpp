@@ -13,7 +13,6 @@
 #include "kane/kinematics/edges.hpp"
 #include "kane/speeds/component_speeds.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -55,5 +54,4 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> component_values(const Ev& ev) {
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -23,7 +23,6 @@
 #include "kane/evaluation/status.hpp"
 #include "kane/speeds/holonomic.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -91,5 +90,4 @@ newton_result<typename Ev::scalar> solve_configuration(Ev& ev, typename Ev::stat
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -17,7 +17,6 @@
 #include "kane/frames/orientation.hpp"
 #include "kane/kinematics/edges.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -67,5 +66,4 @@ KANE_ALWAYS_INLINE void edge_columns(S* cf, const S* parent, const Trig& t, cons
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

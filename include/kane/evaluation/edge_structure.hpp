@@ -15,7 +15,6 @@
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/edges.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -69,5 +68,4 @@ template <class F, std::size_t D>
 inline constexpr bool turns = !std::is_same_v<std::remove_cv_t<decltype(angle_rate<F, D>())>, zero_t>;
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

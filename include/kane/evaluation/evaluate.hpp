@@ -17,7 +17,6 @@
 #include "kane/kinematics/derivative.hpp"
 #include "kane/speeds/generalized_speeds.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -224,5 +223,4 @@ requires(detail::is_evaluator<Ev>::value &&
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

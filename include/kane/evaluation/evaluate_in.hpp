@@ -16,7 +16,6 @@
 #include "kane/kinematics/edges.hpp"
 #include "kane/speeds/component_speeds.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -113,5 +112,4 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> eval_in(const V& v, const Ev& ev) {
     return in_frame<A>(eval_vector(v, ev), ev);
 }
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

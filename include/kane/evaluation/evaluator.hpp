@@ -35,7 +35,6 @@
 #include "kane/frames/state.hpp"
 #include "kane/kinematics/edges.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -287,5 +286,4 @@ struct is_evaluator<evaluator<St, Fr, L, Sp>> : std::true_type {};
 }  // namespace detail
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

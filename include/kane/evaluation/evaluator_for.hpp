@@ -19,7 +19,6 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative_traits.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -127,5 +126,4 @@ template <State St, class Reads, class Speeds = void>
 using evaluator_for = evaluator<St, typename Reads::frames, Reads::needed, Speeds>;
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -20,7 +20,6 @@
 #include "kane/frames/state.hpp"
 #include "kane/speeds/generalized_speeds.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -262,5 +261,4 @@ class kinematic_equations {
 };
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -16,7 +16,6 @@
 #include "kane/detail/v3.hpp"
 #include "kane/evaluation/evaluate.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -220,5 +219,4 @@ KANE_ALWAYS_INLINE decltype(auto) with_common_subexpressions(list<X...>, const E
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

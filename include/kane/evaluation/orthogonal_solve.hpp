@@ -11,7 +11,6 @@
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/status.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -67,5 +66,4 @@ KANE_ALWAYS_INLINE solve_status solve_orthogonal(const table<S, Sys::n, Sys::n>&
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

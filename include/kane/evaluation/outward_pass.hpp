@@ -28,7 +28,6 @@
 #include "kane/frames/orientation.hpp"
 #include "kane/speeds/generalized_speeds.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -298,5 +297,4 @@ class outward_pass {
 
 }  // namespace detail
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -18,7 +18,6 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative_traits.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -104,5 +103,4 @@ constexpr auto acceleration_reads_of(list<Xs...>) {
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

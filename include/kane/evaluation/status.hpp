@@ -21,7 +21,6 @@
 #error "kane: finite math only (-ffast-math) voids solve_status: build without or define KANE_ALLOW_FAST_MATH"
 #endif
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -82,5 +81,4 @@ bool all_finite_matrix(const M& m) {
 }  // namespace detail
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -23,7 +23,6 @@
 #include "kane/speeds/constraints.hpp"
 #include "kane/speeds/partial_velocity.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -286,5 +285,4 @@ auto nonholonomic_remainder(const X& x, const Ev& ev, const Sol& sol) {
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -12,7 +12,6 @@
 #include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -165,5 +164,4 @@ constexpr auto spread_dot(L l, R r) {
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

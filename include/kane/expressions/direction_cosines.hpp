@@ -11,7 +11,6 @@
 #include "kane/expressions/functions.hpp"
 #include "kane/frames/axis.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -90,5 +89,4 @@ constexpr auto tree_dot() {
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -17,7 +17,6 @@
 
 #include "kane/frames/coordinate.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -221,5 +220,4 @@ requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator/(L l_, R r_) {
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -9,7 +9,6 @@
 #include "kane/detail/dual.hpp"
 #include "kane/expressions/expr.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -136,5 +135,4 @@ constexpr auto invoke(F f, X x) {
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

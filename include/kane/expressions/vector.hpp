@@ -15,7 +15,6 @@
 #include "kane/expressions/vector_rules.hpp"
 #include "kane/frames/frame.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -249,5 +248,4 @@ constexpr auto dot(L l, R r) {
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -7,7 +7,6 @@
 #include "kane/detail/tree.hpp"
 #include "kane/expressions/expr.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -148,5 +147,4 @@ constexpr bool summable() {
 }  // namespace detail
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -16,7 +16,6 @@
 #include "kane/expressions/expr.hpp"
 #include "kane/frames/coordinate.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -114,5 +113,4 @@ concept Angle =
     !std::is_same_v<std::remove_cv_t<decltype(detail::angle_argument<A>::value)>, detail::not_an_angle>;
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

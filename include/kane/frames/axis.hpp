@@ -10,7 +10,6 @@
 #include <array>
 #include <concepts>
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -72,5 +71,4 @@ struct unit_axis {
 
 }  // namespace detail
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <type_traits>
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -86,5 +85,4 @@ concept Input = requires {
 &&std::is_same_v<T, input<T::index>>;
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

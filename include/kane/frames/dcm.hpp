@@ -15,7 +15,6 @@
 #include "kane/frames/frame.hpp"
 #include "kane/frames/vec.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -89,5 +88,4 @@ operator*(const dcm<LeftFrom, LeftTo, S>&, const dcm<RightFrom, RightTo, S>&) {
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -13,7 +13,6 @@
 #include "kane/frames/state.hpp"
 #include "kane/frames/vec.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -99,5 +98,4 @@ vec<B, typename St::scalar> express(const vec<A, typename St::scalar>& p, const 
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -16,7 +16,6 @@
 #include "kane/frames/orientation.hpp"
 #include "kane/fwd.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -72,5 +71,4 @@ struct frame : detail::frame_tag {
 };
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

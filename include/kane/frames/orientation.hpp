@@ -19,7 +19,6 @@
 #include "kane/frames/axis.hpp"
 #include "kane/frames/coordinate.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -259,5 +258,4 @@ concept Orientation = requires {
 &&detail::size<typename O::steps>::value >= 1;
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

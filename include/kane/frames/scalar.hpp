@@ -3,7 +3,6 @@
 
 #include <concepts>
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -22,5 +21,4 @@ template <class S>
 concept Scalar = is_scalar<S>::value;
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

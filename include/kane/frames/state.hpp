@@ -8,7 +8,6 @@
 #include "kane/frames/scalar.hpp"
 #include "kane/fwd.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -122,5 +121,4 @@ template <class T>
 concept State = detail::is_state<T>::value;
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -12,7 +12,6 @@
 #include "kane/frames/scalar.hpp"
 #include "kane/fwd.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -173,5 +172,4 @@ bool is_approx(const vec<LeftFrame, S>&, const vec<RightFrame, S>&, S) {
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

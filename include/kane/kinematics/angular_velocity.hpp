@@ -14,7 +14,6 @@
 #include "kane/detail/tree.hpp"
 #include "kane/expressions/vector.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -115,5 +114,4 @@ constexpr auto operator-(angular_velocity_of<A, B>, angular_velocity_of<C, D>) {
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -21,7 +21,6 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative_traits.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -242,5 +241,4 @@ constexpr V diff(V v, Leaf) {
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -18,7 +18,6 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/edges.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -220,5 +219,4 @@ constexpr leaf_set leaf_query() {
 }  // namespace detail
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -16,7 +16,6 @@
 #include "kane/expressions/vector.hpp"
 #include "kane/frames/axis.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -153,5 +152,4 @@ constexpr auto partial_omega(list<Up...>, list<Down...>) {
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

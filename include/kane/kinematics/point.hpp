@@ -18,7 +18,6 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -222,5 +221,4 @@ constexpr auto body_point_velocity() {
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -19,7 +19,6 @@
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/edges.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -127,5 +126,4 @@ constexpr auto coordinate_slots() {
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

@@ -19,7 +19,6 @@
 #include "kane/detail/invert.hpp"
 #include "kane/frames/scalar.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -228,7 +227,6 @@ struct real_type<jet<S, N>> {
 };
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop
 
 template <class S, std::size_t N>

@@ -29,7 +29,6 @@
 #include "kane/linearization/held_coordinates.hpp"
 #include "kane/linearization/jet.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -285,5 +284,4 @@ auto linearize_equations(const typename Ev::state_type& s) {
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -16,7 +16,6 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/edges.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -96,5 +95,4 @@ constexpr std::array<std::size_t, 4> euler_row() {
 }
 
 }  // namespace kane::detail
-
 #pragma GCC diagnostic pop

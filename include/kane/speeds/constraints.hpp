@@ -19,7 +19,6 @@
 #include "kane/speeds/generalized_speeds.hpp"
 #include "kane/speeds/partial_velocity.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -128,5 +127,4 @@ struct dense_right_side {
 }  // namespace detail
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

@@ -25,7 +25,6 @@
 #include "kane/kinematics/edges.hpp"
 #include "kane/speeds/component_speeds.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -288,5 +287,4 @@ constexpr auto offset() {
 }  // namespace detail
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

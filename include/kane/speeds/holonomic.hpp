@@ -20,7 +20,6 @@
 #include "kane/kinematics/derivative.hpp"
 #include "kane/speeds/constraints.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -101,5 +100,4 @@ template <class St, Holonomic H>
 inline constexpr std::size_t degrees_of_freedom = St::nq - H::m;
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop

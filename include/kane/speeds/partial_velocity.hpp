@@ -21,7 +21,6 @@
 #include "kane/kinematics/edges.hpp"
 #include "kane/speeds/generalized_speeds.hpp"
 
-// A user's global may share the name of a local here (-Wshadow).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
@@ -144,5 +143,4 @@ requires(ScalarExpr<X> || VectorExpr<X>) constexpr auto velocity_remainder(X x) 
 }
 
 }  // namespace kane
-
 #pragma GCC diagnostic pop
