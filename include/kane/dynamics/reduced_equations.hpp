@@ -87,6 +87,15 @@ struct reduced_equations {
   Eigen::Matrix<S, int(N), 1> b;
 };
 namespace detail {
+// T of u' = T u_ind' + b: ones at the independent speeds, the rows of A at the dependent ones.
+template <class NH, class S>
+Eigen::Matrix<S, int(NH::n), int(NH::p)> speeds_of_independents(
+    const Eigen::Matrix<S, int(NH::m), int(NH::p)>& a) {
+  Eigen::Matrix<S, int(NH::n), int(NH::p)> t = Eigen::Matrix<S, int(NH::n), int(NH::p)>::Zero();
+  for (std::size_t k = 0; k < NH::p; ++k) t(Eigen::Index(NH::independents[k] - 1), Eigen::Index(k)) = S(1);
+  for (std::size_t j = 0; j < NH::m; ++j) t.row(Eigen::Index(NH::dependents[j] - 1)) = a.row(Eigen::Index(j));
+  return t;
+}
 template <class Sys, class NH, bool RestRates, class Ev, class Sol>
 reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_forcing_at(const Ev& ev,
                                                                                         const Sol& sol) {
@@ -95,9 +104,8 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
   static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
   const auto ud = detail::speed_rates(ev);
   reduced_equations<S, n, p> out;
-  out.T.setZero();
+  out.T = speeds_of_independents<NH>(sol.A);
   out.b.setZero();
-  for (std::size_t k = 0; k < p; ++k) out.T(Eigen::Index(NH::independents[k] - 1), Eigen::Index(k)) = S(1);
   Eigen::Matrix<S, int(m), 1> rest;  // C' u + c0' = dt(c) - C u'
   [&]<std::size_t... K>(std::index_sequence<K...>) {
     with_common_subexpressions<decltype(dt(std::get<K>(NH::equations)))...>(ev, [&](const auto& e) {
@@ -115,13 +123,8 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
   for (std::size_t k = 0; k < m; ++k) right[k][0] = rest(Eigen::Index(k));
   const solve_status solved =
       detail::substitute_structured<Dep>(sol.dependent.m, sol.dependent.factors, right, bd);
-  for (std::size_t j = 0; j < m; ++j) {
-    const auto row = Eigen::Index(NH::dependents[j] - 1);
-    out.T.row(row) = sol.A.row(Eigen::Index(j));
-    out.b(row) = -bd[j][0];
-  }
   std::array<S, m> b_dep;
-  for (std::size_t j = 0; j < m; ++j) b_dep[j] = -bd[j][0];
+  for (std::size_t j = 0; j < m; ++j) b_dep[j] = out.b(Eigen::Index(NH::dependents[j] - 1)) = -bd[j][0];
   out.reduced = equations_along<Sys, RestRates, true>(ev, independent_speeds<NH, S>{sol.A, b_dep});
   if (out.reduced.status == solve_status::ok) out.reduced.status = sol.status;
   if (out.reduced.status == solve_status::ok) out.reduced.status = solved;
@@ -164,10 +167,7 @@ reduced_generalized_forces(const Ev& ev, const Sol& sol) {
     });
     const auto e = mass_matrix_and_forcing<Sys>(ev);
     const Eigen::Matrix<S, int(n), 1> inertia = e.f - active - e.M * detail::speed_rates(ev);
-    Eigen::Matrix<S, int(n), int(p)> t = Eigen::Matrix<S, int(n), int(p)>::Zero();
-    for (std::size_t k = 0; k < p; ++k) t(Eigen::Index(NH::independents[k] - 1), Eigen::Index(k)) = S(1);
-    for (std::size_t j = 0; j < NH::m; ++j)
-      t.row(Eigen::Index(NH::dependents[j] - 1)) = sol.A.row(Eigen::Index(j));
+    const Eigen::Matrix<S, int(n), int(p)> t = detail::speeds_of_independents<NH>(sol.A);
     reduced_forces<S, p> out{t.transpose() * active, t.transpose() * inertia, e.status};
     if (out.status == solve_status::ok) out.status = sol.status;
     if (out.status == solve_status::ok &&
