@@ -14,7 +14,7 @@ using vector = std::array<double, rhs::size>;
 
 int main(int argc, char** argv) {
   m::state s;
-  s.p = {0.5, 0.4, 1.5, 9.81};  // l, m, mc, g
+  s[m::l] = 0.5, s[m::m] = 0.4, s[m::mc] = 1.5, s[m::g] = 9.81;
   rhs f(s);
   vector x = {0.0, 0.6, 0.9, -0.4, 0.3, 0.0, 0.5, -1.0}, k1;
   const auto energy = [&] {
@@ -23,9 +23,9 @@ int main(int argc, char** argv) {
   const auto momentum = [&] {  // sum m v . n1
     const auto& ev = f.evaluator();
     const auto vx = [&](auto v) { return kane::express<m::N>(v, ev)[0]; };
-    return 1.5 * vx(kane::velocity<m::N, m::Cart>()) +
-           0.4 * (vx(kane::velocity<m::N, m::P1>()) + vx(kane::velocity<m::N, m::P2>()) +
-                  vx(kane::velocity<m::N, m::P3>()));
+    return s[m::mc] * vx(kane::velocity<m::N, m::Cart>()) +
+           s[m::m] * (vx(kane::velocity<m::N, m::P1>()) + vx(kane::velocity<m::N, m::P2>()) +
+                      vx(kane::velocity<m::N, m::P3>()));
   };
   FILE* csv = argc > 1 ? std::fopen(argv[1], "w") : nullptr;
   if (csv) std::fprintf(csv, "t,q1,q2,q3,q4,E\n");

@@ -13,21 +13,24 @@
 #include "rk4.hpp"
 
 namespace fb = models::free_body;
-template <std::size_t I>
-inline constexpr kane::parameter<I> p{};
-using body = kane::rigid_body<fb::B, fb::Bo, p<4>, kane::inertia<fb::B, fb::Bo, p<5>, p<6>, p<7>>>;
+inline constexpr kane::parameter<4> m{};   // after the model's a, b, c (p1..p3)
+inline constexpr kane::parameter<5> I1{};  // principal moments about Bo
+inline constexpr kane::parameter<6> I2{};
+inline constexpr kane::parameter<7> I3{};
+using body = kane::rigid_body<fb::B, fb::Bo, m, kane::inertia<fb::B, fb::Bo, I1, I2, I3>>;
 using state = kane::state<double, 7, 6, 7>;
 using evaluator = kane::evaluator<state, kane::frames<fb::B>, kane::level::acceleration, fb::speeds>;
 using rhs = kane::motion<kane::system<body>, evaluator>;
 
 int main(int argc, char** argv) {
   state s;
-  s.p = {0, 0, 0, 3.0, 0.4, 0.9, 1.3};  // m, I1 < I2 < I3
+  s.p = {};
+  s[m] = 3.0, s[I1] = 0.4, s[I2] = 0.9, s[I3] = 1.3;  // I1 < I2 < I3
   rhs f(s);
   // unit quaternion; body rates mostly about the middle axis b2; centre velocity
   std::array<double, rhs::size> x = {1, 0, 0, 0, 0, 0, 0, 0.05, 2.0, 0.1, 0.3, -0.2, 0.1}, k;
   const auto momentum = [&](const std::array<double, rhs::size>& y) {
-    const Eigen::Vector3d w(y[7], y[8], y[9]), iw = Eigen::Vector3d(0.4, 0.9, 1.3).cwiseProduct(w);
+    const Eigen::Vector3d w(y[7], y[8], y[9]), iw = Eigen::Vector3d(s[I1], s[I2], s[I3]).cwiseProduct(w);
     state at = s;
     for (std::size_t i = 0; i < 7; ++i) at.q[i] = y[i];
     return Eigen::Vector3d(kane::direction_cosines<fb::N, fb::B>(at).eigen().transpose() * iw);

@@ -1,6 +1,7 @@
 // Kane's equations of a nonholonomic system (dynamics/equations.hpp, reduced): the rolling
 // disc of examples/models/disc.hpp against SymPy's KanesMethod (tests/data/gen_disc_dynamics.py)
-// and the closed-form condition of steady turning.
+// and the closed-form condition of steady turning; the disc in three coordinates, its centre
+// known by its velocity (point_by_velocity).
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -50,6 +51,25 @@ TEST_CASE("dynamics: the rolling disc's reduced equations against SymPy's KanesM
   }
 }
 
+TEST_CASE("dynamics: the disc's n equations with their constraint rows equal SymPy's M and f") {
+  for (const auto& x : sympy_disc_dynamics::disc) {
+    disc_state s;
+    for (int i = 0; i < 5; ++i) s.q[i] = x.q[i], s.u[i] = x.u[i];
+    for (int i = 0; i < 3; ++i) s.p[i] = sympy_disc_dynamics::p[i];
+    disc_evaluator ev;
+    ev.update(s);
+    const auto sol = kane::solve_constraints<dd::rolling>(ev);
+    const auto eq = kane::constrained_mass_matrix_and_forcing<dd::system, dd::rolling>(ev, sol);
+    REQUIRE(eq.status == kane::solve_status::ok);
+    for (int i = 0; i < 5; ++i) {
+      CHECK(eq.f(i) == Approx(x.f[i]).epsilon(1e-12).margin(1e-13));
+      for (int j = 0; j < 5; ++j) CHECK(eq.M(i, j) == Approx(x.M[5 * i + j]).epsilon(1e-12).margin(1e-14));
+    }
+    const Eigen::Matrix<double, 5, 1> ud = eq.M.partialPivLu().solve(eq.f);
+    for (int i = 0; i < 5; ++i) CHECK(ud(i) == Approx(x.ud[i]).epsilon(1e-12).margin(1e-13));
+  }
+}
+
 TEST_CASE("dynamics: an axisymmetric inertia given in the frame the disc turns in") {
   for (const auto& x : sympy_disc_dynamics::disc) {
     double t = 0;
@@ -89,5 +109,60 @@ TEST_CASE("dynamics: the disc's generalized forces along its nonholonomic partia
     CHECK(g.active(0) == Approx(m * gr * r * std::sin(lean)).epsilon(1e-13).margin(1e-14));
     CHECK(std::abs(g.active(1)) < 1e-14);
     CHECK(std::abs(g.active(2)) < 1e-14);
+  }
+}
+
+TEST_CASE("dynamics: the disc in three coordinates, its centre known by its velocity, against SymPy") {
+  using state3 = kane::state<double, 3, 3, 3>;
+  using evaluator3 = kane::evaluator<state3, kane::frames<dd::R>, kane::level::acceleration, dd::speeds3>;
+  static_assert(!kane::fixed_in_v<dd::Centre3, dd::N>);
+  for (std::size_t k = 0; k < std::size(sympy_disc_dynamics::disc); ++k) {
+    const auto& x = sympy_disc_dynamics::disc[k];
+    const auto& y = sympy_disc_dynamics::disc3[k];
+    state3 s;
+    for (int i = 0; i < 3; ++i) s.q[i] = x.q[i], s.u[i] = x.u[i], s.p[i] = sympy_disc_dynamics::p[i];
+    evaluator3 ev;
+    ev.update(s);
+    const auto eq = kane::mass_matrix_and_forcing<dd::system3>(ev);
+    REQUIRE(eq.status == kane::solve_status::ok);
+    for (int i = 0; i < 3; ++i) {
+      CHECK(eq.f(i) == Approx(y.f[i]).epsilon(1e-12).margin(1e-13));
+      for (int j = 0; j < 3; ++j) CHECK(eq.M(i, j) == Approx(y.M[3 * i + j]).epsilon(1e-12).margin(1e-14));
+    }
+    const auto [ud, st] = kane::speed_derivatives(eq);
+    REQUIRE(st == kane::solve_status::ok);
+    for (int i = 0; i < 3; ++i) {
+      CHECK(ud(i) == Approx(y.ud[i]).epsilon(1e-12).margin(1e-13));
+      CHECK(ud(i) == Approx(x.ud[i]).epsilon(1e-12).margin(1e-13));  // = the five-coordinate disc's
+    }
+    CHECK(kane::kinetic_energy<dd::system3>(ev) == Approx(x.T).epsilon(1e-14));
+    // momenta: those of the five-coordinate disc (its centre located from an origin)
+    disc_state s5;
+    for (int i = 0; i < 5; ++i) s5.q[i] = x.q[i], s5.u[i] = x.u[i];
+    for (int i = 0; i < 3; ++i) s5.p[i] = sympy_disc_dynamics::p[i];
+    disc_evaluator ev5;
+    ev5.update(s5);
+    CHECK(kane::is_approx(kane::linear_momentum<dd::system3>(ev), kane::linear_momentum<dd::system>(ev5),
+                          1e-14));
+    CHECK(kane::is_approx(kane::angular_momentum<dd::system3>(ev), kane::angular_momentum<dd::system>(ev5),
+                          1e-14));
+    // ^N a of the centre = ^N d(w x r l3)/dt: against a central difference of its velocity along
+    // the motion (q' from the kinematic equations, u' from Kane's)
+    const auto centre = [&](const state3& z) {
+      evaluator3 e;
+      e.update(z);
+      return kane::express<dd::N>(kane::velocity<dd::N, dd::Centre3>(), e).eigen();
+    };
+    s.ud = {ud(0), ud(1), ud(2)};
+    ev.update(s);
+    const Eigen::Vector3d a = kane::express<dd::N>(kane::acceleration<dd::N, dd::Centre3>(), ev).eigen();
+    const double h = 1e-5;
+    const Eigen::Vector3d qd(x.u[2] / std::cos(x.q[1]), x.u[0], x.u[1] - x.u[2] * std::tan(x.q[1]));
+    state3 plus = s, minus = s;
+    for (int i = 0; i < 3; ++i) {
+      plus.q[i] += h * qd(i), minus.q[i] -= h * qd(i);
+      plus.u[i] += h * ud(i), minus.u[i] -= h * ud(i);
+    }
+    CHECK(((centre(plus) - centre(minus)) / (2 * h) - a).norm() < 1e-6 * (1 + a.norm()));
   }
 }

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include <kane/linearization.hpp>
 
@@ -85,9 +86,17 @@ TEST_CASE("linearize: the upright rolling disc, Kane's closed form") {
     CHECK((eq.M - M).cwiseAbs().maxCoeff() < 1e-15);
     CHECK((eq.C - C).cwiseAbs().maxCoeff() < 1e-15);
     CHECK((eq.K - K).cwiseAbs().maxCoeff() < 1e-15);
+    // rows and columns by speed and coordinate: u1 (lean rate), u2 (spin), u3; K over q1..q5
+    using E = std::remove_cvref_t<decltype(eq)>;
+    static_assert(E::row(kane::u<1>) == 0 && E::row(kane::u<3>) == 2 && E::index(kane::q<2>) == 1);
+    CHECK(eq.K(E::row(kane::u<1>), E::index(kane::q<2>)) == Approx(-m * g * r).epsilon(1e-15));
+    CHECK(eq.C(E::row(kane::u<3>), E::row(kane::u<1>)) == Approx(Is * spin).epsilon(1e-15));
 
     const auto lin = kane::linearize_constrained<d::system, d::rolling, disc_evaluator>(s);
     REQUIRE(lin.status == kane::solve_status::ok);
+    using L = std::remove_cvref_t<decltype(lin)>;  // x = (q1 .. q5, u1, u2, u3)
+    static_assert(L::index(kane::q<5>) == 4 && L::index(kane::u<1>) == 5 && L::index(kane::u<3>) == 7);
+    CHECK(lin.A(L::index(kane::q<2>), L::index(kane::u<1>)) == 1);  // q2' = u1
     const double lambda2 = 4 * (g - 3 * r * spin * spin) / (5 * r);
     const auto ev = Eigen::EigenSolver<Eigen::Matrix<double, 8, 8>>(lin.A).eigenvalues();
     // the lean pair: the eigenvalues of largest modulus, +-sqrt(lambda2)

@@ -112,3 +112,83 @@ TEST_CASE("momenta: an undamped 3D double pendulum keeps T + V over an RK4 run")
   INFO("T + V = " << e0 << ", drift " << energy() - e0);
   CHECK(std::abs(energy() - e0) < 1e-12 * std::abs(e0));
 }
+
+namespace {
+// Springs: a particle on a spring from a fixed point under gravity (beside a falling one), and two
+// particles joined by a spring, free in space; k = p1, L = p2, masses p3 (and p4), g = p5.
+namespace springs {
+using kane::e;
+struct N : kane::root_frame {};
+struct O : kane::origin<N> {};
+struct P : kane::point<O, kane::q<1> * e<N, 1> + kane::q<2> * e<N, 2> + kane::q<3> * e<N, 3>> {};
+struct Q : kane::point<O, kane::q<4> * e<N, 1> + kane::q<5> * e<N, 2> + kane::q<6> * e<N, 3>> {};
+using hanging = kane::system<kane::particle<P, p<3>>, kane::particle<Q, p<4>>, kane::spring<O, P, p<1>, p<2>>,
+                             kane::gravity<-p<5> * e<N, 3>>>;  // Q falls freely
+using pair = kane::system<kane::particle<P, p<3>>, kane::particle<Q, p<4>>, kane::spring<P, Q, p<1>, p<2>>>;
+}  // namespace springs
+}  // namespace
+
+TEST_CASE("springs: the forces of a spring and its potential energy against the closed form") {
+  namespace sp = springs;
+  kane::state<double, 6, 6, 5> s;
+  s.q = {0.3, -0.4, -1.2, 1.1, 0.5, -0.2};
+  s.u = {0.7, 0.1, -0.3, -0.2, 0.4, 0.9};
+  s.p = {40.0, 0.8, 1.5, 2.5, 9.81};
+  kane::evaluator<decltype(s), kane::frames<sp::N>, kane::level::acceleration, kane::qdot_speeds<6>> ev;
+  ev.update(s);
+  const double k = s.p[0], L = s.p[1], m = s.p[2], mq = s.p[3], g = s.p[4];
+  const Eigen::Vector3d rp(s.q[0], s.q[1], s.q[2]), rq(s.q[3], s.q[4], s.q[5]);
+  // hanging: m r'' = -k (|r| - L) r / |r| - m g n3; V = k (|r| - L)^2 / 2 + m g r . n3 (+ Q's)
+  const auto e1 = kane::mass_matrix_and_forcing<sp::hanging>(ev);
+  REQUIRE(e1.status == kane::solve_status::ok);
+  const Eigen::Vector3d f1 = -k * (rp.norm() - L) * rp.normalized() - m * g * Eigen::Vector3d::UnitZ();
+  for (int i = 0; i < 3; ++i) {
+    CHECK(e1.f(i) == Approx(f1(i)).epsilon(1e-14));
+    CHECK(e1.M(i, i) == Approx(m).epsilon(1e-15));
+  }
+  CHECK(e1.f(3) == 0);
+  CHECK(e1.f(4) == 0);
+  CHECK(e1.f(5) == Approx(-mq * g).epsilon(1e-15));
+  CHECK(kane::potential_energy<sp::hanging>(ev) ==
+        Approx(k * (rp.norm() - L) * (rp.norm() - L) / 2 + m * g * rp.z() + mq * g * rq.z()).epsilon(1e-14));
+  // the pair: equal and opposite forces along r^PQ
+  const auto e2 = kane::mass_matrix_and_forcing<sp::pair>(ev);
+  REQUIRE(e2.status == kane::solve_status::ok);
+  const Eigen::Vector3d r = rq - rp, f2 = k * (r.norm() - L) * r.normalized();  // on P
+  for (int i = 0; i < 3; ++i) {
+    CHECK(e2.f(i) == Approx(f2(i)).epsilon(1e-14));
+    CHECK(e2.f(3 + i) == Approx(-f2(i)).epsilon(1e-14));
+    CHECK(e2.M(3 + i, 3 + i) == Approx(mq).epsilon(1e-15));
+  }
+  CHECK(kane::potential_energy<sp::pair>(ev) ==
+        Approx(k * (r.norm() - L) * (r.norm() - L) / 2).epsilon(1e-14));
+}
+
+TEST_CASE("springs: a hanging spring keeps T + V, a free pair its momentum and T + V, over RK4 runs") {
+  namespace sp = springs;
+  using St = kane::state<double, 6, 6, 5>;
+  using Ev = kane::evaluator<St, kane::frames<sp::N>, kane::level::acceleration, kane::qdot_speeds<6>>;
+  St s;
+  s.p = {40.0, 0.8, 1.5, 2.5, 9.81};
+  const auto run = [&]<class Sys>(std::type_identity<Sys>) {
+    kane::motion<Sys, Ev> f(s);
+    std::array<double, 12> x = {0.3, -0.4, -1.2, 1.1, 0.5, -0.2, 0.7, 0.1, -0.3, -0.2, 0.4, 0.9};
+    const auto at = [&] {
+      St b = s;
+      for (int i = 0; i < 6; ++i) b.q[i] = x[i], b.u[i] = x[6 + i];
+      Ev ev;
+      ev.update(b);
+      return std::pair{kane::kinetic_energy<Sys>(ev) + kane::potential_energy<Sys>(ev),
+                       Eigen::Vector3d(kane::linear_momentum<Sys>(ev).eigen())};
+    };
+    const auto [e0, p0] = at();
+    for (int k = 0; k < 4000; ++k) rk4_step(f, x, 5e-4 * k, 5e-4);
+    REQUIRE(f.status() == kane::solve_status::ok);
+    const auto [e1, p1] = at();
+    INFO("T + V = " << e0 << ", drift " << e1 - e0);
+    CHECK(std::abs(e1 - e0) < 1e-10 * std::abs(e0));
+    return (p1 - p0).norm();
+  };
+  run(std::type_identity<sp::hanging>{});
+  CHECK(run(std::type_identity<sp::pair>{}) < 1e-12);
+}

@@ -70,21 +70,39 @@ using state = kane::state<double, 6, 8, 6>;
 using evaluator = kane::evaluator<state, kane::frames<Wr, Wf>, kane::level::velocity, speeds>;
 
 // The bodies of the benchmark (Meijaard et al. 2007, Table 1, in this model's frames and
-// parameters: tests/data/gen_bicycle_dynamics.py): p7 = g; the rear wheel (mass p8, moments
-// p9, p10, p9 about its centre in H, where it spins), the rear frame with rider (mass p11 at
-// Bo, inertia p14..p17 in H), the front frame (mass p18 at Ho, inertia p21..p24 in F), the
-// front wheel (mass p25, moments p26, p27, p26 in F).
-template <std::size_t I>
-inline constexpr kane::parameter<I> p{};
-struct Bo : kane::point<Dr, p<12> * e<H, 1> + p<13> * e<H, 3>> {};
-struct Ho : kane::point<Df, p<19> * e<F, 1> + p<20> * e<F, 3>> {};
+// parameters: tests/data/gen_bicycle_dynamics.py), p7..p27 by name: gravity; the rear wheel
+// (mass, moments about its centre in H, where it spins), the rear frame with rider (mass at Bo,
+// inertia in H), the front frame (mass at Ho, inertia in F), the front wheel (moments in F).
+inline constexpr kane::parameter<7> gravity{};
+inline constexpr kane::parameter<8> mR{};  // rear wheel
+inline constexpr kane::parameter<9> IRxx{};
+inline constexpr kane::parameter<10> IRyy{};
+inline constexpr kane::parameter<11> mB{};  // rear frame: mass, Bo = Dr + xB h1 + zB h3, inertia
+inline constexpr kane::parameter<12> xB{};
+inline constexpr kane::parameter<13> zB{};
+inline constexpr kane::parameter<14> IB11{};
+inline constexpr kane::parameter<15> IB22{};
+inline constexpr kane::parameter<16> IB33{};
+inline constexpr kane::parameter<17> IB31{};
+inline constexpr kane::parameter<18> mH{};  // front frame: mass, Ho = Df + xH f1 + zH f3, inertia
+inline constexpr kane::parameter<19> xH{};
+inline constexpr kane::parameter<20> zH{};
+inline constexpr kane::parameter<21> IH11{};
+inline constexpr kane::parameter<22> IH22{};
+inline constexpr kane::parameter<23> IH33{};
+inline constexpr kane::parameter<24> IH31{};
+inline constexpr kane::parameter<25> mF{};  // front wheel
+inline constexpr kane::parameter<26> IFxx{};
+inline constexpr kane::parameter<27> IFyy{};
+struct Bo : kane::point<Dr, xB * e<H, 1> + zB * e<H, 3>> {};
+struct Ho : kane::point<Df, xH * e<F, 1> + zH * e<F, 3>> {};
 inline constexpr kane::constant<0> zero{};
 using system =
-    kane::system<kane::rigid_body<Wr, Dr, p<8>, kane::inertia<H, Dr, p<9>, p<10>, p<9>>>,
-                 kane::rigid_body<H, Bo, p<11>, kane::inertia<H, Bo, p<14>, p<15>, p<16>, zero, zero, p<17>>>,
-                 kane::rigid_body<F, Ho, p<18>, kane::inertia<F, Ho, p<21>, p<22>, p<23>, zero, zero, p<24>>>,
-                 kane::rigid_body<Wf, Df, p<25>, kane::inertia<F, Df, p<26>, p<27>, p<26>>>,
-                 kane::gravity<-p<7> * e<N, 3>>>;
+    kane::system<kane::rigid_body<Wr, Dr, mR, kane::inertia<H, Dr, IRxx, IRyy, IRxx>>,
+                 kane::rigid_body<H, Bo, mB, kane::inertia<H, Bo, IB11, IB22, IB33, zero, zero, IB31>>,
+                 kane::rigid_body<F, Ho, mH, kane::inertia<F, Ho, IH11, IH22, IH33, zero, zero, IH31>>,
+                 kane::rigid_body<Wf, Df, mF, kane::inertia<F, Df, IFxx, IFyy, IFxx>>,
+                 kane::gravity<-gravity * e<N, 3>>>;
 using dynamics_state = kane::state<double, 6, 8, 27>;
 using dynamics_evaluator =
     kane::evaluator<dynamics_state, kane::frames<Wr, Wf>, kane::level::acceleration, speeds>;

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <type_traits>
 
 #include "bicycle.hpp"
 
@@ -23,8 +24,13 @@ inline lean_steer linearize_upright(double v) {
   dynamics_state s = benchmark_parameters();
   s.u[6] = v / s.p[1];
   const auto eq = kane::linearize_equations<system, rolling, dynamics_evaluator, pitch>(s);
-  return {eq.M.topLeftCorner<2, 2>(), eq.C.topLeftCorner<2, 2>(),
-          (Eigen::Matrix2d() << eq.K.block<2, 1>(0, 3), eq.K.block<2, 1>(0, 4)).finished(), eq.status};
+  using E = std::remove_cvref_t<decltype(eq)>;  // rows by speed, K's columns by coordinate
+  constexpr Eigen::Index roll = E::row(kane::u<4>), steer = E::row(kane::u<6>);
+  const auto block = [&](const auto& m, Eigen::Index c0, Eigen::Index c1) {
+    return (Eigen::Matrix2d() << m(roll, c0), m(roll, c1), m(steer, c0), m(steer, c1)).finished();
+  };
+  return {block(eq.M, roll, steer), block(eq.C, roll, steer),
+          block(eq.K, E::index(kane::q<4>), E::index(kane::q<6>)), eq.status};
 }
 
 // Eigenvalues of x' = [0 1; -M^-1 K, -M^-1 C] x, sorted by real part, then imaginary part.

@@ -48,4 +48,9 @@ using system = kane::system<
     kane::rigid_body<R, Centre5, m, kane::inertia<R, Centre5, diametral, 2 * diametral, diametral>>,
     kane::gravity<-g * e<N, 3>>>;
 inline constexpr auto height = dot(kane::position<O, Centre5>(), e<N, 3>);  // V = m g height
+// The same disc with three coordinates: its centre known by its velocity alone, ^N w^R x r l3.
+struct Centre3 : kane::point_by_velocity<N, v_centre> {};
+using system3 = kane::system<
+    kane::rigid_body<R, Centre3, m, kane::inertia<R, Centre3, diametral, 2 * diametral, diametral>>,
+    kane::gravity<-g * e<N, 3>>>;
 }  // namespace models::disc

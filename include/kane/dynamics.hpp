@@ -9,4 +9,5 @@
 #include "kane/dynamics/momenta.hpp"
 #include "kane/dynamics/motion.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
+#include "kane/dynamics/springs.hpp"
 #include "kane/dynamics/terms.hpp"

@@ -3,4 +3,5 @@
 #pragma once
 
 #include "kane/linearization/jet.hpp"
+#include "kane/linearization/linear_model.hpp"
 #include "kane/linearization/linearize.hpp"

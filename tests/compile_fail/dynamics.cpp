@@ -11,6 +11,9 @@
 // case particle_mass_not_scalar: kane: particle<P, m> takes a scalar expression m
 // case inertia_not_inertia: kane: rigid_body<B, Bo, m, I> takes I = kane::inertia<F, Bo, ...>
 // case wheel_speed_not_in_set: a_frame_turns_at_free_speeds_of_the_evaluators_speed_set<.*W>
+// case potential_of_velocity_point: potential_energy_needs_positions_from_an_origin_not_from_a_point_known_by_its_velocity<.*Bv>
+// case spring_stiffness_not_scalar: kane: spring<P, Q, k, L> takes scalar expressions k .stiffness. and L
+// case linear_index_not_in_x: kane: u_r is not a speed of this x
 // case motion_wrong_size: kane: x and dx/dt of kane::motion hold nq \+ nu numbers
 #include <array>
 
@@ -121,4 +124,46 @@ double integrate() {
 #endif
   f(x, dx, 0.0);
   return dx[0];
+}
+
+// A body whose mass centre is known by its velocity: momentum and kinetic energy, no potential.
+struct Bv : kane::point_by_velocity<N, kane::dt(kane::q<1>) * p<1> * e<A, 2>> {};
+using rolling_sys = kane::system<kane::rigid_body<B, Bv, p<3>, kane::inertia<B, Bv, p<4>, p<4>, p<5>>>,
+                                 kane::gravity<-p<8> * e<N, 3>>>;
+double energy() {
+  kane::state<double, 2, 2, 9> s;
+  kane::evaluator<decltype(s), kane::frames<B>, kane::level::velocity> ev;
+  ev.update(s);
+#ifdef KANE_CASE_potential_of_velocity_point
+  return kane::potential_energy<rolling_sys>(ev);
+#else
+  return kane::kinetic_energy<rolling_sys>(ev) + kane::angular_momentum<rolling_sys>(ev)[0];
+#endif
+}
+
+// A spring from O to a particle at Bo.
+#ifdef KANE_CASE_spring_stiffness_not_scalar
+using stretched = kane::system<kane::particle<Bo, p<3>>, kane::spring<O, Bo, p<6> * e<N, 1>, p<7>>>;
+#else
+using stretched = kane::system<kane::particle<Bo, p<3>>, kane::spring<O, Bo, p<6>, p<7>>>;
+#endif
+double stretched_energy() {
+  kane::state<double, 2, 2, 9> s;
+  kane::evaluator<decltype(s), kane::frames<B>, kane::level::acceleration> ev;
+  ev.update(s);
+  return kane::potential_energy<stretched>(ev) + kane::mass_matrix_and_forcing<stretched>(ev).f(0);
+}
+
+// Rows and columns of a linearization by coordinate and speed.
+double linear_entry() {
+  kane::state<double, 2, 2, 9> s;
+  using ev_type =
+      kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, kane::qdot_speeds<2>>;
+  const auto lin = kane::linearize<kane::system<kane::particle<Bo, p<3>>>, ev_type>(s);
+  using L = std::remove_cvref_t<decltype(lin)>;
+#ifdef KANE_CASE_linear_index_not_in_x
+  return lin.A(L::index(kane::q<1>), L::index(kane::u<3>));
+#else
+  return lin.A(L::index(kane::q<1>), L::index(kane::u<2>));
+#endif
 }

@@ -18,6 +18,9 @@
 // case expression_of_other_tree: expression_and_evaluator_in_two_trees_build_the_evaluator_on_the_expression_tree<N, M0>
 // case no_fixed_point: no_point_of_the_chain_is_fixed_in_the_observer_locate_the_point_from_one<A, P>
 // case points_not_joined: points_not_joined_locate_both_from_one_origin<P, QA>
+// case position_of_velocity_point: a_point_known_by_its_velocity_has_no_position_locate_points_from_it<O, VP>
+// case velocity_point_other_observer: the_velocity_of_this_point_is_known_in_another_frame_observe_it_there<A, VP>
+// case velocity_point_at_rest: a_point_at_rest_is_an_origin_write_kane_origin_of_the_frame<N>
 // case jerk: kane: the time derivative of an angular acceleration .a third derivative. is not available
 // case partial_of_angular_velocity: kane: partial derivatives apply to vectors of unit vectors and scalars
 // case two_point_not_fixed: two_point_theorem_needs_both_points_fixed_in_the_body_use_one_point_velocity<A, O, P>
@@ -44,6 +47,14 @@ struct M : kane::point<P, kane::q<1> * kane::e<A, 2>> {};
 struct OA : kane::origin<A> {};
 struct QA : kane::point<OA, kane::q<1> * kane::e<B, 1>> {};
 struct QB : kane::point<OA, kane::q<2> * kane::e<B, 2>> {};
+// Points known by their velocity in N alone.
+struct V : kane::point_by_velocity<N, kane::dt(kane::q<1>) * kane::e<A, 1>> {};
+struct VP : kane::point<V, kane::q<2> * kane::e<B, 2>> {};
+#ifdef KANE_CASE_velocity_point_at_rest
+struct Rest : kane::point_by_velocity<N, kane::zero_vector{}> {};
+#else
+struct Rest : kane::origin<N> {};
+#endif
 
 using St = kane::state<double, 2>;
 
@@ -175,6 +186,16 @@ double use() {
   x += kane::express<N>(angular_acceleration<N, B>(), ev_velocity)[0];
 #else
   x += kane::express<N>(angular_acceleration<N, B>(), ev)[0];
+#endif
+#ifdef KANE_CASE_position_of_velocity_point
+  x += kane::express<N>(kane::position<O, VP>(), ev)[0];
+#else
+  x += kane::express<N>(kane::position<V, VP>(), ev)[0];
+#endif
+#ifdef KANE_CASE_velocity_point_other_observer
+  x += kane::express<N>(velocity<A, VP>(), ev)[0];
+#else
+  x += kane::express<N>(velocity<N, VP>() + acceleration<N, VP>() + velocity<N, Rest>(), ev)[0];
 #endif
 #ifdef KANE_CASE_frame_not_held
   x += kane::express<N>(kane::e<C, 2>, ev)[0];  // e_C1 = e_B1 would be read from B

@@ -46,6 +46,16 @@ template <class P, class Q>
 struct points_not_joined_locate_both_from_one_origin;
 template <class Observer, class P>
 struct no_point_of_the_chain_is_fixed_in_the_observer_locate_the_point_from_one;
+// A point known by its velocity (point_by_velocity): no position from other chains, a velocity in
+// its own observer only, and a velocity that is not the zero vector (a point at rest is an origin).
+template <class P, class Q>
+struct a_point_known_by_its_velocity_has_no_position_locate_points_from_it;
+template <class Observer, class P>
+struct the_velocity_of_this_point_is_known_in_another_frame_observe_it_there;
+template <class Observer>
+struct a_point_at_rest_is_an_origin_write_kane_origin_of_the_frame;
+template <class P>
+struct potential_energy_needs_positions_from_an_origin_not_from_a_point_known_by_its_velocity;
 // The two-point theorem: P and Q fixed in B.
 template <class Body, class Q, class P>
 struct two_point_theorem_needs_both_points_fixed_in_the_body_use_one_point_velocity;

@@ -5,10 +5,12 @@
 //                                        (O = kane::mass_centre, the default: the system's)
 //   kane::kinetic_energy<Sys>(ev)        T = sum m v . v / 2 + w . I . w / 2
 //   kane::potential_energy<Sys, O>(ev)   V = -sum m g . r^OP over the gravity loads, zero at O
-//                                        (default: the origin that locates the first mass)
+//                                        (default: the origin that locates the first mass),
+//                                        + k s^2 / 2 of each spring (springs.hpp)
 //
 // P runs over the particles and mass centres. Positions need level::pose, the rest
-// level::velocity; the vectors come as vec<R>.
+// level::velocity; the vectors come as vec<R>. A mass centre known by its velocity alone
+// (point_by_velocity) has p, T and H about points located from it, but no V.
 #pragma once
 
 #include <type_traits>
@@ -16,6 +18,7 @@
 #include <Eigen/Core>
 
 #include "kane/dynamics/bodies.hpp"
+#include "kane/dynamics/springs.hpp"
 #include "kane/dynamics/sums.hpp"
 #include "kane/dynamics/system_rules.hpp"
 #include "kane/dynamics/terms.hpp"
@@ -42,6 +45,10 @@ struct chain_origin<P, void> {
 
 template <class X>
 inline constexpr bool has_mass = is_particle<X> || is_body<X>;
+template <class... X>
+constexpr bool has_gravity(list<X...>) {
+  return (is_gravity<X> || ...);
+}
 template <class L>
 struct first_mass {
   using type = void;
@@ -57,23 +64,25 @@ struct reference_point {
   using type = typename chain_origin<typename point_of_mass<X>::type>::type;
 };
 
-// f(X, r^{Ref,P} in R) for every item with mass; Ref = the reference point of Sys.
+// f(X) for every item X with mass.
 template <class Sys, class Ev, class F>
-void for_each_mass(const Ev& ev, F&& f) {
-  if constexpr (admitted<Sys, speeds_of<Ev>>()) {
-    using R = typename Ev::root;
-    using Ref = typename reference_point<Sys>::type;
+void for_each_mass_item(F&& f) {
+  if constexpr (admitted<Sys, speeds_of<Ev>>())
     [&]<class... X>(list<X...>) {
       (
           [&] {
-            if constexpr (has_mass<X>) {
-              using P = typename point_of_mass<X>::type;
-              f(std::type_identity<X>{}, in_root<R>(position<Ref, P>(), ev));
-            }
+            if constexpr (has_mass<X>) f(std::type_identity<X>{});
           }(),
           ...);
     }(typename Sys::items{});
-  }
+}
+// f(X, r^{Ref,P} in R) for every item with mass; Ref = the reference point of Sys.
+template <class Sys, class Ev, class F>
+void for_each_mass(const Ev& ev, F&& f) {
+  for_each_mass_item<Sys, Ev>([&]<class X>(std::type_identity<X> x) {
+    using Ref = typename reference_point<Sys>::type;
+    f(x, in_root<typename Ev::root>(position<Ref, typename point_of_mass<X>::type>(), ev));
+  });
 }
 }  // namespace detail
 
@@ -83,7 +92,7 @@ requires detail::is_evaluator<Ev>::value vec<typename Ev::root, typename Ev::sca
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   Eigen::Matrix<S, 3, 1> p = Eigen::Matrix<S, 3, 1>::Zero();
-  detail::for_each_mass<Sys>(ev, [&]<class X>(std::type_identity<X>, const auto&) {
+  detail::for_each_mass_item<Sys, Ev>([&]<class X>(std::type_identity<X>) {
     p += detail::eval_scalar(X::mass, ev) *
          detail::in_root<R>(velocity<R, typename detail::point_of_mass<X>::type>(), ev);
   });
@@ -125,24 +134,15 @@ requires detail::is_evaluator<Ev>::value typename Ev::scalar kinetic_energy(cons
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   S energy = S(0);
-  if constexpr (detail::admitted<Sys, detail::speeds_of<Ev>>()) {
-    [&]<class... X>(detail::list<X...>) {
-      (
-          [&] {
-            if constexpr (detail::has_mass<X>) {
-              using P = typename detail::point_of_mass<X>::type;
-              const Eigen::Matrix<S, 3, 1> v = detail::in_root<R>(velocity<R, P>(), ev);
-              energy += detail::eval_scalar(X::mass, ev) * v.squaredNorm() / 2;
-            }
-            if constexpr (detail::is_body<X>) {
-              const Eigen::Matrix<S, 3, 1> w =
-                  detail::in_root<R>(angular_velocity<R, typename X::frame>(), ev);
-              energy += w.dot(detail::inertia_in_root<typename X::inertia_type>(ev) * w) / 2;
-            }
-          }(),
-          ...);
-    }(typename Sys::items{});
-  }
+  detail::for_each_mass_item<Sys, Ev>([&]<class X>(std::type_identity<X>) {
+    const Eigen::Matrix<S, 3, 1> v =
+        detail::in_root<R>(velocity<R, typename detail::point_of_mass<X>::type>(), ev);
+    energy += detail::eval_scalar(X::mass, ev) * v.squaredNorm() / 2;
+    if constexpr (detail::is_body<X>) {
+      const Eigen::Matrix<S, 3, 1> w = detail::in_root<R>(angular_velocity<R, typename X::frame>(), ev);
+      energy += w.dot(detail::inertia_in_root<typename X::inertia_type>(ev) * w) / 2;
+    }
+  });
   return energy;
 }
 
@@ -152,21 +152,31 @@ requires detail::is_evaluator<Ev>::value &&(std::is_void_v<O> || Point<O>)typena
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using V = Eigen::Matrix<S, 3, 1>;
+  S energy = S(0);
   V g = V::Zero();
   [&]<class... X>(detail::list<X...>) {
     (
         [&] {
           if constexpr (detail::is_gravity<X>) g += detail::in_root<R>(X::vector, ev);
+          if constexpr (detail::is_spring_energy<X>) energy += detail::eval_scalar(X::energy, ev);
         }(),
         ...);
   }(typename Sys::items{});
-  V o = V::Zero();
-  if constexpr (!std::is_void_v<O>)
-    o = detail::in_root<R>(position<typename detail::reference_point<Sys>::type, O>(), ev);
-  S energy = S(0);
-  detail::for_each_mass<Sys>(ev, [&]<class X>(std::type_identity<X>, const V& r) {
-    energy -= detail::eval_scalar(X::mass, ev) * g.dot(r - o);
-  });
+  if constexpr (detail::has_gravity(typename Sys::items{}) || !std::is_void_v<O>) {
+    using Ref = typename detail::reference_point<Sys>::type;
+    static_assert(
+        detail::check<
+            !detail::by_velocity<Ref>,
+            error::potential_energy_needs_positions_from_an_origin_not_from_a_point_known_by_its_velocity<
+                Ref>>);
+    if constexpr (!detail::by_velocity<Ref>) {
+      V o = V::Zero();
+      if constexpr (!std::is_void_v<O>) o = detail::in_root<R>(position<Ref, O>(), ev);
+      detail::for_each_mass<Sys>(ev, [&]<class X>(std::type_identity<X>, const V& r) {
+        energy -= detail::eval_scalar(X::mass, ev) * g.dot(r - o);
+      });
+    }
+  }
   return energy;
 }
 

@@ -1,10 +1,12 @@
 // Kane's equations of a nonholonomic system (seed eq. 22) for its p independent
 // speeds, summed along the nonholonomic partial velocities v~ = v T
-// (equations.hpp's sums with the columns of T): no n x n M is formed.
+// (equations.hpp's sums with the columns of T): no n x n M is formed. Also the n
+// equations with their constraint rows, and F~, F~* along v~.
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <utility>
 
 #include <Eigen/Core>
 
@@ -96,17 +98,15 @@ Eigen::Matrix<S, int(NH::n), int(NH::p)> speeds_of_independents(
   for (std::size_t j = 0; j < NH::m; ++j) t.row(Eigen::Index(NH::dependents[j] - 1)) = a.row(Eigen::Index(j));
   return t;
 }
-template <class Sys, class NH, bool RestRates, class Ev, class Sol>
-reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_forcing_at(const Ev& ev,
-                                                                                        const Sol& sol) {
+// b_dep of u_dep' = A u_ind' + b_dep: -C_dep^-1 (C' u + c0'), with the factors of C_dep that
+// solve_constraints found; C' u + c0' = dt(c) - C u' (RestRates: the evaluator's u' are zero).
+template <class NH, bool RestRates, class Ev, class Sol>
+solve_status dependent_rates_at_rest(const Ev& ev, const Sol& sol,
+                                     std::array<typename Ev::scalar, NH::m>& b_dep) {
   using S = typename Ev::scalar;
-  constexpr std::size_t n = NH::n, p = NH::p, m = NH::m;
+  constexpr std::size_t m = NH::m;
   static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
-  const auto ud = detail::speed_rates(ev);
-  reduced_equations<S, n, p> out;
-  out.T = speeds_of_independents<NH>(sol.A);
-  out.b.setZero();
-  Eigen::Matrix<S, int(m), 1> rest;  // C' u + c0' = dt(c) - C u'
+  Eigen::Matrix<S, int(m), 1> rest;
   [&]<std::size_t... K>(std::index_sequence<K...>) {
     with_common_subexpressions<decltype(dt(std::get<K>(NH::equations)))...>(ev, [&](const auto& e) {
       detail::static_for<m>([&](auto k) {
@@ -116,15 +116,25 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
     });
   }
   (std::make_index_sequence<m>{});
-  if constexpr (!RestRates) rest -= sol.C * ud;
-  // b_dep = -C_dep^-1 (C' u + c0'), with the factors of C_dep that solve_constraints found
+  if constexpr (!RestRates) rest -= sol.C * detail::speed_rates(ev);
   using Dep = detail::dense_right_side<detail::constraint_system<NH>>;
   detail::table<S, m, 1> right, bd;
   for (std::size_t k = 0; k < m; ++k) right[k][0] = rest(Eigen::Index(k));
   const solve_status solved =
       detail::substitute_structured<Dep>(sol.dependent.m, sol.dependent.factors, right, bd);
-  std::array<S, m> b_dep;
-  for (std::size_t j = 0; j < m; ++j) b_dep[j] = out.b(Eigen::Index(NH::dependents[j] - 1)) = -bd[j][0];
+  for (std::size_t j = 0; j < m; ++j) b_dep[j] = -bd[j][0];
+  return solved;
+}
+template <class Sys, class NH, bool RestRates, class Ev, class Sol>
+reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_forcing_at(const Ev& ev,
+                                                                                        const Sol& sol) {
+  using S = typename Ev::scalar;
+  reduced_equations<S, NH::n, NH::p> out;
+  out.T = speeds_of_independents<NH>(sol.A);
+  out.b.setZero();
+  std::array<S, NH::m> b_dep;
+  const solve_status solved = dependent_rates_at_rest<NH, RestRates>(ev, sol, b_dep);
+  for (std::size_t j = 0; j < NH::m; ++j) out.b(Eigen::Index(NH::dependents[j] - 1)) = b_dep[j];
   out.reduced = equations_along<Sys, RestRates, true>(ev, independent_speeds<NH, S>{sol.A, b_dep});
   if (out.reduced.status == solve_status::ok) out.reduced.status = sol.status;
   if (out.reduced.status == solve_status::ok) out.reduced.status = solved;
@@ -139,6 +149,47 @@ reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
   else
     return detail::flat<typename Ev::scalar>(
         [&] { return detail::reduced_mass_matrix_and_forcing_at<Sys, NH, false>(ev, sol); });
+}
+
+// The n equations of a nonholonomic system with its constraint rows, M u' = f in speed order (SymPy's
+// KanesMethod.mass_matrix and forcing): the row of an independent speed u_r is Kane's equation along
+// v~_r, (T^T M)_r u' = (T^T f)_r, with M, f the equations of all n speeds (equations.hpp); the row of
+// a dependent speed is its differentiated constraint, u_dep' - A u_ind' = b_dep. status: the
+// equations', the solution's, or that of the solve for b_dep.
+template <class Sys, class NH, class Ev, class Sol>
+requires detail::is_evaluator<Ev>::value equations_of_motion<typename Ev::scalar, NH::n>
+constrained_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
+  using S = typename Ev::scalar;
+  constexpr std::size_t n = NH::n, p = NH::p;
+  static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
+  if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>()) {
+    return {};
+  } else {
+    const auto e = mass_matrix_and_forcing<Sys>(ev);
+    const Eigen::Matrix<S, int(n), int(p)> t = detail::speeds_of_independents<NH>(sol.A);
+    std::array<S, NH::m> b_dep;
+    const solve_status solved = detail::dependent_rates_at_rest<NH, false>(ev, sol, b_dep);
+    equations_of_motion<S, n> out{Eigen::Matrix<S, int(n), int(n)>::Zero(), Eigen::Matrix<S, int(n), 1>(),
+                                  e.status};
+    for (std::size_t k = 0; k < p; ++k) {
+      const auto r = Eigen::Index(NH::independents[k] - 1);
+      out.M.row(r) = t.col(Eigen::Index(k)).transpose() * e.M;
+      out.f(r) = t.col(Eigen::Index(k)).dot(e.f);
+    }
+    for (std::size_t j = 0; j < NH::m; ++j) {
+      const auto r = Eigen::Index(NH::dependents[j] - 1);
+      out.M(r, r) = S(1);
+      for (std::size_t k = 0; k < p; ++k)
+        out.M(r, Eigen::Index(NH::independents[k] - 1)) = -sol.A(Eigen::Index(j), Eigen::Index(k));
+      out.f(r) = b_dep[j];
+    }
+    if (out.status == solve_status::ok) out.status = sol.status;
+    if (out.status == solve_status::ok) out.status = solved;
+    if (out.status == solve_status::ok &&
+        !(detail::all_finite_matrix(out.M) && detail::all_finite_matrix(out.f)))
+      out.status = solve_status::not_finite;
+    return out;
+  }
 }
 
 // Kane's generalized forces along the nonholonomic partial velocities, F~ = T^T F and

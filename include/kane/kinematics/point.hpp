@@ -4,6 +4,7 @@
 //   struct P : kane::point<O, L1 * kane::e<A, 1>> {};         // r^OP = L1 a1
 //   kane::velocity<N, P>()      ^N v^P = ^N d r^QP/dt, Q fixed in N on P's chain
 //   kane::acceleration<N, P>()  ^N a^P = ^N d(^N v^P)/dt
+//   struct D : kane::point_by_velocity<N, v> {};             // ^N v^D = v, no position
 //
 // A point is fixed in A if it is an origin of A, or if its position from a
 // point fixed in A has a zero A-derivative (decided at compile time); the
@@ -35,6 +36,22 @@ struct origin : detail::point_tag {
   using from = void;
   using fixed_frame = F;
   static constexpr zero_vector position{};
+};
+
+// A point known by its velocity in A alone (a mass centre whose velocity a textbook gives:
+// a rolling disc's centre, w x r): ^A v^P = V, ^A a^P = ^A dV/dt. V is the velocity of the
+// point itself; points located from P have ^A v = V + ^A d r/dt. P has no position from
+// points of other chains, and no velocity in frames other than A.
+template <Frame A, auto Velocity>
+struct point_by_velocity : detail::point_tag {
+  static_assert(VectorExpr<decltype(Velocity)>, "kane: point_by_velocity<A, v> needs a vector expression v");
+  static_assert(detail::check<!is_zero_vector_v<std::remove_cvref_t<decltype(Velocity)>>,
+                              error::a_point_at_rest_is_an_origin_write_kane_origin_of_the_frame<A>>);
+  using from = void;
+  using fixed_frame = void;  // fixed in no frame
+  using velocity_frame = A;
+  static constexpr zero_vector position{};
+  static constexpr auto known_velocity = detail::freeze<Velocity>();
 };
 
 // A point located from the point From by the vector Position (r^{From, this}).
@@ -95,6 +112,19 @@ constexpr bool fixed_in() {
     return is_zero_vector_v<decltype(ddt_in<A>(P::position))>;
 }
 
+template <class P>
+inline constexpr bool by_velocity = requires {
+  typename P::velocity_frame;
+};
+template <class L>
+struct last;
+template <class... P>
+struct last<list<P...>> {
+  using type = typename decltype((std::type_identity<P>{}, ...))::type;
+};
+template <class P>
+using chain_root_t = typename last<typename point_chain<P>::type>::type;
+
 // The first point of L fixed in A, or void.
 template <class L, class A>
 struct first_fixed {
@@ -131,8 +161,14 @@ constexpr auto position() {
   using cp = typename detail::point_chain<P>::type;
   using cq = typename detail::point_chain<Q>::type;
   using X = typename detail::first_common<cp, cq>::type;
+  constexpr bool joined = !std::is_void_v<X>;
+  constexpr bool moving =
+      detail::by_velocity<detail::chain_root_t<P>> || detail::by_velocity<detail::chain_root_t<Q>>;
   static_assert(
-      detail::check<!std::is_void_v<X>, error::points_not_joined_locate_both_from_one_origin<P, Q>>);
+      detail::check<(joined || !moving),
+                    error::a_point_known_by_its_velocity_has_no_position_locate_points_from_it<P, Q>>);
+  static_assert(
+      detail::check<(joined || moving), error::points_not_joined_locate_both_from_one_origin<P, Q>>);
   if constexpr (std::is_void_v<X>)
     return zero_vector{};
   else {
@@ -150,15 +186,26 @@ inline constexpr bool fixed_in_v = detail::fixed_in<P, A>();
 template <Frame A, Point P>
 constexpr auto velocity(P = {}) {
   using Q = typename detail::first_fixed<typename detail::point_chain<P>::type, A>::type;
-  // an origin<A>, or a point whose position from one is constant in A
-  static_assert(
-      detail::check<!std::is_void_v<Q>,
-                    error::no_point_of_the_chain_is_fixed_in_the_observer_locate_the_point_from_one<A, P>>);
-  if constexpr (std::is_void_v<Q>)
-    return zero_vector{};
-  else {
-    constexpr auto v = detail::measured_velocity<A, P>(detail::ddt_in<A>(position<Q, P>()));
+  using O = detail::chain_root_t<P>;
+  // an origin<A>, or a point whose position from one is constant in A; or a point known by its
+  // velocity in A
+  if constexpr (std::is_void_v<Q> && detail::by_velocity<O>) {
+    static_assert(
+        detail::check<std::is_same_v<typename O::velocity_frame, A>,
+                      error::the_velocity_of_this_point_is_known_in_another_frame_observe_it_there<A, P>>);
+    constexpr auto v =
+        detail::measured_velocity<A, P>(O::known_velocity + detail::ddt_in<A>(position<O, P>()));
     return v;
+  } else {
+    static_assert(
+        detail::check<!std::is_void_v<Q>,
+                      error::no_point_of_the_chain_is_fixed_in_the_observer_locate_the_point_from_one<A, P>>);
+    if constexpr (std::is_void_v<Q>)
+      return zero_vector{};
+    else {
+      constexpr auto v = detail::measured_velocity<A, P>(detail::ddt_in<A>(position<Q, P>()));
+      return v;
+    }
   }
 }
 

@@ -28,34 +28,11 @@
 #include "kane/evaluation/configuration.hpp"
 #include "kane/linearization/held_coordinates.hpp"
 #include "kane/linearization/jet.hpp"
+#include "kane/linearization/linear_model.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
-
-// The inputs of B: parameters (kane::parameter<k>{}) or inputs of the state (kane::r<k>).
-template <auto... P>
-struct inputs {
-  static constexpr std::size_t n = sizeof...(P);
-  static constexpr std::array<std::size_t, n> slots{std::remove_cvref_t<decltype(P)>::index...};
-  static constexpr std::array<bool, n> of_state{Input<std::remove_cvref_t<decltype(P)>>...};
-};
-
-template <class S, std::size_t NX, std::size_t NR>
-struct linear_model {
-  Eigen::Matrix<S, int(NX), int(NX)> A;
-  Eigen::Matrix<S, int(NX), int(NR)> B;
-  Eigen::Matrix<S, int(NX), 1> rate;  // x' at the state
-  solve_status status;
-};
-
-template <class S, std::size_t P, std::size_t NQ, std::size_t NR>
-struct linear_equations {
-  Eigen::Matrix<S, int(P), int(P)> M, C;
-  Eigen::Matrix<S, int(P), int(NQ)> K;
-  Eigen::Matrix<S, int(P), int(NR)> B;
-  solve_status status;
-};
 
 namespace detail {
 template <class St, class T>
@@ -212,7 +189,7 @@ auto linearize(const typename Ev::state_type& s) {
   for (std::size_t i = 0; i < nq; ++i) x[i] = J::variable(s.q[i], i);
   for (std::size_t i = 0; i < nu; ++i) x[nq + i] = J::variable(s.u[i], nq + i);
   rhs(x, dx, js.t);
-  linear_model<S, nx, In::n> out;
+  linear_model<S, nx, In::n, state_order<detail::one_to<nq>(), detail::one_to<nu>()>> out;
   for (std::size_t i = 0; i < nx; ++i) {
     out.rate(Eigen::Index(i)) = dx[i].v;
     for (std::size_t j = 0; j < nx; ++j) out.A(Eigen::Index(i), Eigen::Index(j)) = dx[i].part(j);
@@ -236,7 +213,7 @@ auto linearize_constrained(const typename Ev::state_type& s) {
   constrained_motion<Sys, NH, typename detail::rebind_evaluator<Ev, J>::type> rhs(js);
   std::array<J, nq + NH::p> dx;
   rhs(x, dx, js.t);
-  linear_model<S, nx, In::n> out;
+  linear_model<S, nx, In::n, state_order<qi, NH::independents>> out;
   for (std::size_t i = 0; i < nx; ++i) {
     const J& r = i < qi.size() ? dx[qi[i] - 1] : dx[nq + i - qi.size()];
     out.rate(Eigen::Index(i)) = r.v;
@@ -266,7 +243,7 @@ auto linearize_equations(const typename Ev::state_type& s) {
   rhs(x, dx, js.t);  // the dependent speeds; the point's u'
   const auto& ev = rhs.evaluator();
   const auto eq = reduced_mass_matrix_and_forcing<Sys, NH>(ev, solve_constraints<NH>(ev)).reduced;
-  linear_equations<S, p, qi.size(), In::n> out;
+  linear_equations<S, p, qi.size(), In::n, state_order<qi, NH::independents>> out;
   for (std::size_t r = 0; r < p; ++r) {
     J res = -eq.f(Eigen::Index(r));
     for (std::size_t c = 0; c < p; ++c) {
