@@ -174,11 +174,23 @@ auto constrained_point(const typename Ev::state_type& s, solve_status& status) {
   for (std::size_t k = 0; k < NH::p; ++k) x[nq + k] = J::variable(s.u[NH::independents[k] - 1], qs.n + k);
   return out;
 }
+// The results' types, declared so that a call does not instantiate the model to learn them.
+template <class Ev, class In>
+using model_of = linear_model<typename Ev::scalar, Ev::state_type::nq + speeds_of<Ev>::n, In::n,
+                              state_order<one_to<Ev::state_type::nq>(), one_to<speeds_of<Ev>::n>()>>;
+template <class NH, class Ev, class H, class In>
+using constrained_model_of =
+    linear_model<typename Ev::scalar, independent_coordinates<H, Ev::state_type::nq>().size() + NH::p, In::n,
+                 state_order<independent_coordinates<H, Ev::state_type::nq>(), NH::independents>>;
+template <class NH, class Ev, class H, class In>
+using equations_of =
+    linear_equations<typename Ev::scalar, NH::p, independent_coordinates<H, Ev::state_type::nq>().size(),
+                     In::n, state_order<independent_coordinates<H, Ev::state_type::nq>(), NH::independents>>;
 }  // namespace detail
 
 // x = (q, u) of an unconstrained system; the derivatives of x' = (W u + X, M^-1 f).
 template <class Sys, class Ev, class In = inputs<>>
-auto linearize(const typename Ev::state_type& s) {
+detail::model_of<Ev, In> linearize(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
   constexpr std::size_t nq = Ev::state_type::nq, nu = detail::speeds_of<Ev>::n, nx = nq + nu, n = nx + In::n;
   using J = jet<S, n>;
@@ -189,7 +201,7 @@ auto linearize(const typename Ev::state_type& s) {
   for (std::size_t i = 0; i < nq; ++i) x[i] = J::variable(s.q[i], i);
   for (std::size_t i = 0; i < nu; ++i) x[nq + i] = J::variable(s.u[i], nq + i);
   rhs(x, dx, js.t);
-  linear_model<S, nx, In::n, state_order<detail::one_to<nq>(), detail::one_to<nu>()>> out;
+  detail::model_of<Ev, In> out;
   for (std::size_t i = 0; i < nx; ++i) {
     out.rate(Eigen::Index(i)) = dx[i].v;
     for (std::size_t j = 0; j < nx; ++j) out.A(Eigen::Index(i), Eigen::Index(j)) = dx[i].part(j);
@@ -201,7 +213,7 @@ auto linearize(const typename Ev::state_type& s) {
 
 // x = (q_ind, u_ind) of a nonholonomic system NH with holonomic constraints H.
 template <class Sys, class NH, class Ev, class H = void, class In = inputs<>>
-auto linearize_constrained(const typename Ev::state_type& s) {
+detail::constrained_model_of<NH, Ev, H, In> linearize_constrained(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
   constexpr std::size_t nq = Ev::state_type::nq;
   constexpr auto qi = detail::independent_coordinates<H, nq>();
@@ -213,7 +225,7 @@ auto linearize_constrained(const typename Ev::state_type& s) {
   constrained_motion<Sys, NH, typename detail::rebind_evaluator<Ev, J>::type> rhs(js);
   std::array<J, nq + NH::p> dx;
   rhs(x, dx, js.t);
-  linear_model<S, nx, In::n, state_order<qi, NH::independents>> out;
+  detail::constrained_model_of<NH, Ev, H, In> out;
   for (std::size_t i = 0; i < nx; ++i) {
     const J& r = i < qi.size() ? dx[qi[i] - 1] : dx[nq + i - qi.size()];
     out.rate(Eigen::Index(i)) = r.v;
@@ -229,7 +241,7 @@ auto linearize_constrained(const typename Ev::state_type& s) {
 
 // M u' + C u + K q_ind = B r: Kane's reduced equations linearized about s, u' held.
 template <class Sys, class NH, class Ev, class H = void, class In = inputs<>>
-auto linearize_equations(const typename Ev::state_type& s) {
+detail::equations_of<NH, Ev, H, In> linearize_equations(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
   constexpr std::size_t nq = Ev::state_type::nq, p = NH::p;
   constexpr auto qi = detail::independent_coordinates<H, nq>();
@@ -243,7 +255,7 @@ auto linearize_equations(const typename Ev::state_type& s) {
   rhs(x, dx, js.t);  // the dependent speeds; the point's u'
   const auto& ev = rhs.evaluator();
   const auto eq = reduced_mass_matrix_and_forcing<Sys, NH>(ev, solve_constraints<NH>(ev)).reduced;
-  linear_equations<S, p, qi.size(), In::n, state_order<qi, NH::independents>> out;
+  detail::equations_of<NH, Ev, H, In> out;
   for (std::size_t r = 0; r < p; ++r) {
     J res = -eq.f(Eigen::Index(r));
     for (std::size_t c = 0; c < p; ++c) {
