@@ -80,6 +80,7 @@ constexpr bool fixed_frames() {
 }
 }  // namespace detail
 
+// A particle of mass Mass at the point P.
 template <Point P, auto Mass>
 struct particle : detail::particle_tag {
   static_assert(ScalarExpr<decltype(Mass)>, "kane: particle<P, m> takes a scalar expression m");
@@ -166,6 +167,7 @@ constexpr bool body_rules() {
 }
 }  // namespace detail
 
+// A rigid body fixed in B, mass centre Bo, mass Mass, inertia Given (kane::inertia).
 template <Frame B, Point Bo, auto Mass, class Given>
 struct rigid_body : detail::body_tag {
   static_assert(ScalarExpr<decltype(Mass)>, "kane: rigid_body<B, Bo, m, I> takes a scalar expression m");
@@ -187,12 +189,14 @@ struct rigid_body : detail::body_tag {
   static constexpr auto mass = detail::freeze<Mass>();
 };
 
+// A force R (a vector expression) applied at the point P.
 template <Point P, auto R>
 struct force : detail::load_tag {
   static_assert(VectorExpr<decltype(R)>, "kane: force<P, R> takes a vector expression R");
   using point = P;
   static constexpr auto vector = detail::freeze<R>();
 };
+// A torque T (a vector expression) applied to the frame B.
 template <Frame B, auto T>
 struct torque : detail::load_tag {
   static_assert(VectorExpr<decltype(T)>, "kane: torque<B, T> takes a vector expression T");
@@ -202,6 +206,7 @@ struct torque : detail::load_tag {
   using frame = B;
   static constexpr auto vector = detail::freeze<T>();
 };
+// Gravity G on every particle and mass centre of the system.
 template <auto G>
 struct gravity : detail::load_tag {
   static_assert(VectorExpr<decltype(G)>, "kane: gravity<g> takes a vector expression g");

@@ -54,6 +54,7 @@ constexpr bool sizes_checked() {
 }
 }  // namespace detail
 
+// x' = (q', u') of the system Sys for any integrator: f(x, dxdt, t).
 template <class Sys, class Ev>
 class motion {
  public:

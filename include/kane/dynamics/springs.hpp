@@ -59,6 +59,7 @@ struct spring_items<P, Q, K, L, true> {
 };
 }  // namespace detail
 
+// A linear spring between P and Q: stiffness K, free length L.
 template <Point P, Point Q, auto K, auto L>
 struct spring : detail::system_tag {
   static constexpr bool scalars = ScalarExpr<decltype(K)> && ScalarExpr<decltype(L)>;

@@ -35,6 +35,7 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
+// M u' = f of N speeds at a state, and its status.
 template <class S, std::size_t N>
 struct equations_of_motion {
   Eigen::Matrix<S, int(N), int(N)> M;  // symmetric, positive definite for a system with mass in every speed

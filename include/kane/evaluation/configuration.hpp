@@ -27,12 +27,14 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
+// Tolerance and step limit of Newton's method on holonomic constraints.
 template <class S>
 struct newton_options {
   S tolerance = S(64) * std::numeric_limits<S>::epsilon();
   std::size_t max_iterations = 20;
 };
 
+// What Newton's method on holonomic constraints reached: status, steps, residual.
 template <class S>
 struct newton_result {
   solve_status status;

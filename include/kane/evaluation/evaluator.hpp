@@ -48,6 +48,8 @@ template <class Speeds>
 using usable_speeds = std::conditional_t<std::is_void_v<Speeds> || SpeedSet<Speeds>, Speeds, void>;
 }  // namespace detail
 
+// The numbers of a state St for the frames Fs... and their ancestors, up to Level, with the speeds
+// Given: one outward pass per update.
 template <State St, Frame... Fs, level Level, class Given>
 class evaluator<St, frames<Fs...>, Level, Given>
     : public detail::outward_pass<typename St::scalar, typename detail::closure<Fs...>::type, Level>,

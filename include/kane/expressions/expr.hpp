@@ -51,30 +51,35 @@ struct fixed : detail::scalar_tag {
   static constexpr double value = V.value;
 };
 
+// l + r of scalar expressions.
 template <class L, class R>
 struct add : detail::scalar_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr add(L a, R b) : l(a), r(b) {}
 };
+// l - r of scalar expressions.
 template <class L, class R>
 struct sub : detail::scalar_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr sub(L a, R b) : l(a), r(b) {}
 };
+// l r of scalar expressions.
 template <class L, class R>
 struct mul : detail::scalar_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr mul(L a, R b) : l(a), r(b) {}
 };
+// l / r of scalar expressions.
 template <class L, class R>
 struct quot : detail::scalar_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr quot(L a, R b) : l(a), r(b) {}
 };
+// -x of a scalar expression.
 template <class X>
 struct neg : detail::scalar_tag {
   [[no_unique_address]] X x;

@@ -21,6 +21,7 @@ template <ScalarExpr X>
 constexpr auto cos(X x);
 template <ScalarExpr X>
 constexpr auto sqrt(X x);
+// sin, its value and its derivative.
 struct sin_fn {
   static constexpr const char* name = "sin";
   template <class T>
@@ -33,6 +34,7 @@ struct sin_fn {
     return cos(x);
   }
 };
+// cos, its value and its derivative.
 struct cos_fn {
   static constexpr const char* name = "cos";
   template <class T>
@@ -45,6 +47,7 @@ struct cos_fn {
     return -sin(x);
   }
 };
+// sqrt, its value and its derivative.
 struct sqrt_fn {
   static constexpr const char* name = "sqrt";
   template <class T>
@@ -55,6 +58,7 @@ struct sqrt_fn {
   template <class X>
   static constexpr auto derivative(X x);  // 1 / (2 sqrt(x)), below
 };
+// A named function of a scalar expression (sin, cos, sqrt, ...).
 template <class Fn, class X>
 struct unary : detail::scalar_tag {
   [[no_unique_address]] X x;
@@ -85,6 +89,7 @@ struct derivative_of {
     return f(detail::dual<T>{x, T(1)}).d;
   }
 };
+// f(x): a user function of a scalar expression, differentiated by dual numbers.
 template <class F, class X>
 struct call : detail::scalar_tag {
   [[no_unique_address]] F f;

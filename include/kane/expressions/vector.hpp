@@ -49,29 +49,34 @@ inline constexpr unit<F, I> e{};
 // The zero vector, as a type.
 struct zero_vector : detail::vector_tag {};
 
+// s v: a scalar expression times a vector expression.
 template <class S, class V>
 struct scaled : detail::vector_tag {
   [[no_unique_address]] S s;
   [[no_unique_address]] V v;
   constexpr scaled(S a, V b) : s(a), v(b) {}
 };
+// l + r of vector expressions.
 template <class L, class R>
 struct vsum : detail::vector_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr vsum(L a, R b) : l(a), r(b) {}
 };
+// l - r of vector expressions.
 template <class L, class R>
 struct vdiff : detail::vector_tag {
   [[no_unique_address]] L l;
   [[no_unique_address]] R r;
   constexpr vdiff(L a, R b) : l(a), r(b) {}
 };
+// -v of a vector expression.
 template <class V>
 struct vneg : detail::vector_tag {
   [[no_unique_address]] V v;
   constexpr explicit vneg(V a) : v(a) {}
 };
+// l x r of vector expressions.
 template <class L, class R>
 struct vcross : detail::vector_tag {
   [[no_unique_address]] L l;
@@ -92,6 +97,7 @@ template <class F>
 struct omega : detail::vector_tag {
   using frame = F;
 };
+// ^R alpha^F, the angular acceleration of F in the root R: a leaf the evaluator computes.
 template <class F>
 struct alpha : detail::vector_tag {
   using frame = F;

@@ -20,6 +20,7 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
+// A rotation angle given by a scalar expression X of coordinates, parameters and numbers.
 template <auto X>
 struct angle {
   static constexpr auto value = X;

@@ -19,6 +19,7 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
+// ^A P^B, direction cosines from A to B: ^B p = ^A P^B . ^A p.
 template <class A, class B, class S = double>
 class dcm {
   static_assert(Frame<A> && Frame<B>, "kane: dcm<A, B> needs two frames");

@@ -46,6 +46,7 @@ struct aux_frame : frame_tag {
 };
 }  // namespace detail
 
+// A frame oriented in Parent by O (simple, body_fixed, space_fixed, euler_parameters, spin, attitude).
 template <class Parent, class O>
 struct frame : detail::frame_tag {
   static_assert(detail::Complete<Parent>,

@@ -174,19 +174,23 @@ struct spin {
 template <class S>
 inline constexpr S rotation_tolerance = S(detail::sqrt_newton(double(std::numeric_limits<S>::epsilon())));
 
+// An attitude's source: ^P P^C read from the parameters p_K .. p_K+8, row after row (row i: c_i in P).
 template <std::size_t K>
-struct rotation_matrix {  // ^P P^C row after row: p_K .. p_K+8 (row i: c_i in P)
+struct rotation_matrix {
   static constexpr std::size_t first = K, count = 9;
 };
+// An attitude's source: Euler parameters (q0, q1, q2, q3), as euler_parameters, read from p_K .. p_K+3.
 template <std::size_t K>
-struct unit_quaternion {  // (q0, q1, q2, q3) as euler_parameters: p_K .. p_K+3
+struct unit_quaternion {
   static constexpr std::size_t first = K, count = 4;
 };
+// ^P w^C = u1 c1 + u2 c2 + u3 c3: an attitude's angular velocity in the child's axes.
 template <class U1, class U2, class U3>
 struct body_rates {
   static_assert(Speed<U1> && Speed<U2> && Speed<U3>, "kane: body_rates<u1, u2, u3> takes three speeds");
   static constexpr bool in_child = true;
 };
+// ^P w^C = u1 p1 + u2 p2 + u3 p3: an attitude's angular velocity in the parent's axes.
 template <class U1, class U2, class U3>
 struct parent_rates {
   static_assert(Speed<U1> && Speed<U2> && Speed<U3>, "kane: parent_rates<u1, u2, u3> takes three speeds");
@@ -204,6 +208,7 @@ struct rate_speeds<R<speed<I>, speed<J>, speed<K>>> {
 };
 }  // namespace detail
 
+// An orientation read from the state (Source) that turns at three free speeds (Rates).
 template <class Source, class Rates>
 struct attitude {
   static_assert(

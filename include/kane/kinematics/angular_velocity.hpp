@@ -18,11 +18,13 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
+// ^A w^B as a vector expression that remembers its observer and body.
 template <class A, class B>
 struct angular_velocity_of : detail::vector_tag {
   using observer = A;
   using body = B;
 };
+// ^A alpha^B as a vector expression that remembers its observer and body.
 template <class A, class B>
 struct angular_acceleration_of : detail::vector_tag {
   using observer = A;

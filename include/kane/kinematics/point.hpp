@@ -70,6 +70,7 @@ struct velocity_of : detail::quantity_tag {
   [[no_unique_address]] V v;
   constexpr explicit velocity_of(V x) : v(x) {}
 };
+// ^A a^P, a vector expression that remembers its observer and point.
 template <class A, class P, class V>
 struct acceleration_of : detail::quantity_tag {
   using observer = A;

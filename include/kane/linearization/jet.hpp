@@ -36,6 +36,7 @@ inline constexpr std::size_t simd_bytes = 0;
 #endif
 }  // namespace detail
 
+// v + sum d_i eps_i: a number with its first derivatives along N directions (forward mode).
 template <std::floating_point S, std::size_t N>
 struct jet {
   // The derivatives in chunks of one vector register (a vector type of GCC and Clang),

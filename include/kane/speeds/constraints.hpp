@@ -23,6 +23,7 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
+// The configuration constraints f(q, t) = 0 of particles and rigid bodies (seed eq. 16).
 template <std::size_t Particles, std::size_t RigidBodies, auto... F>
 struct configuration {
   static_assert((ScalarExpr<decltype(F)> && ...),
@@ -46,6 +47,7 @@ struct dependent {};
 template <SpeedSet Sp, class Dependent, auto... C>
 struct nonholonomic;
 
+// Nonholonomic constraints C... = 0, linear in the speeds of Sp, solved for the speeds D...
 template <SpeedSet Sp, std::size_t... D, auto... C>
 struct nonholonomic<Sp, dependent<D...>, C...> {
   using speed_set = Sp;

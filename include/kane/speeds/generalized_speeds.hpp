@@ -139,6 +139,7 @@ struct kde_weight : detail::scalar_tag {
   static constexpr std::size_t row = S, column = R;
   using speed_set = Sp;
 };
+// X_S of q' = W u + X for the speed set Sp: a scalar the evaluator computes.
 template <std::size_t S, class Sp>
 struct kde_offset : detail::scalar_tag {
   static constexpr std::size_t row = S;

@@ -30,6 +30,7 @@ struct dependent_coordinates {};
 template <class Dependent, auto... F>
 struct holonomic;
 
+// Holonomic constraints F...(q, t) = 0 solved for the coordinates D...
 template <std::size_t... D, auto... F>
 struct holonomic<dependent_coordinates<D...>, F...> {
   static_assert((ScalarExpr<decltype(F)> && ...),
