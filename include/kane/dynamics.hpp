@@ -6,6 +6,7 @@
 #include "kane/dynamics/equations.hpp"
 #include "kane/dynamics/generalized_forces.hpp"
 #include "kane/dynamics/inverse_dynamics.hpp"
+#include "kane/dynamics/loads.hpp"
 #include "kane/dynamics/momenta.hpp"
 #include "kane/dynamics/motion.hpp"
 #include "kane/dynamics/reduced_equations.hpp"

@@ -4,9 +4,7 @@
 //   kane::inertia<F, Q, I11, I22, I33, I12, I23, I31>   a dyadic by its components in F, about Q
 //   kane::parallel_axis<I, G, m>                  I moved to the mass centre G of mass m
 //   kane::rigid_body<B, Bo, m, I>                 frame B, mass centre Bo, mass m, inertia I about Bo
-//   kane::force<P, R>                             R (a vector expression) applied at P
-//   kane::torque<B, T>                            a couple of torque T on B
-//   kane::gravity<g>                              m g at every particle and mass centre
+//   kane::force<P, R>, torque<B, T>, gravity<g>   the loads (loads.hpp)
 //   kane::system<items...>                       items, or systems whose items it adds
 //
 // Masses and components are scalar expressions (a parameter, kane::literal(2.0),
@@ -22,6 +20,7 @@
 
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/tree.hpp"
+#include "kane/dynamics/loads.hpp"
 #include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/derivative.hpp"
@@ -35,7 +34,6 @@ namespace kane {
 namespace detail {
 struct particle_tag {};
 struct body_tag {};
-struct load_tag {};
 struct inertia_tag {};
 
 // The edges between A and B turn by constant angles: B is fixed in A.
@@ -189,47 +187,11 @@ struct rigid_body : detail::body_tag {
   static constexpr auto mass = detail::freeze<Mass>();
 };
 
-// A force R (a vector expression) applied at the point P.
-template <Point P, auto R>
-struct force : detail::load_tag {
-  static_assert(VectorExpr<decltype(R)>, "kane: force<P, R> takes a vector expression R");
-  using point = P;
-  static constexpr auto vector = detail::freeze<R>();
-};
-// A torque T (a vector expression) applied to the frame B.
-template <Frame B, auto T>
-struct torque : detail::load_tag {
-  static_assert(VectorExpr<decltype(T)>, "kane: torque<B, T> takes a vector expression T");
-  using trees = detail::join_trees_t<detail::tree_of_t<std::remove_cvref_t<decltype(T)>>, detail::root_of<B>>;
-  static_assert(detail::one_tree_v<trees>);
-  static constexpr bool well_formed = VectorExpr<decltype(T)> && !detail::is_two_roots_v<trees>;
-  using frame = B;
-  static constexpr auto vector = detail::freeze<T>();
-};
-// Gravity G on every particle and mass centre of the system.
-template <auto G>
-struct gravity : detail::load_tag {
-  static_assert(VectorExpr<decltype(G)>, "kane: gravity<g> takes a vector expression g");
-  static constexpr auto vector = detail::freeze<G>();
-};
-
 namespace detail {
 template <class T>
 inline constexpr bool is_particle = std::derived_from<T, particle_tag>;
 template <class T>
 inline constexpr bool is_body = std::derived_from<T, body_tag>;
-template <class T>
-inline constexpr bool is_force = requires {
-  typename T::point;
-}
-&&std::derived_from<T, load_tag>;
-template <class T>
-inline constexpr bool is_torque = requires {
-  typename T::frame;
-}
-&&std::derived_from<T, load_tag>;
-template <class T>
-inline constexpr bool is_gravity = std::derived_from<T, load_tag> && !is_force<T> && !is_torque<T>;
 
 // P is a particle's point, or its position from a mass centre is constant in that body.
 template <class P, class X>
