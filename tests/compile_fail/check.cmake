@@ -1,10 +1,10 @@
 # Build TARGET in BUILD_DIR, or compile SOURCE with CXX and FLAGS; pass if the
 # compile fails, its first error line matches every regular expression of REGEX
-# (separated by " && ") and the whole diagnostic is at most MAX_BYTES (default 20 KB).
+# (separated by " && ") and the whole diagnostic is at most MAX_BYTES (default 10 KB).
 # Only the first error line counts: later lines quote the source, which would match
 # anything it names.
 if(NOT DEFINED MAX_BYTES)
-  set(MAX_BYTES 20480)
+  set(MAX_BYTES 10240)
 endif()
 if(DEFINED CXX)
   separate_arguments(flags UNIX_COMMAND "${FLAGS}")
