@@ -59,11 +59,13 @@ std::string frame_name() {
     return std::string(type_name<F>());
 }
 
+// p as ^F(a1, a2, a3)
 template <class F, class S>
 std::ostream& operator<<(std::ostream& os, const vec<F, S>& p) {
   return os << '^' << frame_name<F>() << '(' << p[0] << ", " << p[1] << ", " << p[2] << ')';
 }
 
+// ^A P^B row after row
 template <class A, class B, class S>
 std::ostream& operator<<(std::ostream& os, const dcm<A, B, S>& p) {
   os << '^' << frame_name<A>() << " P^" << frame_name<B>() << " [";
@@ -204,6 +206,7 @@ requires ScalarExpr<X> || VectorExpr<X> std::string to_string(const X& x) {
   return os.str();
 }
 
+// the expression in Kane's notation, as to_string
 template <class X>
 requires ScalarExpr<X> || VectorExpr<X> std::ostream& operator<<(std::ostream& os, const X& x) {
   detail::print_expr(os, x);

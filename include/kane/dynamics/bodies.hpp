@@ -82,8 +82,11 @@ constexpr bool fixed_frames() {
 template <Point P, auto Mass>
 struct particle : detail::particle_tag {
   static_assert(ScalarExpr<decltype(Mass)>, "kane: particle<P, m> takes a scalar expression m");
+  // the particle keeps its rules (a system admits it only then)
   static constexpr bool well_formed = ScalarExpr<decltype(Mass)>;
+  // P, where the mass is
   using point = P;
+  // the mass, a scalar expression
   static constexpr auto mass = detail::freeze<Mass>();
 };
 
@@ -94,8 +97,11 @@ struct inertia : detail::inertia_tag {
   static_assert((ScalarExpr<decltype(I11)> && ScalarExpr<decltype(I22)> && ScalarExpr<decltype(I33)> &&
                  ScalarExpr<decltype(I12)> && ScalarExpr<decltype(I23)> && ScalarExpr<decltype(I31)>),
                 "kane: inertia<F, Q, I11, I22, I33, I12, I23, I31> takes scalar expressions");
+  // F, the frame of the components
   using frame = F;
+  // Q, the point the inertia is about
   using about = Q;
+  // (I11, I22, I33, I12, I23, I31)
   static constexpr std::tuple components{detail::freeze<I11>(), detail::freeze<I22>(), detail::freeze<I33>(),
                                          detail::freeze<I12>(), detail::freeze<I23>(), detail::freeze<I31>()};
 };
@@ -171,6 +177,7 @@ struct rigid_body : detail::body_tag {
   static_assert(ScalarExpr<decltype(Mass)>, "kane: rigid_body<B, Bo, m, I> takes a scalar expression m");
   static_assert(std::derived_from<Given, detail::inertia_tag>,
                 "kane: rigid_body<B, Bo, m, I> takes I = kane::inertia<F, Bo, ...>");
+  // the inertia as given, or in the parent of a frame that spins
   using I = typename detail::inertia_for<Given>::type;
   static_assert(detail::joined_frames<B, typename I::frame>::joined);
   static_assert(detail::check < detail::fixed_frames<B, typename I::frame>() ||
@@ -180,10 +187,15 @@ struct rigid_body : detail::body_tag {
       detail::check<
           std::is_same_v<typename I::about, Bo>,
           error::inertia_about_another_point_than_the_mass_centre_use_parallel_axis<typename I::about, Bo>>);
+  // the body keeps its rules (a system admits it only then)
   static constexpr bool well_formed = ScalarExpr<decltype(Mass)> && detail::body_rules<B, Bo, Given>();
+  // B, the frame the body is fixed in
   using frame = B;
+  // Bo, the mass centre
   using centre = Bo;
+  // the inertia used
   using inertia_type = I;
+  // the mass, a scalar expression
   static constexpr auto mass = detail::freeze<Mass>();
 };
 
@@ -230,6 +242,7 @@ struct system : detail::system_tag {
       ((detail::is_particle<X> || detail::is_body<X> || std::derived_from<X, detail::load_tag> ||
         std::derived_from<X, detail::system_tag>)&&...),
       "kane: system<...> takes particles, rigid bodies, loads (force, torque, gravity) and systems");
+  // the particles, bodies and loads, nested systems flattened
   using items = typename detail::concat<typename detail::items_of<X>::type...>::type;
 };
 

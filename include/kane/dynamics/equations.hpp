@@ -86,9 +86,12 @@ mass_matrix_and_forcing(const Ev& ev) {
 // or not_finite.
 template <class S, std::size_t N>
 struct mass_matrix_only {
+  // the mass matrix, N x N
   Eigen::Matrix<S, int(N), int(N)> M;
+  // the evaluator's, or not_finite
   solve_status status;
 };
+// M alone of the system Sys at the evaluator's state (any level)
 template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value mass_matrix_only<typename Ev::scalar, detail::speeds_of<Ev>::n>
 mass_matrix(const Ev& ev) {

@@ -78,6 +78,7 @@ constexpr auto inertia_term() {
 }
 }  // namespace detail
 
+// ^N F_r = sum v_r . R + w_r . T of the system Sys for the speeds Sp
 template <Frame N, class Sys, SpeedSet Sp, std::size_t R>
 constexpr auto generalized_active_force() {
   return []<class... X>(detail::list<X...>) {
@@ -85,6 +86,7 @@ constexpr auto generalized_active_force() {
   }(typename Sys::items{});
 }
 
+// ^N F*_r = -sum m a . v_r + (I . alpha + w x I . w) . w_r of Sys for the speeds Sp
 template <Frame N, class Sys, SpeedSet Sp, std::size_t R>
 constexpr auto generalized_inertia_force() {
   return []<class... X>(detail::list<X...>) {

@@ -81,12 +81,14 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> forward_at(const Ev& ev) {
 }
 }  // namespace detail
 
+// tau = M u' - f at the evaluator's state, with its status
 template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, detail::speeds_of<Ev>::n>
 inverse_dynamics(const Ev& ev) {
   return detail::flat<typename Ev::scalar>([&] { return detail::inverse_at<Sys, false>(ev); });
 }
 
+// f alone (tau at u' = 0 is -f), with its status
 template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, detail::speeds_of<Ev>::n>
 forcing(const Ev& ev) {
@@ -97,6 +99,7 @@ forcing(const Ev& ev) {
   });
 }
 
+// u' = M^-1 f at the evaluator's state, with its status
 template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, detail::speeds_of<Ev>::n>
 forward_dynamics(const Ev& ev) {

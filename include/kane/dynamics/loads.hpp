@@ -28,23 +28,30 @@ struct load_tag {};
 template <Point P, auto R>
 struct force : detail::load_tag {
   static_assert(VectorExpr<decltype(R)>, "kane: force<P, R> takes a vector expression R");
+  // P, the point of application
   using point = P;
+  // R, the force
   static constexpr auto vector = detail::freeze<R>();
 };
 // A torque T (a vector expression) applied to the frame B.
 template <Frame B, auto T>
 struct torque : detail::load_tag {
   static_assert(VectorExpr<decltype(T)>, "kane: torque<B, T> takes a vector expression T");
+  // the frame trees of T and B, joined
   using trees = detail::join_trees_t<detail::tree_of_t<std::remove_cvref_t<decltype(T)>>, detail::root_of<B>>;
   static_assert(detail::one_tree_v<trees>);
+  // T is a vector expression and B, T share one tree
   static constexpr bool well_formed = VectorExpr<decltype(T)> && !detail::is_two_roots_v<trees>;
+  // B, the frame the torque acts on
   using frame = B;
+  // T, the torque
   static constexpr auto vector = detail::freeze<T>();
 };
 // Gravity G on every particle and mass centre of the system.
 template <auto G>
 struct gravity : detail::load_tag {
   static_assert(VectorExpr<decltype(G)>, "kane: gravity<g> takes a vector expression g");
+  // G, the acceleration of gravity
   static constexpr auto vector = detail::freeze<G>();
 };
 

@@ -86,6 +86,7 @@ void for_each_mass(const Ev& ev, F&& f) {
 }
 }  // namespace detail
 
+// ^R p = sum m ^R v^P, as vec<R>
 template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value vec<typename Ev::root, typename Ev::scalar> linear_momentum(
     const Ev& ev) {
@@ -99,6 +100,7 @@ requires detail::is_evaluator<Ev>::value vec<typename Ev::root, typename Ev::sca
   return vec<R, S>(p);
 }
 
+// ^R H^O = sum r^OP x m ^R v^P + I . ^R w^B, as vec<R>; O the system's mass centre by default
 template <class Sys, class O = mass_centre, class Ev>
 requires detail::is_evaluator<Ev>::value &&
     (std::is_same_v<O, mass_centre> ||
@@ -129,6 +131,7 @@ requires detail::is_evaluator<Ev>::value &&
   return vec<R, S>(h);
 }
 
+// T = sum m v . v / 2 + w . I . w / 2
 template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value typename Ev::scalar kinetic_energy(const Ev& ev) {
   using S = typename Ev::scalar;
@@ -146,6 +149,7 @@ requires detail::is_evaluator<Ev>::value typename Ev::scalar kinetic_energy(cons
   return energy;
 }
 
+// V = -sum m g . r^OP + sum k s^2 / 2, zero at O
 template <class Sys, class O = void, class Ev>
 requires detail::is_evaluator<Ev>::value &&(std::is_void_v<O> || Point<O>)typename Ev::scalar
     potential_energy(const Ev& ev) {

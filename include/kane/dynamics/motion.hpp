@@ -58,10 +58,14 @@ constexpr bool sizes_checked() {
 template <class Sys, class Ev>
 class motion {
  public:
+  // the evaluator's state type
   using state_type = typename Ev::state_type;
+  // the evaluator's scalar type
   using scalar = typename Ev::scalar;
+  // nq, nu: the numbers of coordinates and speeds; size = nq + nu, the entries of x
   static constexpr std::size_t nq = state_type::nq, nu = detail::speeds_of<Ev>::n, size = nq + nu;
 
+  // parameters and inputs from s (each call's x gives q and u); u' and q'' set to 0
   explicit motion(const state_type& s) : s_(s) { s_.ud = {}, s_.qdd = {}; }
 
   // Numbers: one function body (the passes, the tables and Eigen's fixed-size loops inlined).
@@ -71,6 +75,7 @@ class motion {
     detail::flat<scalar>([&] { step(x, dxdt, time); });
   }
 
+  // the status of the last call: ok, or why dxdt is NaN
   solve_status status() const { return status_; }
   // The inputs r of the calls from now on (a controller's torques), kept between calls.
   typename state_type::inputs_type& inputs() { return s_.r; }
@@ -119,10 +124,14 @@ class motion {
 template <class Sys, class NH, class Ev>
 class constrained_motion {
  public:
+  // the evaluator's state type
   using state_type = typename Ev::state_type;
+  // the evaluator's scalar type
   using scalar = typename Ev::scalar;
+  // nq, p: the numbers of coordinates and independent speeds; size = nq + p, the entries of x
   static constexpr std::size_t nq = state_type::nq, p = NH::p, size = nq + p;
 
+  // parameters and inputs from s (each call's x gives q and u_ind); u' set to 0
   explicit constrained_motion(const state_type& s) : s_(s) { s_.ud = {}; }
 
   // Numbers: one function body (the passes, the tables and Eigen's fixed-size loops inlined).
@@ -132,8 +141,11 @@ class constrained_motion {
     detail::flat<scalar>([&] { step(x, dxdt, time); });
   }
 
+  // the status of the last call: ok, or why dxdt is NaN
   solve_status status() const { return status_; }
+  // the inputs r of the calls from now on, kept between calls
   typename state_type::inputs_type& inputs() { return s_.r; }
+  // the evaluator at the last call's state
   const Ev& evaluator() const { return ev_; }
   // The state of the last call, its dependent speeds solved.
   const state_type& state() const { return s_; }

@@ -84,8 +84,10 @@ struct independent_speeds {
 // velocities v~_r (the constraint forces do no work there). u_dep' = A u_ind' + b_dep.
 template <class S, std::size_t N, std::size_t P>
 struct reduced_equations {
+  // M~ u_ind' = f~, with its status
   equations_of_motion<S, P> reduced;   // M~ u_ind' = f~
   Eigen::Matrix<S, int(N), int(P)> T;  // u' = T u_ind' + b
+  // u' at u_ind' = 0: b_dep at the dependent speeds, else 0
   Eigen::Matrix<S, int(N), 1> b;
 };
 namespace detail {
@@ -141,6 +143,7 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
   return out;
 }
 }  // namespace detail
+// M~, f~, T and b of Sys at ev's state, with sol the solution of the constraints NH
 template <class Sys, class NH, class Ev, class Sol>
 requires detail::is_evaluator<Ev>::value reduced_equations<typename Ev::scalar, NH::n, NH::p>
 reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
@@ -198,10 +201,13 @@ constrained_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
 // equations. status: the evaluator's, the solution's, or not_finite.
 template <class S, std::size_t P>
 struct reduced_forces {
+  // F~ = T^T F
   Eigen::Matrix<S, int(P), 1> active;   // F~_r
   Eigen::Matrix<S, int(P), 1> inertia;  // F~*_r
+  // the evaluator's, the solution's, or not_finite
   solve_status status;
 };
+// F~ and F~* of Sys at ev's state, with sol the solution of the constraints NH
 template <class Sys, class NH, class Ev, class Sol>
 requires detail::is_evaluator<Ev>::value reduced_forces<typename Ev::scalar, NH::p>
 reduced_generalized_forces(const Ev& ev, const Sol& sol) {

@@ -62,10 +62,13 @@ struct spring_items<P, Q, K, L, true> {
 // A linear spring between P and Q: stiffness K, free length L.
 template <Point P, Point Q, auto K, auto L>
 struct spring : detail::system_tag {
+  // K and L are scalar expressions
   static constexpr bool scalars = ScalarExpr<decltype(K)> && ScalarExpr<decltype(L)>;
   static_assert(scalars,
                 "kane: spring<P, Q, k, L> takes scalar expressions k (stiffness) and L (free length)");
+  // the spring keeps its rules (a system admits it only then)
   static constexpr bool well_formed = scalars;
+  // the pulls on Q and P (none on a P at rest in a root) and the energy k s^2 / 2
   using items = typename detail::spring_items<P, Q, K, L, scalars>::type;
 };
 

@@ -38,8 +38,11 @@ namespace kane {
 // M u' = f of N speeds at a state, and its status.
 template <class S, std::size_t N>
 struct equations_of_motion {
+  // the mass matrix, N x N
   Eigen::Matrix<S, int(N), int(N)> M;  // symmetric, positive definite for a system with mass in every speed
+  // the forcing, N x 1
   Eigen::Matrix<S, int(N), 1> f;
+  // ok, or why M and f are NaN
   solve_status status;  // the evaluator's, or not_finite
 };
 

@@ -30,18 +30,23 @@ namespace kane {
 // Tolerance and step limit of Newton's method on holonomic constraints.
 template <class S>
 struct newton_options {
+  // the bound on max_k |f_k|, in the units of f
   S tolerance = S(64) * std::numeric_limits<S>::epsilon();
+  // the most Newton steps
   std::size_t max_iterations = 20;
 };
 
 // What Newton's method on holonomic constraints reached: status, steps, residual.
 template <class S>
 struct newton_result {
+  // ok, singular, not_finite or not_converged
   solve_status status;
+  // the Newton steps taken
   std::size_t iterations;  // Newton steps taken
   S residual;              // max_k |f_k| at the last iterate (NaN if not finite)
 };
 
+// q_dep of s with f(q) = 0 by Newton's method from s; ev and s at the last iterate
 template <Holonomic H, class Ev>
 newton_result<typename Ev::scalar> solve_configuration(Ev& ev, typename Ev::state_type& s,
                                                        newton_options<typename Ev::scalar> options = {}) {

@@ -215,6 +215,7 @@ requires(detail::is_evaluator<Ev>::value&& detail::inlined_entry<Ev>)
     KANE_INLINE_FLATTEN vec<A, typename Ev::scalar> express(const V& v, const Ev& ev) {
   return detail::express_in<A>(v, ev);
 }
+// ^A v, for an evaluator of more than 8 frames (one flattened function)
 template <Frame A, VectorExpr V, class Ev>
 requires(detail::is_evaluator<Ev>::value &&
          !detail::inlined_entry<Ev>) KANE_FLATTEN vec<A, typename Ev::scalar> express(const V& v,

@@ -67,8 +67,11 @@ class evaluator<St, frames<Fs...>, Level, Given>
   using typename pass_type::trig_type;
 
  public:
+  // St
   using state_type = St;
+  // the scalar type of St
   using scalar = typename St::scalar;
+  // Speeds, or void (u = q')
   using speed_set = Speeds;
   using typename pass_type::closure;
 
@@ -90,6 +93,7 @@ class evaluator<St, frames<Fs...>, Level, Given>
   KANE_INLINE_FLATTEN void update(const St& s) requires(detail::inlined_entry<pass_type>) {
     pass_at<true>(s);
   }
+  // update(s) for more than 8 frames: one flattened function
   KANE_FLATTEN void update(const St& s) requires(!detail::inlined_entry<pass_type>) { pass_at<true>(s); }
 
   // With a speed set, update(s) in two steps: update_pose(s) reads q, p, t (the
@@ -100,12 +104,15 @@ class evaluator<St, frames<Fs...>, Level, Given>
   KANE_INLINE_FLATTEN void update_pose(const St& s) requires(solves&& detail::inlined_entry<pass_type>) {
     pass_at<false>(s);
   }
+  // update_pose(s) for more than 8 frames: one flattened function
   KANE_FLATTEN void update_pose(const St& s) requires(solves && !detail::inlined_entry<pass_type>) {
     pass_at<false>(s);
   }
+  // u and u' of s at the pose of the last update_pose(s)
   KANE_INLINE_FLATTEN void update_speeds(const St& s) requires(solves&& detail::inlined_entry<pass_type>) {
     speeds_at(s);
   }
+  // update_speeds(s) for more than 8 frames: one flattened function
   KANE_FLATTEN void update_speeds(const St& s) requires(solves && !detail::inlined_entry<pass_type>) {
     speeds_at(s);
   }
@@ -127,6 +134,7 @@ class evaluator<St, frames<Fs...>, Level, Given>
     assert(updated_ && "kane: evaluate after update(s)");
     return st_;
   }
+  // there was an update: results are of a state, not NaN
   bool updated() const { return updated_; }
 
   // q_I, q_I', q_I'': from the state, or solved from the speeds.
@@ -164,6 +172,7 @@ class evaluator<St, frames<Fs...>, Level, Given>
     else
       return sin(st_.q[I - 1]);
   }
+  // cos q_I, from the cache when a frame turns by q_I
   template <std::size_t I>
   scalar cos_q() const {
     using std::cos;

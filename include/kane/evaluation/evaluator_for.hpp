@@ -106,11 +106,13 @@ struct as_frames<list<F...>> {
 // The expressions an evaluator is for (evaluator_for).
 template <auto... X>
 struct reads {
+  // the frames the expressions read, each once
   using frames = typename detail::as_frames<typename detail::unique<typename detail::concat<
       decltype(detail::frames_read<std::remove_cvref_t<decltype(X)>>())...>::type>::type>::type;
   static_assert(!std::is_same_v<frames, kane::frames<>>,
                 "kane: these expressions read no frame but a root; hold one with kane::evaluator<State, "
                 "kane::frames<F>>");
+  // the lowest level that evaluates them all
   static constexpr level needed = [] {
     int l = 0;
     ((l = detail::level_read<std::remove_cvref_t<decltype(X)>>() > l

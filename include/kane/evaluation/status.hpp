@@ -25,6 +25,7 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
+// ok, a singular matrix, numbers not finite, no convergence, or an attitude not a rotation
 enum class solve_status { ok, singular, not_finite, not_converged, not_a_rotation };
 // The name of a status ("ok", "singular", ...).
 constexpr const char* to_string(solve_status s) {

@@ -143,6 +143,7 @@ auto residuals(const Ev& ev) {
   }
   (std::make_index_sequence<Config::constraints>{});
 }
+// df_k/dt at the evaluator's state
 template <class Config, class Ev>
 auto velocity_residuals(const Ev& ev) {
   return [&]<std::size_t... K>(std::index_sequence<K...>) {
@@ -159,12 +160,19 @@ auto velocity_residuals(const Ev& ev) {
 // C and c0 are the constraints solved, C u + c0 = 0 (C: M x (M + P), all speeds).
 template <class S, std::size_t M, std::size_t P, class NH = void>
 struct constraint_solution {
+  // NH, the constraints solved
   using constraints = NH;  // the declaration solved: tables of other constraints refuse it
+  // A of u_dep = A u_ind + B
   Eigen::Matrix<S, int(M), int(P)> A;
+  // B of u_dep = A u_ind + B
   Eigen::Matrix<S, int(M), 1> B;
+  // ok, or why A and B are NaN
   solve_status status;
+  // C of C u + c0 = 0: M x (M + P), all speeds
   Eigen::Matrix<S, int(M), int(M + P)> C;
+  // c0 of C u + c0 = 0
   Eigen::Matrix<S, int(M), 1> c0;
+  // the block of C at the dependent speeds, factored
   detail::factored<S, M> dependent;  // the block of C of the dependent speeds: u_dep' reuses it
 };
 

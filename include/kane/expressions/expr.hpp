@@ -33,56 +33,77 @@ concept Number = std::is_arithmetic_v<T>;
 template <std::intmax_t N, std::intmax_t D = 1>
 struct constant : detail::scalar_tag {
   static_assert(D != 0, "kane: a constant's denominator must not be zero");
+  // N, the numerator
   static constexpr std::intmax_t num = N;
+  // D, the denominator
   static constexpr std::intmax_t den = D;
 };
+// 0 as a constant
 using zero_t = constant<0>;
+// 1 as a constant
 using one_t = constant<1>;
 
 // A number known only at run time (2.5 * q<1>); held by value.
 struct literal : detail::scalar_tag {
+  // the number
   double value;
+  // the number v
   constexpr explicit literal(double v) : value(v) {}
 };
 // A literal moved into the type: numbers of template arguments (point
 // positions, speed definitions, constraints) become constants of the code.
 template <literal V>
 struct fixed : detail::scalar_tag {
+  // V.value, a constant of the code
   static constexpr double value = V.value;
 };
 
 // l + r of scalar expressions.
 template <class L, class R>
 struct add : detail::scalar_tag {
+  // the left operand
   [[no_unique_address]] L l;
+  // the right operand
   [[no_unique_address]] R r;
+  // a + b
   constexpr add(L a, R b) : l(a), r(b) {}
 };
 // l - r of scalar expressions.
 template <class L, class R>
 struct sub : detail::scalar_tag {
+  // the left operand
   [[no_unique_address]] L l;
+  // the right operand
   [[no_unique_address]] R r;
+  // a - b
   constexpr sub(L a, R b) : l(a), r(b) {}
 };
 // l r of scalar expressions.
 template <class L, class R>
 struct mul : detail::scalar_tag {
+  // the left operand
   [[no_unique_address]] L l;
+  // the right operand
   [[no_unique_address]] R r;
+  // a b
   constexpr mul(L a, R b) : l(a), r(b) {}
 };
 // l / r of scalar expressions.
 template <class L, class R>
 struct quot : detail::scalar_tag {
+  // the numerator
   [[no_unique_address]] L l;
+  // the denominator
   [[no_unique_address]] R r;
+  // a / b
   constexpr quot(L a, R b) : l(a), r(b) {}
 };
 // -x of a scalar expression.
 template <class X>
 struct neg : detail::scalar_tag {
+  // the operand
   [[no_unique_address]] X x;
+  // -a
   constexpr explicit neg(X a) : x(a) {}
 };
 
@@ -131,14 +152,17 @@ constexpr auto as_expr(X x) {
 
 }  // namespace detail
 
+// T is the constant 0
 template <class T>
 inline constexpr bool is_zero_v = std::is_same_v<T, zero_t>;
+// T is the constant 1
 template <class T>
 inline constexpr bool is_one_v = std::is_same_v<T, one_t>;
 
 template <class T>
 concept ScalarOperand = ScalarExpr<T> || Number<T>;
 
+// -x: a constant folded, -(-x) is x
 template <ScalarExpr X>
 constexpr auto operator-(X x) {
   if constexpr (detail::is_constant<X>::value)
@@ -149,6 +173,7 @@ constexpr auto operator-(X x) {
     return neg<X>(x);
 }
 
+// l + r, a number as a literal; constants folded, 0 dropped, x + (-x) is 0
 template <ScalarOperand L, ScalarOperand R>
 requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator+(L l_, R r_) {
   auto l = detail::as_expr(l_);
@@ -167,6 +192,7 @@ requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator+(L l_, R r_) {
     return add<A, B>(l, r);
 }
 
+// l - r, a number as a literal; constants folded, 0 dropped, x - x is 0
 template <ScalarOperand L, ScalarOperand R>
 requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator-(L l_, R r_) {
   auto l = detail::as_expr(l_);
@@ -185,6 +211,7 @@ requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator-(L l_, R r_) {
     return sub<A, B>(l, r);
 }
 
+// l r, a number as a literal; constants folded, 0 and 1 and -1 simplified
 template <ScalarOperand L, ScalarOperand R>
 requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator*(L l_, R r_) {
   auto l = detail::as_expr(l_);
@@ -207,6 +234,7 @@ requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator*(L l_, R r_) {
     return mul<A, B>(l, r);
 }
 
+// l / r, a number as a literal; constants folded, 0 / r is 0, l / 1 is l
 template <ScalarOperand L, ScalarOperand R>
 requires(ScalarExpr<L> || ScalarExpr<R>) constexpr auto operator/(L l_, R r_) {
   auto l = detail::as_expr(l_);

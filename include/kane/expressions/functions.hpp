@@ -23,12 +23,15 @@ template <ScalarExpr X>
 constexpr auto sqrt(X x);
 // sin, its value and its derivative.
 struct sin_fn {
+  // the name printed
   static constexpr const char* name = "sin";
+  // sin x of a number, or of an expression by ADL
   template <class T>
   static constexpr auto apply(T x) {
     using std::sin;
     return sin(x);
   }
+  // cos x: d(sin x)/dx
   template <class X>
   static constexpr auto derivative(X x) {
     return cos(x);
@@ -36,12 +39,15 @@ struct sin_fn {
 };
 // cos, its value and its derivative.
 struct cos_fn {
+  // the name printed
   static constexpr const char* name = "cos";
+  // cos x of a number, or of an expression by ADL
   template <class T>
   static constexpr auto apply(T x) {
     using std::cos;
     return cos(x);
   }
+  // -sin x: d(cos x)/dx
   template <class X>
   static constexpr auto derivative(X x) {
     return -sin(x);
@@ -49,19 +55,24 @@ struct cos_fn {
 };
 // sqrt, its value and its derivative.
 struct sqrt_fn {
+  // the name printed
   static constexpr const char* name = "sqrt";
+  // sqrt x of a number, or of an expression by ADL
   template <class T>
   static constexpr auto apply(T x) {
     using std::sqrt;
     return sqrt(x);
   }
+  // 1 / (2 sqrt x): d(sqrt x)/dx
   template <class X>
   static constexpr auto derivative(X x);  // 1 / (2 sqrt(x)), below
 };
 // A named function of a scalar expression (sin, cos, sqrt, ...).
 template <class Fn, class X>
 struct unary : detail::scalar_tag {
+  // the argument
   [[no_unique_address]] X x;
+  // Fn(a)
   constexpr explicit unary(X a) : x(a) {}
 };
 namespace detail {
@@ -76,14 +87,18 @@ struct unary_info<unary<Fn, A>> {
 // x^N for an integer N.
 template <class X, int N>
 struct power : detail::scalar_tag {
+  // the base
   [[no_unique_address]] X x;
+  // a^N
   constexpr explicit power(X a) : x(a) {}
 };
 // f(x) for an opaque user function object f, generic in its argument so that
 // it runs on dual numbers; derivative_of<F> is f'(x), found by forward mode.
 template <class F>
 struct derivative_of {
+  // the function object
   [[no_unique_address]] F f;
+  // f'(x), by one dual number
   template <class T>
   constexpr T operator()(T x) const {
     return f(detail::dual<T>{x, T(1)}).d;
@@ -92,8 +107,11 @@ struct derivative_of {
 // f(x): a user function of a scalar expression, differentiated by dual numbers.
 template <class F, class X>
 struct call : detail::scalar_tag {
+  // the function object
   [[no_unique_address]] F f;
+  // the argument
   [[no_unique_address]] X x;
+  // g(a)
   constexpr call(F g, X a) : f(g), x(a) {}
 };
 
@@ -104,6 +122,7 @@ constexpr auto sin(X x) {
   else
     return unary<sin_fn, X>(x);
 }
+// cos x; cos 0 = 1
 template <ScalarExpr X>
 constexpr auto cos(X x) {
   if constexpr (is_zero_v<X>)
@@ -111,6 +130,7 @@ constexpr auto cos(X x) {
   else
     return unary<cos_fn, X>(x);
 }
+// sqrt x
 template <ScalarExpr X>
 constexpr auto sqrt(X x) {
   return unary<sqrt_fn, X>(x);

@@ -40,9 +40,12 @@ concept Quantity = std::derived_from<T, detail::quantity_tag>;
 template <class F, int I>
 struct unit : detail::vector_tag {
   static_assert(I >= 1 && I <= 3, "kane: unit vectors are e<F, 1>, e<F, 2>, e<F, 3>");
+  // F, the frame of the unit vector
   using frame = F;
+  // i of e_Fi
   static constexpr int index = I;
 };
+// e<F, i> is e_Fi
 template <Frame F, int I>
 inline constexpr unit<F, I> e{};
 
@@ -52,42 +55,59 @@ struct zero_vector : detail::vector_tag {};
 // s v: a scalar expression times a vector expression.
 template <class S, class V>
 struct scaled : detail::vector_tag {
+  // the scalar factor
   [[no_unique_address]] S s;
+  // the vector
   [[no_unique_address]] V v;
+  // a b
   constexpr scaled(S a, V b) : s(a), v(b) {}
 };
 // l + r of vector expressions.
 template <class L, class R>
 struct vsum : detail::vector_tag {
+  // the left operand
   [[no_unique_address]] L l;
+  // the right operand
   [[no_unique_address]] R r;
+  // a + b
   constexpr vsum(L a, R b) : l(a), r(b) {}
 };
 // l - r of vector expressions.
 template <class L, class R>
 struct vdiff : detail::vector_tag {
+  // the left operand
   [[no_unique_address]] L l;
+  // the right operand
   [[no_unique_address]] R r;
+  // a - b
   constexpr vdiff(L a, R b) : l(a), r(b) {}
 };
 // -v of a vector expression.
 template <class V>
 struct vneg : detail::vector_tag {
+  // the operand
   [[no_unique_address]] V v;
+  // -a
   constexpr explicit vneg(V a) : v(a) {}
 };
 // l x r of vector expressions.
 template <class L, class R>
 struct vcross : detail::vector_tag {
+  // the left operand
   [[no_unique_address]] L l;
+  // the right operand
   [[no_unique_address]] R r;
+  // a x b
   constexpr vcross(L a, R b) : l(a), r(b) {}
 };
 // p . r, a scalar.
 template <class L, class R>
 struct vdot : detail::scalar_tag {
+  // the left operand
   [[no_unique_address]] L l;
+  // the right operand
   [[no_unique_address]] R r;
+  // a . b
   constexpr vdot(L a, R b) : l(a), r(b) {}
 };
 
@@ -95,14 +115,17 @@ struct vdot : detail::scalar_tag {
 // evaluator's outward pass.
 template <class F>
 struct omega : detail::vector_tag {
+  // F, whose angular velocity this is
   using frame = F;
 };
 // ^R alpha^F, the angular acceleration of F in the root R: a leaf the evaluator computes.
 template <class F>
 struct alpha : detail::vector_tag {
+  // F, whose angular acceleration this is
   using frame = F;
 };
 
+// T is the zero vector
 template <class T>
 inline constexpr bool is_zero_vector_v = std::is_same_v<T, zero_vector>;
 
@@ -143,6 +166,7 @@ struct opposite<vneg<V>, V> : std::is_empty<V> {};
 
 }  // namespace detail
 
+// -v; -0 is 0, -(-v) is v
 template <VectorExpr V>
 constexpr auto operator-(V v) {
   if constexpr (is_zero_vector_v<V>)
@@ -171,6 +195,7 @@ constexpr auto operator+(L l, R r) {
   else
     return vsum<L, R>(l, r);
 }
+// l - r; 0 dropped, v - v is 0, s v - t v is (s - t) v
 template <VectorExpr L, VectorExpr R>
 constexpr auto operator-(L l, R r) {
   static_assert(detail::summable<L, R>());
@@ -186,6 +211,7 @@ constexpr auto operator-(L l, R r) {
     return vdiff<L, R>(l, r);
 }
 
+// s v, a number as a literal; 0, 1 and -1 simplified, s (a x b) is a x (s b)
 template <ScalarOperand S, VectorExpr V>
 constexpr auto operator*(S s_, V v) {
   auto s = detail::as_expr(s_);
@@ -201,10 +227,12 @@ constexpr auto operator*(S s_, V v) {
   else
     return scaled<X, V>(s, v);
 }
+// v s = s v
 template <VectorExpr V, ScalarOperand S>
 constexpr auto operator*(V v, S s) {
   return s * v;
 }
+// v / s = (1/s) v
 template <VectorExpr V, ScalarOperand S>
 constexpr auto operator/(V v, S s) {
   return (one_t{} / s) * v;

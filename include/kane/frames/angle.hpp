@@ -23,6 +23,7 @@ namespace kane {
 // A rotation angle given by a scalar expression X of coordinates, parameters and numbers.
 template <auto X>
 struct angle {
+  // X, the angle as a scalar expression
   static constexpr auto value = X;
 };
 

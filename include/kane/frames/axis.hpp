@@ -37,6 +37,7 @@ constexpr std::array<double, 3> normalise(double x, double y, double z) {
 // The constant unit axis (X, Y, Z) / |(X, Y, Z)|, fixed in a frame and its parent.
 template <int X, int Y, int Z>
 struct direction {
+  // (X, Y, Z) as given, not normalised
   static constexpr double components[3] = {double(X), double(Y), double(Z)};
 };
 

@@ -18,7 +18,9 @@ struct scalar_tag {};
 template <std::size_t I, std::size_t D = 0>
 struct coordinate : detail::scalar_tag {
   static_assert(I >= 1, "kane: generalized coordinates are numbered from 1 (q1, q2, ...)");
+  // I of q_I (from 1)
   static constexpr std::size_t index = I;
+  // D of q_I^(D): 0, 1 or 2
   static constexpr std::size_t order = D;
 };
 
@@ -26,7 +28,9 @@ struct coordinate : detail::scalar_tag {
 template <std::size_t I, std::size_t D = 0>
 struct speed : detail::scalar_tag {
   static_assert(I >= 1, "kane: generalized speeds are numbered from 1 (u1, u2, ...)");
+  // I of u_I (from 1)
   static constexpr std::size_t index = I;
+  // D of u_I^(D): 0 or 1
   static constexpr std::size_t order = D;
 };
 
@@ -35,6 +39,7 @@ struct speed : detail::scalar_tag {
 template <std::size_t I>
 struct parameter : detail::scalar_tag {
   static_assert(I >= 1, "kane: parameters are numbered from 1");
+  // I of p_I: the value is p[I-1]
   static constexpr std::size_t index = I;
 };
 
@@ -43,6 +48,7 @@ struct parameter : detail::scalar_tag {
 template <std::size_t I>
 struct input : detail::scalar_tag {
   static_assert(I >= 1, "kane: inputs are numbered from 1");
+  // I of r_I: the value is r[I-1]
   static constexpr std::size_t index = I;
 };
 
@@ -51,10 +57,13 @@ struct time_variable : detail::scalar_tag {};
 // Tag objects: q<1> is q_1, u<2> is u_2, t is time.
 template <std::size_t I>
 inline constexpr coordinate<I> q{};
+// u<1> is u_1, u<2> is u_2, ...
 template <std::size_t I>
 inline constexpr speed<I> u{};
+// r<1> is the input r_1, r<2> is r_2, ...
 template <std::size_t I>
 inline constexpr input<I> r{};
+// t is the time
 inline constexpr time_variable t{};
 
 namespace detail {

@@ -26,9 +26,13 @@ class dcm {
   static_assert(Scalar<S>, "kane: dcm<A, B, S> needs a scalar type S");
 
  public:
+  // A: the frame the components come from
   using from_frame = A;
+  // B: the frame the components go to
   using to_frame = B;
+  // the scalar type S
   using scalar = S;
+  // the 3x3 matrix of S
   using eigen_type = Eigen::Matrix<S, 3, 3>;
 
   // The identity (A and B aligned).
@@ -39,11 +43,14 @@ class dcm {
     Eigen::Map<eigen_type>{m_} = m;
   }
 
+  // (^A P^B)_ij = e_Bi . e_Aj, i and j from 0
   S operator()(int i, int j) const { return m_[i + 3 * j]; }
   // The matrix as an Eigen view (no copy).
   // On a temporary it is a copy, so that no view outlives its matrix.
   Eigen::Map<const eigen_type> eigen() const& { return Eigen::Map<const eigen_type>(m_); }
+  // the matrix, copied: no view of a temporary
   eigen_type eigen() && { return Eigen::Map<const eigen_type>(m_); }
+  // the matrix of a const temporary, copied
   eigen_type eigen() const&& { return Eigen::Map<const eigen_type>(m_); }  // a copy: no view of a temporary
 
   // ^B P^A = (^A P^B)^T.
@@ -80,6 +87,7 @@ operator*(const dcm<DcmFrom, To, S>&, const vec<VecFrame, S>&) {
       detail::check<false, error::dcm_applies_only_to_components_in_its_from_frame<DcmFrom, VecFrame>>);
   return {};
 }
+// ^B P^C . ^A P^B with frames that do not chain: an error naming them
 template <class LeftFrom, class LeftTo, class RightFrom, class RightTo, class S>
 requires DifferentFrames<LeftFrom, RightTo> dcm<RightFrom, LeftTo, S>
 operator*(const dcm<LeftFrom, LeftTo, S>&, const dcm<RightFrom, RightTo, S>&) {

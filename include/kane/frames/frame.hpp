@@ -33,7 +33,9 @@ concept Frame = detail::Complete<F> && std::derived_from<F, detail::frame_tag>;
 
 // A frame with no parent, e.g. the Newtonian frame N.
 struct root_frame : detail::frame_tag {
+  // void: a root has no parent
   using parent = void;
+  // void: a root has no edge above it
   using tree_parent = void;
 };
 
@@ -58,7 +60,9 @@ struct frame : detail::frame_tag {
   static_assert(Orientation<O>,
                 "kane: frame<Parent, Orientation> needs an orientation "
                 "(kane::simple, kane::body_fixed, kane::space_fixed, kane::euler_parameters, kane::spin)");
+  // the frame this one is oriented in
   using parent = Parent;
+  // O, the orientation in the parent
   using orientation = O;
 
  private:
@@ -68,6 +72,7 @@ struct frame : detail::frame_tag {
   // The edge of the tree above this frame: its last simple rotation, or its Euler parameters.
   using tree_parent =
       std::conditional_t<n_ == 1, Parent, detail::aux_frame<Parent, typename O::steps, n_ - 1>>;
+  // the last step of O: the rotation from tree_parent to this frame
   using step = typename detail::at<typename O::steps, n_ - 1>::type;
 };
 

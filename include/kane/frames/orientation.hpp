@@ -74,10 +74,13 @@ struct simple {
   static_assert(Angle<A>,
                 "kane: simple<Axis, Angle> turns by a coordinate q_i, a parameter, a constant or "
                 "kane::angle<X> with X an expression of coordinates, parameters and numbers");
+  // K, fixed in P and C
   using axis = K;
+  // the angle as a scalar expression
   static constexpr auto angle = detail::angle_argument<A>::value;
   // i when the angle is q_i itself (sin and cos cached per state), else 0
   static constexpr std::size_t coordinate_index = detail::bare_coordinate<std::remove_cv_t<decltype(angle)>>;
+  // one edge: this rotation
   using steps = detail::list<simple>;
   // ^P P^C
   template <class S, class Trig, class St>
@@ -102,6 +105,7 @@ struct body_fixed {
   static_assert(detail::valid_sequence<I, J, K>(),
                 "kane: a rotation sequence takes axes 1, 2, 3 with consecutive axes different "
                 "(the twelve sequences 1-2-3 ... 3-2-1 and 1-2-1 ... 3-2-3)");
+  // three edges: about I, J and K in turn
   using steps = detail::list<simple<detail::numbered_axis<I>, Q1>, simple<detail::numbered_axis<J>, Q2>,
                              simple<detail::numbered_axis<K>, Q3>>;
 };
@@ -121,6 +125,7 @@ template <class... Q>
 struct euler_parameters {
   static_assert(sizeof...(Q) == 4 && (Coordinate<Q> && ...),
                 "kane: euler_parameters<q0, q1, q2, q3> takes four coordinates, the scalar part first");
+  // i of each q_i, the scalar part first
   static constexpr std::array<std::size_t, 4> coordinates = [] {
     if constexpr (sizeof...(Q) == 4 && (Coordinate<Q> && ...))
       return std::array<std::size_t, 4>{Q::index...};
@@ -131,8 +136,11 @@ struct euler_parameters {
                     coordinates[0] != coordinates[3] && coordinates[1] != coordinates[2] &&
                     coordinates[1] != coordinates[3] && coordinates[2] != coordinates[3],
                 "kane: the four Euler parameters are four different coordinates");
+  // 0: no sin and cos of a coordinate cached
   static constexpr std::size_t coordinate_index = 0;
+  // one edge: the Euler parameters
   using steps = detail::list<euler_parameters>;
+  // ^P P^C from q0, q1, q2, q3 of st, divided by |e|^2
   template <class S, class Trig, class St>
   static Eigen::Matrix<S, 3, 3> matrix(const Trig&, const St& st) {
     static_assert(coordinates[0] <= St::nq && coordinates[1] <= St::nq && coordinates[2] <= St::nq &&
@@ -151,14 +159,18 @@ struct euler_parameters {
 template <Axis K, class U>
 struct spin {
   static_assert(Speed<U>, "kane: spin<Axis, U> turns at a generalized speed U = kane::speed<r>");
+  // K, fixed in P and C
   using axis = K;
+  // r of U = u_r
   static constexpr std::size_t speed_index = [] {
     if constexpr (Speed<U>)
       return U::index;
     else
       return std::size_t(1);
   }();
+  // 0: no sin and cos of a coordinate cached
   static constexpr std::size_t coordinate_index = 0;
+  // one edge: the spin
   using steps = detail::list<spin>;
 };
 
@@ -177,23 +189,27 @@ inline constexpr S rotation_tolerance = S(detail::sqrt_newton(double(std::numeri
 // An attitude's source: ^P P^C read from the parameters p_K .. p_K+8, row after row (row i: c_i in P).
 template <std::size_t K>
 struct rotation_matrix {
+  // p_first .. p_first+count-1 hold ^P P^C: first = K, count = 9
   static constexpr std::size_t first = K, count = 9;
 };
 // An attitude's source: Euler parameters (q0, q1, q2, q3), as euler_parameters, read from p_K .. p_K+3.
 template <std::size_t K>
 struct unit_quaternion {
+  // p_first .. p_first+count-1 hold e: first = K, count = 4
   static constexpr std::size_t first = K, count = 4;
 };
 // ^P w^C = u1 c1 + u2 c2 + u3 c3: an attitude's angular velocity in the child's axes.
 template <class U1, class U2, class U3>
 struct body_rates {
   static_assert(Speed<U1> && Speed<U2> && Speed<U3>, "kane: body_rates<u1, u2, u3> takes three speeds");
+  // true: u1, u2, u3 along c1, c2, c3
   static constexpr bool in_child = true;
 };
 // ^P w^C = u1 p1 + u2 p2 + u3 p3: an attitude's angular velocity in the parent's axes.
 template <class U1, class U2, class U3>
 struct parent_rates {
   static_assert(Speed<U1> && Speed<U2> && Speed<U3>, "kane: parent_rates<u1, u2, u3> takes three speeds");
+  // false: u1, u2, u3 along p1, p2, p3
   static constexpr bool in_child = false;
 };
 
@@ -217,13 +233,18 @@ struct attitude {
   static_assert(
       requires { Rates::in_child; },
       "kane: attitude<Source, Rates> turns at kane::body_rates<...> or kane::parent_rates<...>");
+  // where ^P P^C is read from
   using source = Source;
+  // r of the speeds u_r of Rates
   static constexpr std::array<std::size_t, 3> rate_speeds = detail::rate_speeds<Rates>::value;
+  // the rates are along the child's axes
   static constexpr bool body_rates = Rates::in_child;
   static_assert(rate_speeds[0] != rate_speeds[1] && rate_speeds[0] != rate_speeds[2] &&
                     rate_speeds[1] != rate_speeds[2],
                 "kane: the three rates of an attitude are three different speeds");
+  // 0: no sin and cos of a coordinate cached
   static constexpr std::size_t coordinate_index = 0;
+  // one edge: the attitude
   using steps = detail::list<attitude>;
   // The attitude of st is a rotation (within rotation_tolerance).
   template <class St>
@@ -242,6 +263,7 @@ struct attitude {
              d <= tol && -d <= tol;
     }
   }
+  // ^P P^C from the parameters of st (a quaternion divided by |q|^2)
   template <class S, class Trig, class St>
   static Eigen::Matrix<S, 3, 3> matrix(const Trig&, const St& st) {
     constexpr std::size_t k = Source::first - 1;

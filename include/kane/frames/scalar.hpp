@@ -14,6 +14,7 @@ struct is_scalar : std::bool_constant<std::floating_point<S>> {};
 // The real numbers S is built on (S itself; a jet's value type).
 template <class S>
 struct real_type {
+  // S: a floating-point type is its own real type
   using type = S;
 };
 

@@ -21,13 +21,17 @@ namespace kane {
 // ^A w^B as a vector expression that remembers its observer and body.
 template <class A, class B>
 struct angular_velocity_of : detail::vector_tag {
+  // A, the frame it is measured in
   using observer = A;
+  // B, the frame that turns
   using body = B;
 };
 // ^A alpha^B as a vector expression that remembers its observer and body.
 template <class A, class B>
 struct angular_acceleration_of : detail::vector_tag {
+  // A, the frame it is measured in
   using observer = A;
+  // B, the frame that turns
   using body = B;
 };
 

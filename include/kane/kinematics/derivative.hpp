@@ -199,8 +199,11 @@ constexpr auto dt(X x) {
 // ^A d x/dt of a quantity x measured in A: measured in A too (dt<A>(^A v^P) + ^B a^Q does not compile).
 template <class A, class V>
 struct measured_in : detail::quantity_tag {
+  // A, the frame it is measured in
   using observer = A;
+  // the expression of ^A dx/dt
   [[no_unique_address]] V v;
+  // ^A dx/dt given by x
   constexpr explicit measured_in(V x) : v(x) {}
 };
 
@@ -214,6 +217,7 @@ constexpr auto dt(V v) {
     return d;
 }
 
+// d v/dt without a frame: an error (write dt<N>(v) for a frame N)
 template <VectorExpr V>
 constexpr V dt(V v) {
   static_assert(detail::check<false, error::a_vector_derivative_needs_a_frame_write_dt_A_of_v<V>>);
@@ -234,6 +238,7 @@ requires(detail::coordinate_info<Leaf>::value || detail::speed_info<Leaf>::value
   return detail::partial_in<A, Leaf>(v);
 }
 
+// d v/dq without a frame: an error (write diff<N>(v, q) for a frame N)
 template <VectorExpr V, ScalarExpr Leaf>
 constexpr V diff(V v, Leaf) {
   static_assert(detail::check<false, error::a_vector_derivative_needs_a_frame_write_diff_A_of_v_q<V>>);

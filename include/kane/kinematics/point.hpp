@@ -33,8 +33,11 @@ concept Point = std::derived_from<P, detail::point_tag>;
 // A root point, fixed in F.
 template <Frame F>
 struct origin : detail::point_tag {
+  // void: a root point is located from no point
   using from = void;
+  // F, the frame the point is fixed in
   using fixed_frame = F;
+  // the zero vector: no position from another point
   static constexpr zero_vector position{};
 };
 
@@ -47,10 +50,15 @@ struct point_by_velocity : detail::point_tag {
   static_assert(VectorExpr<decltype(Velocity)>, "kane: point_by_velocity<A, v> needs a vector expression v");
   static_assert(detail::check<!is_zero_vector_v<std::remove_cvref_t<decltype(Velocity)>>,
                               error::a_point_at_rest_is_an_origin_write_kane_origin_of_the_frame<A>>);
+  // void: located from no point
   using from = void;
+  // void: no frame the point is fixed in
   using fixed_frame = void;  // fixed in no frame
+  // A, the one frame the velocity is known in
   using velocity_frame = A;
+  // the zero vector: no position from another point
   static constexpr zero_vector position{};
+  // Velocity: ^A v^P
   static constexpr auto known_velocity = detail::freeze<Velocity>();
 };
 
@@ -59,22 +67,30 @@ template <class From, auto Position>
 struct point : detail::point_tag {
   static_assert(Point<From>, "kane: point<From, r> needs a point From (kane::origin or kane::point)");
   static_assert(VectorExpr<decltype(Position)>, "kane: point<From, r> needs a vector expression r");
+  // From, the point this one is located from
   using from = From;
+  // Position: r^{From, this}
   static constexpr auto position = detail::freeze<Position>();
 };
 
 // ^A v^P and ^A a^P: a vector expression that remembers its frame and point.
 template <class A, class P, class V>
 struct velocity_of : detail::quantity_tag {
+  // A, the frame of the velocity
   using observer = A;
+  // the expression of ^A v^P
   [[no_unique_address]] V v;
+  // ^A v^P given by x
   constexpr explicit velocity_of(V x) : v(x) {}
 };
 // ^A a^P, a vector expression that remembers its observer and point.
 template <class A, class P, class V>
 struct acceleration_of : detail::quantity_tag {
+  // A, the frame of the acceleration
   using observer = A;
+  // the expression of ^A a^P
   [[no_unique_address]] V v;
+  // ^A a^P given by x
   constexpr explicit acceleration_of(V x) : v(x) {}
 };
 
@@ -180,6 +196,7 @@ constexpr auto position() {
   }
 }
 
+// P is fixed in A
 template <Point P, Frame A>
 inline constexpr bool fixed_in_v = detail::fixed_in<P, A>();
 

@@ -1,10 +1,9 @@
-// Jets: numbers v + sum_i d_i eps_i with eps_i eps_j = 0, the scalar of exact
-// first derivatives (forward mode). An evaluator over kane::jet<double, N>
-// carries, beside every number it computes, its derivatives along N chosen
-// directions of the state; derivatives are exact up to rounding, not differences.
+// Jets: numbers v + sum_i d_i eps_i with eps_i eps_j = 0, the scalar of exact first derivatives (forward
+// mode). An evaluator over kane::jet<double, N> carries, beside every number it computes, its derivatives
+// along N chosen directions of the state; derivatives are exact up to rounding, not differences.
 //
-// Comparisons read the value v alone, except == and != which compare all parts
-// (an "exact zero" skipped by a solver must have zero derivatives too).
+// Comparisons read the value v alone, except == and != which compare all parts (an "exact zero" skipped
+// by a solver must have zero derivatives too).
 #pragma once
 
 #include <cmath>
@@ -39,19 +38,21 @@ inline constexpr std::size_t simd_bytes = 0;
 // v + sum d_i eps_i: a number with its first derivatives along N directions (forward mode).
 template <std::floating_point S, std::size_t N>
 struct jet {
-  // The derivatives in chunks of one vector register (a vector type of GCC and Clang),
-  // N rounded up to whole chunks; part(i) reads d_i. Arithmetic works chunk by chunk,
-  // so no jet is a constant expression (Clang does not evaluate vector types there).
-  // The chunk follows the target (-mavx...): units built for different targets must
-  // not exchange jets. Chunks keep their natural alignment (their size), so none
-  // straddles a cache line (the bicycle's A with 8-byte alignment: 14-16 % slower).
+  // The derivatives come in chunks of one vector register, width numbers each, N rounded up to whole chunks.
+  // The chunk follows the target (-mavx...): units built for different targets must not exchange jets.
   static constexpr std::size_t width = detail::simd_bytes > sizeof(S) ? detail::simd_bytes / sizeof(S) : 1,
                                chunks = (N + width - 1) / width;
+  // A vector type of GCC and Clang: arithmetic works chunk by chunk, so no jet is a constant expression
+  // (Clang does not evaluate vector types there). Chunks keep their natural alignment (their size), so
+  // none straddles a cache line (the bicycle's A with 8-byte alignment: 14-16 % slower).
   typedef S chunk __attribute__((vector_size(sizeof(S) * width)));
+  // the value v
   S v;
+  // d_0 .. d_N-1 in chunks; part(i) reads d_i
   chunk c[chunks];
 
   jet() = default;  // like a double: jet x; is uninitialised, jet x{}; is zero
+  // a number as a constant: zero derivatives
   template <class T>
   requires std::is_arithmetic_v<T> jet(T value) : v(S(value)), c() {}  // NOLINT: numbers convert as constants
   // x_i: the value x seeded in direction i.
@@ -60,6 +61,7 @@ struct jet {
     r.c[i / width][i % width] = S(1);
     return r;
   }
+  // d_i
   S part(std::size_t i) const { return c[i / width][i % width]; }
 
   // (value, f(c_0), f(c_1), ...) unrolled: jet arithmetic inlines into straight-line code.
@@ -71,12 +73,15 @@ struct jet {
     for (std::size_t k = 0; k < chunks; ++k) r.c[k] = f(k);
     return r;
   }
+  // a + b
   friend jet operator+(const jet& a, const jet& b) {
     return make(a.v + b.v, [&](std::size_t k) { return a.c[k] + b.c[k]; });
   }
+  // a - b
   friend jet operator-(const jet& a, const jet& b) {
     return make(a.v - b.v, [&](std::size_t k) { return a.c[k] - b.c[k]; });
   }
+  // a b, by the product rule
   friend jet operator*(const jet& a, const jet& b) {
     return make(a.v * b.v, [&](std::size_t k) { return a.c[k] * b.v + a.v * b.c[k]; });
   }
@@ -84,61 +89,86 @@ struct jet {
   friend jet operator*(const jet& a, S b) {
     return make(a.v * b, [&](std::size_t k) { return a.c[k] * b; });
   }
+  // a b = b a
   friend jet operator*(S a, const jet& b) { return b * a; }
+  // a / b, by the quotient rule
   friend jet operator/(const jet& a, const jet& b) {
     const S r = S(1) / b.v, q = a.v * r;
     return make(q, [&](std::size_t k) { return (a.c[k] - q * b.c[k]) * r; });
   }
+  // +a = a
   friend jet operator+(const jet& a) { return a; }
+  // -a
   friend jet operator-(const jet& a) {
     return make(-a.v, [&](std::size_t k) { return -a.c[k]; });
   }
+  // a = a + b
   jet& operator+=(const jet& b) { return *this = *this + b; }
+  // a = a - b
   jet& operator-=(const jet& b) { return *this = *this - b; }
+  // a = a b
   jet& operator*=(const jet& b) { return *this = *this * b; }
+  // a = a / b
   jet& operator/=(const jet& b) { return *this = *this / b; }
 
+  // v and every d_i equal
   friend bool operator==(const jet& a, const jet& b) {
     bool same = a.v == b.v;
     for (std::size_t i = 0; i < N; ++i) same = same && a.part(i) == b.part(i);
     return same;
   }
+  // a.v < b.v
   friend bool operator<(const jet& a, const jet& b) { return a.v < b.v; }
+  // a.v > b.v
   friend bool operator>(const jet& a, const jet& b) { return a.v > b.v; }
+  // a.v <= b.v
   friend bool operator<=(const jet& a, const jet& b) { return a.v <= b.v; }
+  // a.v >= b.v
   friend bool operator>=(const jet& a, const jet& b) { return a.v >= b.v; }
 
   // f(v) + f'(v) d
   friend jet chain(const jet& a, S f, S df) {
     return make(f, [&](std::size_t k) { return df * a.c[k]; });
   }
+  // sin v + d cos v
   friend jet sin(const jet& a) { return chain(a, std::sin(a.v), std::cos(a.v)); }
+  // cos v - d sin v
   friend jet cos(const jet& a) { return chain(a, std::cos(a.v), -std::sin(a.v)); }
+  // tan v + d / cos^2 v
   friend jet tan(const jet& a) {
     const S cos_v = std::cos(a.v);
     return chain(a, std::tan(a.v), S(1) / (cos_v * cos_v));
   }
+  // sqrt v + d / (2 sqrt v)
   friend jet sqrt(const jet& a) {
     const S r = std::sqrt(a.v);
     return chain(a, r, S(1) / (S(2) * r));
   }
+  // exp v + d exp v
   friend jet exp(const jet& a) {
     const S e = std::exp(a.v);
     return chain(a, e, e);
   }
+  // log v + d / v
   friend jet log(const jet& a) { return chain(a, std::log(a.v), S(1) / a.v); }
+  // atan v + d / (1 + v^2)
   friend jet atan(const jet& a) { return chain(a, std::atan(a.v), S(1) / (S(1) + a.v * a.v)); }
+  // atan2(y.v, x.v) + (x.v y.d - y.v x.d) / (x.v^2 + y.v^2)
   friend jet atan2(const jet& y, const jet& x) {
     const S r = S(1) / (x.v * x.v + y.v * y.v);
     return make(std::atan2(y.v, x.v), [&](std::size_t k) { return (x.v * y.c[k] - y.v * x.c[k]) * r; });
   }
+  // |a|: -a for v < 0, else a
   friend jet abs(const jet& a) { return a.v < S(0) ? -a : a; }
+  // a 2^e: every part scaled
   friend jet ldexp(jet a, int e) {
     a.v = std::ldexp(a.v, e);
     for (std::size_t i = 0; i < N; ++i) a.c[i / width][i % width] = std::ldexp(a.part(i), e);
     return a;
   }
+  // a 2^-e, with e as std::frexp sets it for v
   friend jet frexp(const jet& a, int* e) { return ldexp(a, -(std::frexp(a.v, e), *e)); }
+  // v and every d_i finite
   friend bool isfinite(const jet& a) {
     bool f = std::isfinite(a.v);
     for (std::size_t i = 0; i < N; ++i) f = f && std::isfinite(a.part(i));
@@ -146,8 +176,7 @@ struct jet {
   }
 };
 
-// A coupled block B of a structured solve on jets: the inverse X of its values alone
-// (factor_block), then y = X t and dy = X (dt - dB y) (solve_block), one chunk at a time.
+// A coupled block B of a structured solve on jets: X, the inverse of its values alone.
 template <class S, std::size_t D, int N>
 bool factor_block(const Eigen::Matrix<jet<S, D>, N, N>& b, Eigen::Matrix<jet<S, D>, N, N>& inv,
                   jet<S, D> tol) {
@@ -159,6 +188,7 @@ bool factor_block(const Eigen::Matrix<jet<S, D>, N, N>& b, Eigen::Matrix<jet<S, 
     for (Eigen::Index j = 0; j < N; ++j) inv(i, j) = jet<S, D>(x(i, j));
   return true;
 }
+// y = X t and dy = X (dt - dB y) for the block B and X of factor_block, one chunk at a time.
 template <class S, std::size_t D, int N>
 Eigen::Matrix<jet<S, D>, N, 1> solve_block(const Eigen::Matrix<jet<S, D>, N, N>& inv,
                                            const Eigen::Matrix<jet<S, D>, N, N>& b,
@@ -222,14 +252,17 @@ bool solve_positive_definite(const Eigen::Matrix<jet<S, D>, N, N>& m, const Eige
 
 template <class S, std::size_t N>
 struct is_scalar<jet<S, N>> : std::true_type {};
+// S, the real numbers of a jet
 template <class S, std::size_t N>
 struct real_type<jet<S, N>> {
+  // S
   using type = S;
 };
 
 }  // namespace kane
 #pragma GCC diagnostic pop
 
+// the limits of S as jets (zero derivatives)
 template <class S, std::size_t N>
 class std::numeric_limits<kane::jet<S, N>> : public std::numeric_limits<S> {
  public:
@@ -241,6 +274,7 @@ class std::numeric_limits<kane::jet<S, N>> : public std::numeric_limits<S> {
   static kane::jet<S, N> lowest() noexcept { return std::numeric_limits<S>::lowest(); }
 };
 
+// Eigen's traits of S for jets: N + 1 numbers to read and add, 2 N + 1 to multiply
 template <class S, std::size_t N>
 struct Eigen::NumTraits<kane::jet<S, N>> : Eigen::NumTraits<S> {
   using Real = kane::jet<S, N>;

@@ -28,11 +28,13 @@ template <std::size_t Particles, std::size_t RigidBodies, auto... F>
 struct configuration {
   static_assert((ScalarExpr<decltype(F)> && ...),
                 "kane: configuration constraints are scalar expressions f(q, t)");
+  // M, the number of constraints
   static constexpr std::size_t constraints = sizeof...(F);
   static_assert(3 * Particles + 6 * RigidBodies >= constraints,
                 "kane: more holonomic constraints than coordinates (3 per particle, 6 per rigid body)");
   // Generalized coordinates needed: n = 3v - M with 6 per rigid body (eq. 16).
   static constexpr std::size_t n = 3 * Particles + 6 * RigidBodies - constraints;
+  // f_1, ..., f_M
   static constexpr std::tuple<decltype(F)...> equations{F...};
   // d f_k / dt = 0: the velocity constraint of f_k.
   template <std::size_t K>
@@ -50,8 +52,11 @@ struct nonholonomic;
 // Nonholonomic constraints C... = 0, linear in the speeds of Sp, solved for the speeds D...
 template <SpeedSet Sp, std::size_t... D, auto... C>
 struct nonholonomic<Sp, dependent<D...>, C...> {
+  // Sp, the speeds constrained
   using speed_set = Sp;
+  // the number of speeds
   static constexpr std::size_t n = Sp::n;
+  // the number of dependent speeds
   static constexpr std::size_t m = sizeof...(D);
   static_assert(sizeof...(C) == m,
                 "kane: m dependent speeds need m constraint equations; the counts in "
@@ -59,8 +64,11 @@ struct nonholonomic<Sp, dependent<D...>, C...> {
   static_assert(((D >= 1 && D <= n) && ...),
                 "kane: the dependent speeds must be speeds of the system (u_1 .. u_n)");
   static_assert(m < n, "kane: at least one speed must stay independent");
+  // n - m, the degrees of freedom
   static constexpr std::size_t p = n - m;  // degrees of freedom
+  // D..., the r of each dependent u_r
   static constexpr std::array<std::size_t, m> dependents{D...};
+  // the r of each independent u_r, ascending
   static constexpr std::array<std::size_t, p> independents = [] {
     std::array<std::size_t, p> r{};
     std::size_t k = 0;
@@ -71,8 +79,10 @@ struct nonholonomic<Sp, dependent<D...>, C...> {
     }
     return r;
   }();
+  // no dependent speed is named twice
   static constexpr bool distinct_dependents = detail::all_distinct(dependents);
   static_assert(distinct_dependents, "kane: a dependent speed is named twice");
+  // C..., the constraint expressions
   static constexpr std::tuple<decltype(C)...> equations{C...};
 };
 

@@ -5,9 +5,8 @@
 //   kane::angular_velocity_speeds<N, R, L>     u_i = ^N w^R . l_i
 //   kane::speeds<dt(q<1>), kane::free_speed>   u_1 = q_1', u_2 free (a spin rate)
 //
-// Y_rs = du_r/dq_s' and Z_r = u_r at q' = 0 are built at compile time. The
-// evaluator solves the kinematic differential equations at each state:
-// q' = W u + X with W = Y^-1, X = -Y^-1 Z, and q'' = W (u' - Y' q' - Z').
+// Y_rs = du_r/dq_s' and Z_r = u_r at q' = 0 are built at compile time; the evaluator solves the kinematic
+// differential equations at each state: q' = W u + X, W = Y^-1, X = -Y^-1 Z, and q'' = W (u' - Y' q' - Z').
 #pragma once
 
 #include <array>
@@ -39,7 +38,9 @@ concept SpeedSet = std::derived_from<T, detail::speed_set_tag>;
 // u_r = q_r', r = 1..N.
 template <std::size_t N>
 struct qdot_speeds : detail::speed_set_tag {
+  // n = rows = defined = N: N speeds, each defined by a q'
   static constexpr std::size_t n = N, rows = N, defined = N;
+  // true: Y = W = 1, X = 0
   static constexpr bool identity = true;
 };
 
@@ -47,7 +48,9 @@ struct qdot_speeds : detail::speed_set_tag {
 // (for instance unit_norm<B> of Euler parameters, so that nq = nu + 1).
 template <ScalarExpr X>
 struct held {
+  // the expression, linear in q'
   [[no_unique_address]] X x;
+  // the row v = 0
   constexpr explicit held(X v) : x(v) {}
 };
 
@@ -55,8 +58,7 @@ namespace detail {
 struct free_speed_t {};
 }  // namespace detail
 
-// A generalized speed that defines no q': the rate of a frame that spins
-// (kane::spin), listed after the speeds that q' define.
+// A speed that defines no q': the rate of a frame that spins (kane::spin), listed after the speeds q' define.
 inline constexpr detail::free_speed_t free_speed{};
 
 namespace detail {
@@ -87,9 +89,8 @@ constexpr bool kinds_in_order() {
 }
 }  // namespace detail
 
-// u_r = U_r, r = 1..defined: expressions in q, q' and t, linear in q'; then
-// free speeds (kane::free_speed), u_r for r = defined + 1..n; then the held
-// rows (kinematic equations without a speed): rows = defined + held = nq.
+// u_r = U_r, r = 1..defined: expressions in q, q' and t, linear in q'; then free speeds (kane::free_speed),
+// u_r, r = defined + 1..n; then held rows (kinematic equations without a speed): rows = defined + held = nq.
 template <auto... U>
 struct speeds : detail::speed_set_tag {
   static_assert(((ScalarExpr<decltype(U)> || detail::speed_kind<decltype(U)> != 0) && ...),
@@ -97,11 +98,17 @@ struct speeds : detail::speed_set_tag {
   static_assert(detail::kinds_in_order<detail::speed_kind<decltype(U)>...>(),
                 "kane: in speeds<...> the speeds that q' define come first, then kane::free_speed, then held "
                 "rows (kane::held, kane::unit_norm)");
+  // the number of speeds defined by q'
   static constexpr std::size_t defined = (std::size_t(detail::speed_kind<decltype(U)> == 0) + ... + 0);
+  // the number of free speeds
   static constexpr std::size_t free = (std::size_t(detail::speed_kind<decltype(U)> == 1) + ... + 0);
+  // the number of kinematic equations: defined + held = nq
   static constexpr std::size_t rows = sizeof...(U) - free;
+  // the number of speeds: defined + free
   static constexpr std::size_t n = defined + free;
+  // false: Y is built from the definitions
   static constexpr bool identity = false;
+  // the rows in order: U_r of the defined speeds, then the held rows
   static constexpr auto definitions = []<std::size_t... R>(std::index_sequence<R...>) {
     constexpr std::tuple<decltype(U)...> all{U...};
     return std::tuple{detail::row_of(std::get<(R < defined ? R : R + free)>(all))...};
@@ -126,8 +133,7 @@ inline constexpr auto unit_norm = [] {
   }
 }();
 
-// u_1..u_3 = ^A w^B . f_1..3 (the components of ^A w^B in F), then Extra...
-// (for instance kane::dt(kane::q<4>)).
+// u_1..u_3 = ^A w^B . f_1..3 (the components of ^A w^B in F), then Extra... (such as kane::dt(kane::q<4>)).
 template <class A, class B, class F, auto... Extra>
 using angular_velocity_speeds =
     speeds<dot(angular_velocity<A, B>(), e<F, 1>), dot(angular_velocity<A, B>(), e<F, 2>),
@@ -136,13 +142,17 @@ using angular_velocity_speeds =
 // W_SR = dq_S'/du_R and X_S = q_S' at u = 0 of the speed set Sp: numbers the evaluator solves for.
 template <std::size_t S, std::size_t R, class Sp>
 struct kde_weight : detail::scalar_tag {
+  // row = S and column = R of W_SR
   static constexpr std::size_t row = S, column = R;
+  // Sp, the speed set
   using speed_set = Sp;
 };
 // X_S of q' = W u + X for the speed set Sp: a scalar the evaluator computes.
 template <std::size_t S, class Sp>
 struct kde_offset : detail::scalar_tag {
+  // S of X_S
   static constexpr std::size_t row = S;
+  // Sp, the speed set
   using speed_set = Sp;
 };
 
@@ -154,8 +164,7 @@ struct kde_info<kde_weight<S, R, Sp>> : std::true_type {};
 template <std::size_t S, class Sp>
 struct kde_info<kde_offset<S, Sp>> : std::true_type {};
 
-// Replace q', q'', u, u' by zero (the part of an expression linear in them
-// drops out): x at rest.
+// Replace q', q'', u, u' by zero (the part of an expression linear in them drops out): x at rest.
 template <class X>
 constexpr auto at_rest(X x) {
   if constexpr (coordinate_info<X>::value) {

@@ -35,19 +35,24 @@ template <std::size_t... D, auto... F>
 struct holonomic<dependent_coordinates<D...>, F...> {
   static_assert((ScalarExpr<decltype(F)> && ...),
                 "kane: holonomic constraints are scalar expressions f(q, t)");
+  // the number of constraints and of dependent coordinates
   static constexpr std::size_t m = sizeof...(F);
   static_assert(sizeof...(D) == m,
                 "kane: m dependent coordinates need m holonomic constraints; the counts in "
                 "holonomic<dependent_coordinates<...>, f...> differ");
   static_assert(((D >= 1) && ...), "kane: generalized coordinates are numbered from 1 (q1, q2, ...)");
+  // D..., the i of each dependent q_i
   static constexpr std::array<std::size_t, m> dependents{D...};
+  // no dependent coordinate is named twice
   static constexpr bool distinct_dependents = detail::all_distinct(dependents);
   static_assert(distinct_dependents, "kane: a dependent coordinate is named twice");
+  // the largest i of a dependent q_i
   static constexpr std::size_t last_dependent = [] {
     std::size_t r = 0;
     for (std::size_t d : dependents) r = d > r ? d : r;
     return r;
   }();
+  // F..., the constraint expressions
   static constexpr std::tuple<decltype(F)...> equations{F...};
 
   // J_kd = df_k/dq_d over the dependent coordinates, and the structured solve of J dq = f.
@@ -55,12 +60,14 @@ struct holonomic<dependent_coordinates<D...>, F...> {
   static constexpr auto jacobian() {
     return diff(std::get<K>(equations), coordinate<dependents[J]>{});
   }
+  // the pattern of J: zero, one or other entries
   static constexpr detail::pattern<m, m> m_pattern = []<std::size_t... I>(std::index_sequence<I...>) {
     detail::pattern<m, m> out{};
     ((out[I / m][I % m] = detail::entry_of<decltype(jacobian<I / m, I % m>())>()), ...);
     return out;
   }
   (std::make_index_sequence<m * m>{});
+  // the blocks of the structured solve of J dq = f
   static constexpr detail::block_form<m> form = detail::blocks_of(m_pattern);
   static_assert(form.regular,
                 "kane: the holonomic constraints do not determine the dependent coordinates (their Jacobian "

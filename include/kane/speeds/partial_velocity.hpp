@@ -129,6 +129,7 @@ requires(ScalarExpr<X> || VectorExpr<X>) constexpr auto partial_velocity(X x, sp
   static_assert(R >= 1 && R <= Sp::n, "kane: u_R is not a generalized speed of this system (u_1 .. u_n)");
   return detail::partial_u<Sp, R>(x, std::make_index_sequence<Sp::rows>{});
 }
+// v_L for a leaf L that is not a speed: an error
 template <SpeedSet Sp, class X, class Leaf>
 requires(!Speed<Leaf>) constexpr X partial_velocity(X x, Leaf) {
   static_assert(
