@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The performance tables, regenerated on this machine: what the benchmarks need, then all of them.
+# The performance page, regenerated on this machine: what the benchmarks need, then every table.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-apt-get install -y libbenchmark-dev liborocos-kdl-dev && benchmarks/table.sh
+apt-get install -y libbenchmark-dev liborocos-kdl-dev && benchmarks/performance_page.sh
