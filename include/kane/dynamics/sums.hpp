@@ -157,10 +157,16 @@ template <class R, class X>
 requires is_body<X>
 struct mass_sum_frames<R, X> : body_sum_frames<R, X> {
 };
-template <class Cols, class L>
+// The frame of an item's sums: the first of L (the root) while common subexpressions are
+// recalled (their slots hold root components), else the cheapest.
+template <class Cols, class L, bool Recalling>
 struct frame_of_columns;
-template <class Cols, class... F>
-struct frame_of_columns<Cols, list<F...>> : cheapest_frame<Cols, F...> {};
+template <class Cols, class R, class... F>
+struct frame_of_columns<Cols, list<R, F...>, false> : cheapest_frame<Cols, R, F...> {};
+template <class Cols, class R, class... F>
+struct frame_of_columns<Cols, list<R, F...>, true> {
+  using type = R;
+};
 // The sums of M and f over the items of Sys: each item's dot products in the frame where its
 // partial velocities hold the fewest rotations (foreign_units), M_rs and f_r being invariant.
 template <class Sys, bool RestRates, bool Forcing, class Out, class Ev, class Cols, class Ud>
@@ -195,8 +201,8 @@ KANE_ALWAYS_INLINE void add_items(Out& out, const Ev& ev, const Cols& cols, cons
   };
   const auto mass = [&]<class Frames>(Frames, const auto& point_velocity, const auto& point_acceleration,
                                       const auto& m) {
-    using A =
-        typename frame_of_columns<columns_t<Sp, std::remove_cvref_t<decltype(point_velocity)>>, Frames>::type;
+    using A = typename frame_of_columns<columns_t<Sp, std::remove_cvref_t<decltype(point_velocity)>>, Frames,
+                                        is_recalling<Ev>>::type;
     Eigen::Matrix<S, 3, 1> a0;
     const auto v = along(std::type_identity<A>{}, point_velocity, point_acceleration, a0);
     const Eigen::Matrix<S, 3, int(n)> mv = detail::eval_scalar(m, ev) * v;
@@ -215,7 +221,7 @@ KANE_ALWAYS_INLINE void add_items(Out& out, const Ev& ev, const Cols& cols, cons
             using I = typename X::inertia_type;
             mass(typename body_sum_frames<R, X>::type{}, velocity<R, P>(), acceleration<R, P>(), X::mass);
             using A = typename frame_of_columns<columns_t<Sp, decltype(angular_velocity<R, B>())>,
-                                                list<R, typename I::frame>>::type;
+                                                list<R, typename I::frame>, is_recalling<Ev>>::type;
             Eigen::Matrix<S, 3, 1> alpha0;
             const auto w = along(std::type_identity<A>{}, angular_velocity<R, B>(),
                                  angular_acceleration<R, B>(), alpha0);

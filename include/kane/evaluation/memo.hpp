@@ -202,6 +202,11 @@ class recalling {
   mutable std::array<cell<v3<scalar>>, Plan::repeated.vectors> vectors_;
 };
 
+template <class T>
+inline constexpr bool is_recalling = false;
+template <class Ev, class Plan>
+inline constexpr bool is_recalling<recalling<Ev, Plan>> = true;
+
 // f(ev), or f of ev recalling the repeated nodes of X... where the scalar is not a
 // number (numbers: the compiler finds common subexpressions itself).
 template <class... X, class Ev, class F>
