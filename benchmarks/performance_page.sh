@@ -4,15 +4,17 @@
 # measures the compile cost of the units listed below (g++ -O2, one at a time), and rewrites
 # each block between "<!-- generated: NAME -->" and "<!-- end -->" of the page.
 # Needs libbenchmark-dev liborocos-kdl-dev. Usage: benchmarks/performance_page.sh [--no-build]
-# [--no-compile]: without building the presets first; without the compile table (kept as it is).
+# [--no-run] [--no-compile]: without building the presets first; without the run-time tables or
+# without the compile table (a table not measured is kept as it is).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build=1 compile=1
+build=1 run=1 compile=1
 for arg in "$@"; do
   case $arg in
     --no-build) build=0 ;;
+    --no-run) run=0 build=0 ;;
     --no-compile) compile=0 ;;
-    *) echo "usage: $0 [--no-build] [--no-compile]" >&2 && exit 2 ;;
+    *) echo "usage: $0 [--no-build] [--no-run] [--no-compile]" >&2 && exit 2 ;;
   esac
 done
 page=docs/performance.md
@@ -22,6 +24,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
 # --- run time: one CSV line per repetition, "preset,name,iterations,real,cpu,unit,..."
+[ $run = 1 ] || presets=()
 for p in "${presets[@]}"; do
   if [ $build = 1 ]; then
     cmake --preset "$p" >/dev/null
@@ -122,7 +125,8 @@ for f in benchmarks/*_kane.cpp; do
   units+=("$f|benchmark: kane's side of bench_$(basename "$f" _kane.cpp)")
 done
 for n in 6 12 24 48; do units+=("benchmarks/chain_dynamics_kane.cpp -DKANE_CHAIN_N=$n|benchmark: the $n-link chain's forward dynamics"); done
-for f in tests/test_*.cpp tests/warnings.cpp; do units+=("$f|test"); done
+for f in tests/test_*.cpp; do units+=("$f|test"); done
+for scalar in float double; do units+=("tests/warnings.cpp -DKANE_WARNINGS_SCALAR=$scalar|the whole API under strict warnings, $scalar"); done
 {
   echo "| unit | what | CPU s | peak MB |"
   echo "|---|---|---|---|"
@@ -147,8 +151,8 @@ for f in tests/test_*.cpp tests/warnings.cpp; do units+=("$f|test"); done
 } >"$work/table_compile.md"
 fi
 
-# --- the machine, then every generated block of the page
-{
+# --- the machine (when every table is measured), then every generated block of the page
+[ $run = 1 ] && [ $compile = 1 ] && {
   printf 'Measured on %s at commit %s: %s, %s cores, %s, Eigen %s.\n' "$(date -u +%Y-%m-%d)" \
     "$(git rev-parse --short HEAD)" "$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')" "$(nproc)" \
     "$(g++ --version | head -1)" "$(sed -n 's/#define EIGEN_[A-Z]*_VERSION \([0-9]*\)/\1/p' /usr/include/eigen3/Eigen/src/Core/util/Macros.h | paste -sd.)"
