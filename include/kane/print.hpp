@@ -1,4 +1,4 @@
-// Printing, kept apart from the core (the only header that includes <ostream>).
+// Printing, kept apart from the core (the only header that includes ostream).
 //   ^N(1, 2, 3)          components of a vector in N
 //   ^N P^A [[...], ...]  direction cosines from N to A, row by row
 //   L1*q1' a2 + ^N w^B x b1   expressions, in Kane's notation: e_A1 is a1,

@@ -1,10 +1,10 @@
 // Derivatives, built at compile time (seed eq. 6, 7, 12).
 //
 //   dt(s)            total time derivative of a scalar (eq. 7)
-//   diff(s, x)       partial derivative of a scalar by x = q<i>, dt(q<i>), u<i>, t
+//   diff(s, x)       partial derivative of a scalar by x = q_i, dt(q_i), u_i, t
 //   dt<A>(v)         time derivative of a vector in frame A, by the transport
 //                    theorem: the A-derivative of e_Fi is ^A w^F x e_Fi (eq. 12)
-//   diff<A>(v, q<i>) partial derivative of a vector in A by q_i (eq. 6): the
+//   diff<A>(v, q_i)  partial derivative of a vector in A by q_i (eq. 6): the
 //                    A-derivative of e_Fi by q_i is w_i x e_Fi with w_i the
 //                    coefficient of q_i' in ^A w^F
 // A vector has no derivative without a frame: dt(v) does not compile.
@@ -224,7 +224,7 @@ constexpr V dt(V v) {
   return v;
 }
 
-// Partial derivative of a scalar by q<i>, dt(q<i>), u<i> or t.
+// Partial derivative of a scalar by q_i, dt(q_i), u_i or t.
 template <ScalarExpr X, ScalarExpr Leaf>
 requires(detail::coordinate_info<Leaf>::value || detail::speed_info<Leaf>::value ||
          std::is_same_v<Leaf, time_variable>) constexpr auto diff(X x, Leaf) {

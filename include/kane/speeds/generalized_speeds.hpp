@@ -45,7 +45,7 @@ struct qdot_speeds : detail::speed_set_tag {
 };
 
 // A kinematic differential equation that defines no speed: X = 0, linear in q'
-// (for instance unit_norm<B> of Euler parameters, so that nq = nu + 1).
+// (for instance unit_norm of the Euler parameters of B, so that nq = nu + 1).
 template <ScalarExpr X>
 struct held {
   // the expression, linear in q'
