@@ -33,6 +33,15 @@
 #endif
 #endif
 
+// The same for a lambda: [&](auto i) KANE_ALWAYS_INLINE_LAMBDA { ... }.
+#ifndef KANE_ALWAYS_INLINE_LAMBDA
+#if defined(__GNUC__) && defined(__OPTIMIZE__)
+#define KANE_ALWAYS_INLINE_LAMBDA __attribute__((always_inline))
+#else
+#define KANE_ALWAYS_INLINE_LAMBDA
+#endif
+#endif
+
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {

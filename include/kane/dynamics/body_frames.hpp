@@ -149,16 +149,16 @@ struct body_frames<JF, Ev, list<F...>> {
   std::array<vec, nf> offset;                // t_F
 
   KANE_ALWAYS_INLINE explicit body_frames(const Ev& ev)
-      : e{[&] {
+      : e{[&]() KANE_ALWAYS_INLINE_LAMBDA {
           if constexpr (std::is_void_v<typename F::tree_parent>)
             return turn<S, -1>{};
           else
             return make_turn<F>(ev);
         }()...} {
     const vec zero{S(0), S(0), S(0)};
-    [&]<class... P, std::size_t... I>(list<P...>, std::index_sequence<I...>) {
+    [&]<class... P, std::size_t... I>(list<P...>, std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA {
       (
-          [&] {
+          [&]() KANE_ALWAYS_INLINE_LAMBDA {
             constexpr int from = t.from[I], g = t.segment[I];
             if constexpr (from < 0)
               pos[I] = zero;
@@ -171,7 +171,7 @@ struct body_frames<JF, Ev, list<F...>> {
           }(),
           ...);
     }(typename JF::all_points{}, std::make_index_sequence<np>{});
-    static_for<nf>([&](auto f) {
+    static_for<nf>([&](auto f) KANE_ALWAYS_INLINE_LAMBDA {
       constexpr int o = t.origin[f];
       if constexpr (f == 0 || o == t.origin[std::size_t(t.parent[f])])
         offset[f] = zero;

@@ -38,7 +38,9 @@ struct composite_inertia {
          plus_product<entry::one, mp[2]>(h.z, S(1), mc.z)};
     sym3<S> j = i;
     if constexpr (Inertia)
-      for (std::size_t k = 0; k < 6; ++k) j[k] = j[k] + ic[k];
+      static_for<6>([&](auto k) KANE_ALWAYS_INLINE_LAMBDA {
+        j[k] = j[k] + ic[k];
+      });  // unrolled: no loop through memory
     i[0] = plus_product<mp[2], C[2]>(plus_product<mp[1], C[1]>(j[0], mc.y, c.y), mc.z, c.z);
     i[1] = plus_product<mp[0], C[0]>(plus_product<mp[2], C[2]>(j[1], mc.z, c.z), mc.x, c.x);
     i[2] = plus_product<mp[1], C[1]>(plus_product<mp[0], C[0]>(j[2], mc.x, c.x), mc.y, c.y);
@@ -55,7 +57,7 @@ struct composite_inertia {
     const v3<S> h1 = e.template up_along<H>(o.h);
     const sym3<S> i1 = e.up(o.i);
     mass = mass + o.mass;
-    for (std::size_t k = 0; k < 6; ++k) i[k] = i[k] + i1[k];
+    static_for<6>([&](auto k) KANE_ALWAYS_INLINE_LAMBDA { i[k] = i[k] + i1[k]; });  // unrolled, as above
     h = {plus_product<entry::one, h1p[0]>(h.x, S(1), h1.x), plus_product<entry::one, h1p[1]>(h.y, S(1), h1.y),
          plus_product<entry::one, h1p[2]>(h.z, S(1), h1.z)};
     if constexpr (!all_zero(T)) {
@@ -176,7 +178,8 @@ KANE_ALWAYS_INLINE sym3<typename Ev::scalar> body_inertia(const Ev& ev) {
   using I = typename X::inertia_type;
   sym3<S> o;
   if constexpr (std::is_same_v<typename I::frame, typename X::frame>) {
-    static_for<6>([&](auto k) { o[k] = S(eval_scalar(std::get<k>(I::components), ev)); });
+    static_for<6>([&](auto k)
+                      KANE_ALWAYS_INLINE_LAMBDA { o[k] = S(eval_scalar(std::get<k>(I::components), ev)); });
   } else {  // fixed in the body, or the same in both (a wheel): A^T (I in the root) A
     const Eigen::Matrix<S, 3, 3> a = ev.template axes<typename X::frame>();
     const Eigen::Matrix<S, 3, 3> r = a.transpose() * inertia_in_root<I>(ev) * a;

@@ -79,7 +79,7 @@ struct root_screws {
   KANE_ALWAYS_INLINE root_screws(const body_frames<JF, Ev>& bf, const Ev& ev) {
     static constexpr auto& t = JF::table;
     origin[0] = {S(0), S(0), S(0)};
-    static_for<JF::nf - 1>([&](auto i) {
+    static_for<JF::nf - 1>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
       constexpr std::size_t f = i + 1, p = std::size_t(t.parent[f]);
       using F = frame_at<JF, f>;
       if constexpr (all_zero(body_frames<JF, Ev>::offset_pattern(f)))
@@ -127,7 +127,7 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
   std::array<composite_inertia<S>, nf> c;
   using known = known_inertias<JF, Sys, body_frames<JF, Ev>>;
   if constexpr (known::value)  // constants
-    static_for<nf>([&](auto f) {
+    static_for<nf>([&](auto f) KANE_ALWAYS_INLINE_LAMBDA {
       constexpr composite_inertia<double> o = known::own[f];
       c[f] = {S(o.mass),
               {S(o.h.x), S(o.h.y), S(o.h.z)},
@@ -135,9 +135,9 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
     });
   else {
     for (auto& x : c) x.mass = S(0), x.h = {S(0), S(0), S(0)}, x.i = {S(0), S(0), S(0), S(0), S(0), S(0)};
-    [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) {
+    [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA {
       (
-          [&] {
+          [&]() KANE_ALWAYS_INLINE_LAMBDA {
             constexpr int f = t.item_frame[I];
             if constexpr ((is_particle<X> || is_body<X>)&&f > 0) {
               constexpr int p = t.item_point[I];
@@ -155,13 +155,14 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
   }
   if constexpr (!on_one_path(t)) M.setZero();  // entries off the tree's paths
   constexpr bool loop = JF::n > unrolled_columns;
-  [[maybe_unused]] const auto screws = [&] {
+  [[maybe_unused]] const auto screws = [&]() KANE_ALWAYS_INLINE_LAMBDA {
     if constexpr (loop)
       return root_screws<JF, Ev>(bf, ev);
     else
       return 0;
   }();
-  static_for<nf - 1>([&](auto j) {  // leaves first: c[f] is complete, its column, then into its parent
+  static_for<nf - 1>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {  // leaves first: c[f] is complete, its column,
+                                                              // then into its parent
     constexpr std::size_t f = nf - 1 - j;
     constexpr int s = t.speed[f];
     const composite_inertia<S>& x = c[f];

@@ -53,10 +53,7 @@ equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n> recursive_equations(c
                                 ev.status()};
   const body_frames<JF, Ev> bf(ev);
   composite_mass_matrix<JF, Sys>(bf, ev, out.M);
-  if constexpr (Forcing) {
-    joint_forces<true, JF, Sys>(bf, ev, out.f);
-    out.f = -out.f;
-  }
+  if constexpr (Forcing) joint_forces<true, JF, Sys, true>(bf, ev, out.f);
   if (out.status == solve_status::ok &&
       !(detail::all_finite_matrix(out.M) && detail::all_finite_matrix(out.f)))
     out.status = solve_status::not_finite;

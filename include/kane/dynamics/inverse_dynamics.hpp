@@ -31,8 +31,8 @@ namespace detail {
 template <class S, std::size_t N>
 using speed_values = std::pair<Eigen::Matrix<S, int(N), 1>, solve_status>;
 
-// tau at the state's u' (Rest false) or at u' = 0 (Rest true).
-template <class Sys, bool Rest, class Ev>
+// tau at the state's u' (Rest false) or at u' = 0 (Rest true); -tau with Negated.
+template <class Sys, bool Rest, bool Negated, class Ev>
 speed_values<typename Ev::scalar, speeds_of<Ev>::n> inverse_at(const Ev& ev) {
   using S = typename Ev::scalar;
   constexpr std::size_t n = speeds_of<Ev>::n;
@@ -41,10 +41,12 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> inverse_at(const Ev& ev) {
     static_assert(system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
     using JF = joint_form_of<Sys, Ev>;
     const body_frames<JF, Ev> bf(ev);
-    joint_forces<Rest, JF, Sys>(bf, ev, tau);
+    joint_forces<Rest, JF, Sys, Negated>(bf, ev, tau);
   } else {
     const auto e = mass_matrix_and_forcing_at<Sys, false>(ev);
-    if constexpr (Rest)
+    if constexpr (Rest && Negated)
+      tau = e.f;
+    else if constexpr (Rest)
       tau = -e.f;
     else
       tau = e.M * speed_rates(ev) - e.f;
@@ -85,18 +87,14 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> forward_at(const Ev& ev) {
 template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, detail::speeds_of<Ev>::n>
 inverse_dynamics(const Ev& ev) {
-  return detail::flat<typename Ev::scalar>([&] { return detail::inverse_at<Sys, false>(ev); });
+  return detail::flat<typename Ev::scalar>([&] { return detail::inverse_at<Sys, false, false>(ev); });
 }
 
 // f alone (tau at u' = 0 is -f), with its status
 template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, detail::speeds_of<Ev>::n>
 forcing(const Ev& ev) {
-  return detail::flat<typename Ev::scalar>([&] {
-    auto out = detail::inverse_at<Sys, true>(ev);
-    out.first = -out.first;
-    return out;
-  });
+  return detail::flat<typename Ev::scalar>([&] { return detail::inverse_at<Sys, true, true>(ev); });
 }
 
 // u' = M^-1 f at the evaluator's state, with its status

@@ -64,9 +64,9 @@ template <class Sys, class R, class Ev>
 KANE_ALWAYS_INLINE v3<typename Ev::scalar> base_acceleration(const Ev& ev) {
   using S = typename Ev::scalar;
   v3<S> a{S(0), S(0), S(0)};
-  [&]<class... X>(list<X...>) {
+  [&]<class... X>(list<X...>) KANE_ALWAYS_INLINE_LAMBDA {
     (
-        [&] {
+        [&]() KANE_ALWAYS_INLINE_LAMBDA {
           if constexpr (is_gravity<X>) a = a - eval_vector<false>(X::vector, ev);
         }(),
         ...);
@@ -74,8 +74,8 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> base_acceleration(const Ev& ev) {
   return a;
 }
 
-// tau = M u' - f of the joint-form system Sys (u' of the state, or 0 with Rest).
-template <bool Rest, class JF, class Sys, class Ev, class Out>
+// tau = M u' - f of the joint-form system Sys (u' of the state, or 0 with Rest); -tau with Negated.
+template <bool Rest, class JF, class Sys, bool Negated = false, class Ev, class Out>
 KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev, Out& tau) {
   using S = typename Ev::scalar;
   using vec = v3<S>;
@@ -88,7 +88,7 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
   a[0] = base_acceleration<Sys, frame_at<JF, 0>>(ev);
   using BF = body_frames<JF, Ev>;
   using known = known_inertias<JF, Sys, BF>;
-  static_for<nf - 1>([&](auto i) {
+  static_for<nf - 1>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t g = i + 1, p = std::size_t(t.parent[g]);
     constexpr int r = t.speed[g];
     constexpr auto O = BF::offset_pattern(g);
@@ -125,9 +125,9 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
     }
     n[g] = zero, f[g] = zero;
   });
-  [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) {
+  [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA {
     (
-        [&] {
+        [&]() KANE_ALWAYS_INLINE_LAMBDA {
           constexpr int g = t.item_frame[I];
           if constexpr (!is_gravity<X> && g > 0) {
             using F = frame_at<JF, std::size_t(g)>;
@@ -161,29 +161,33 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
         }(),
         ...);
   }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
-  if constexpr (known::value)         // (m, h, J) of each frame's items about its origin, constants:
-    static_for<nf - 1>([&](auto i) {  // f = m a + alpha x h + w x (w x h), n = J alpha + w x J w + h x a
-      constexpr std::size_t g = i + 1;
-      constexpr composite_inertia<double> o = known::own[g];
-      if constexpr (o.mass != 0 || o.h.x != 0 || o.h.y != 0 || o.h.z != 0 || o.i != std::array<double, 6>{}) {
-        const vec h{S(o.h.x), S(o.h.y), S(o.h.z)};
-        const sym3<S> jo{S(o.i[0]), S(o.i[1]), S(o.i[2]), S(o.i[3]), S(o.i[4]), S(o.i[5])};
-        constexpr std::array<entry, 3> H = {
-            entry_of_number(o.h.x) == entry::zero ? entry::zero : entry::other,
-            entry_of_number(o.h.y) == entry::zero ? entry::zero : entry::other,
-            entry_of_number(o.h.z) == entry::zero ? entry::zero : entry::other};
-        const vec& wg = w[g];
-        const vec& ag = alpha[g];
-        f[g] = f[g] + S(o.mass) * a[g] + cross_along<H>(ag, h) + cross3(wg, cross_along<H>(wg, h));
-        n[g] = n[g] + sym_times(jo, ag) + cross3(wg, sym_times(jo, wg)) + cross_from<H>(h, a[g]);
-      }
-    });
-  static_for<nf - 1>([&](auto j) {  // leaves first
+  if constexpr (known::value)  // (m, h, J) of each frame's items about its origin, constants:
+    static_for<nf - 1>(
+        [&](auto i)
+            KANE_ALWAYS_INLINE_LAMBDA {  // f = m a + alpha x h + w x (w x h), n = J alpha + w x J w + h x a
+              constexpr std::size_t g = i + 1;
+              constexpr composite_inertia<double> o = known::own[g];
+              if constexpr (o.mass != 0 || o.h.x != 0 || o.h.y != 0 || o.h.z != 0 ||
+                            o.i != std::array<double, 6>{}) {
+                const vec h{S(o.h.x), S(o.h.y), S(o.h.z)};
+                const sym3<S> jo{S(o.i[0]), S(o.i[1]), S(o.i[2]), S(o.i[3]), S(o.i[4]), S(o.i[5])};
+                constexpr std::array<entry, 3> H = {
+                    entry_of_number(o.h.x) == entry::zero ? entry::zero : entry::other,
+                    entry_of_number(o.h.y) == entry::zero ? entry::zero : entry::other,
+                    entry_of_number(o.h.z) == entry::zero ? entry::zero : entry::other};
+                const vec& wg = w[g];
+                const vec& ag = alpha[g];
+                f[g] = f[g] + S(o.mass) * a[g] + cross_along<H>(ag, h) + cross3(wg, cross_along<H>(wg, h));
+                n[g] = n[g] + sym_times(jo, ag) + cross3(wg, sym_times(jo, wg)) + cross_from<H>(h, a[g]);
+              }
+            });
+  static_for<nf - 1>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {  // leaves first
     constexpr std::size_t g = nf - 1 - j, p = std::size_t(t.parent[g]);
     constexpr int r = t.speed[g];
     if constexpr (r >= 0) {
       using F = frame_at<JF, g>;
-      tau(Eigen::Index(r)) = dot_along<joint_axis_pattern<F>()>(n[g], joint_axis_in_frame<F, S>());
+      const S x = dot_along<joint_axis_pattern<F>()>(n[g], joint_axis_in_frame<F, S>());
+      tau(Eigen::Index(r)) = Negated ? -x : x;
     }
     if constexpr (p > 0) {
       constexpr auto O = BF::offset_pattern(g);
