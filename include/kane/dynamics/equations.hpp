@@ -32,6 +32,17 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
+// M alone, M_rs = sum m v_r . v_s + w_r . I . w_s: the partial velocities need the pose only,
+// so an evaluator of any level will do (level::pose computes least). status: the evaluator's,
+// or not_finite.
+template <class S, std::size_t N>
+struct mass_matrix_only {
+  // the mass matrix, N x N
+  Eigen::Matrix<S, int(N), int(N)> M;
+  // the evaluator's, or not_finite
+  solve_status status;
+};
+
 namespace detail {
 template <class Sys, class Ev>
 using joint_form_of = joint_form<Sys, typename Ev::root, speeds_of<Ev>>;
@@ -42,21 +53,29 @@ inline constexpr bool recursive_form = [] {
   else
     return false;
 }();
-// M by composite bodies and f by inward sums (crba.hpp, rnea.hpp); without Forcing, f = 0.
-template <class Sys, bool Forcing, class Ev>
-equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n> recursive_equations(const Ev& ev) {
-  using S = typename Ev::scalar;
+// The diagonal of M finite: so is all of M, |M_rs| <= (M_rr M_ss)^1/2 (M positive semidefinite).
+template <class M>
+bool finite_diagonal(const M& m) {
+  using S = typename M::Scalar;
+  return [&]<int... I>(std::integer_sequence<int, I...>) { return ((m(I, I) - m(I, I)) + ...) == S(0); }
+  (std::make_integer_sequence<int, M::RowsAtCompileTime>{});
+}
+// M by composite bodies and f by inward sums (crba.hpp, rnea.hpp), written in place into Out:
+// equations_of_motion, or mass_matrix_only (M alone).
+template <class Sys, class Out, class Ev>
+Out recursive_equations(const Ev& ev) {
   using JF = joint_form_of<Sys, Ev>;
-  constexpr std::size_t n = speeds_of<Ev>::n;
   static_assert(detail::system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
-  equations_of_motion<S, n> out{Eigen::Matrix<S, int(n), int(n)>(), Eigen::Matrix<S, int(n), 1>::Zero(),
-                                ev.status()};
+  Out out;
+  out.status = ev.status();
   const body_frames<JF, Ev> bf(ev);
   composite_mass_matrix<JF, Sys>(bf, ev, out.M);
-  if constexpr (Forcing) joint_forces<true, JF, Sys, true>(bf, ev, out.f);
-  if (out.status == solve_status::ok &&
-      !(detail::all_finite_matrix(out.M) && detail::all_finite_matrix(out.f)))
-    out.status = solve_status::not_finite;
+  bool finite = finite_diagonal(out.M);
+  if constexpr (requires { out.f; }) {
+    joint_forces<true, JF, Sys, true>(bf, ev, out.f);
+    finite = finite && all_finite_matrix(out.f);
+  }
+  if (out.status == solve_status::ok && !finite) out.status = solve_status::not_finite;
   return out;
 }
 template <class Sys, bool RestRates, class Ev>
@@ -64,7 +83,7 @@ equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n> mass_matrix_and_forci
   if constexpr (!admitted<Sys, speeds_of<Ev>>())
     return {};
   else if constexpr (recursive_form<Sys, Ev>)
-    return recursive_equations<Sys, true>(ev);
+    return recursive_equations<Sys, equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n>>(ev);
   else
     return equations_along<Sys, RestRates, true>(ev, all_speeds<speeds_of<Ev>::n>{});
 }
@@ -78,31 +97,22 @@ mass_matrix_and_forcing(const Ev& ev) {
       [&] { return detail::mass_matrix_and_forcing_at<Sys, false>(ev); });
 }
 
-// M alone, M_rs = sum m v_r . v_s + w_r . I . w_s: the partial velocities need the pose only,
-// so an evaluator of any level will do (level::pose computes least). status: the evaluator's,
-// or not_finite.
-template <class S, std::size_t N>
-struct mass_matrix_only {
-  // the mass matrix, N x N
-  Eigen::Matrix<S, int(N), int(N)> M;
-  // the evaluator's, or not_finite
-  solve_status status;
-};
 // M alone of the system Sys at the evaluator's state (any level)
 template <class Sys, class Ev>
 requires detail::is_evaluator<Ev>::value mass_matrix_only<typename Ev::scalar, detail::speeds_of<Ev>::n>
 mass_matrix(const Ev& ev) {
-  constexpr std::size_t n = detail::speeds_of<Ev>::n;
-  return detail::flat<typename Ev::scalar>([&] {
-    const auto e = [&]() -> equations_of_motion<typename Ev::scalar, n> {
-      if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
-        return {};
-      else if constexpr (detail::recursive_form<Sys, Ev>)
-        return detail::recursive_equations<Sys, false>(ev);
-      else
-        return detail::equations_along<Sys, true, false>(ev, detail::all_speeds<n>{});
-    }();
-    return mass_matrix_only<typename Ev::scalar, n>{e.M, e.status};
+  using S = typename Ev::scalar;
+  using out = mass_matrix_only<S, detail::speeds_of<Ev>::n>;
+  return detail::flat<S>([&]() -> out {
+    if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
+      return {};
+    else if constexpr (detail::recursive_form<Sys, Ev>)
+      return detail::recursive_equations<Sys, out>(ev);
+    else {
+      const auto e =
+          detail::equations_along<Sys, true, false>(ev, detail::all_speeds<detail::speeds_of<Ev>::n>{});
+      return {e.M, e.status};
+    }
   });
 }
 

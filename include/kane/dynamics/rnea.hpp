@@ -123,7 +123,22 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
         if constexpr (!Rest) alpha[g] = add_along<K, false>(alpha[g], joint_rate<2>(ev, std::size_t(r)), k);
       }
     }
-    n[g] = zero, f[g] = zero;
+    // the frame's own items of known (m, h, J) about its origin, constants: f = m a + alpha x h +
+    // w x (w x h), n = J alpha + w x J w + h x a; the others below
+    constexpr composite_inertia<double> m = known::own[g];
+    if constexpr (known::value &&
+                  (m.mass != 0 || m.h.x != 0 || m.h.y != 0 || m.h.z != 0 || m.i != std::array<double, 6>{})) {
+      const vec h{S(m.h.x), S(m.h.y), S(m.h.z)};
+      const sym3<S> jo{S(m.i[0]), S(m.i[1]), S(m.i[2]), S(m.i[3]), S(m.i[4]), S(m.i[5])};
+      constexpr std::array<entry, 3> H = {entry_of_number(m.h.x) == entry::zero ? entry::zero : entry::other,
+                                          entry_of_number(m.h.y) == entry::zero ? entry::zero : entry::other,
+                                          entry_of_number(m.h.z) == entry::zero ? entry::zero : entry::other};
+      const vec& wg = w[g];
+      const vec& ag = alpha[g];
+      f[g] = S(m.mass) * a[g] + cross_along<H>(ag, h) + cross3(wg, cross_along<H>(wg, h));
+      n[g] = sym_times(jo, ag) + cross3(wg, sym_times(jo, wg)) + cross_from<H>(h, a[g]);
+    } else
+      n[g] = zero, f[g] = zero;
   });
   [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA {
     (
@@ -137,7 +152,7 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
             vec& fg = f[std::size_t(g)];
             vec& ng = n[std::size_t(g)];
             if constexpr ((is_particle<X> || is_body<X>)&&known::value) {
-              // every frame's items at once, below
+              // in the outward pass, above
             } else if constexpr (is_particle<X> || is_body<X>) {
               const vec& wg = w[std::size_t(g)];
               const vec& ag = alpha[std::size_t(g)];
@@ -161,26 +176,6 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
         }(),
         ...);
   }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
-  if constexpr (known::value)  // (m, h, J) of each frame's items about its origin, constants:
-    static_for<nf - 1>(
-        [&](auto i)
-            KANE_ALWAYS_INLINE_LAMBDA {  // f = m a + alpha x h + w x (w x h), n = J alpha + w x J w + h x a
-              constexpr std::size_t g = i + 1;
-              constexpr composite_inertia<double> o = known::own[g];
-              if constexpr (o.mass != 0 || o.h.x != 0 || o.h.y != 0 || o.h.z != 0 ||
-                            o.i != std::array<double, 6>{}) {
-                const vec h{S(o.h.x), S(o.h.y), S(o.h.z)};
-                const sym3<S> jo{S(o.i[0]), S(o.i[1]), S(o.i[2]), S(o.i[3]), S(o.i[4]), S(o.i[5])};
-                constexpr std::array<entry, 3> H = {
-                    entry_of_number(o.h.x) == entry::zero ? entry::zero : entry::other,
-                    entry_of_number(o.h.y) == entry::zero ? entry::zero : entry::other,
-                    entry_of_number(o.h.z) == entry::zero ? entry::zero : entry::other};
-                const vec& wg = w[g];
-                const vec& ag = alpha[g];
-                f[g] = f[g] + S(o.mass) * a[g] + cross_along<H>(ag, h) + cross3(wg, cross_along<H>(wg, h));
-                n[g] = n[g] + sym_times(jo, ag) + cross3(wg, sym_times(jo, wg)) + cross_from<H>(h, a[g]);
-              }
-            });
   static_for<nf - 1>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {  // leaves first
     constexpr std::size_t g = nf - 1 - j, p = std::size_t(t.parent[g]);
     constexpr int r = t.speed[g];
