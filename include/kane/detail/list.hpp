@@ -6,8 +6,6 @@
 #include <type_traits>
 #include <utility>
 
-#include "kane/detail/inline.hpp"
-
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -17,8 +15,8 @@ using index_c = std::integral_constant<std::size_t, I>;
 
 // f(index_c<0>{}), ..., f(index_c<N - 1>{})
 template <std::size_t N, class F>
-KANE_ALWAYS_INLINE constexpr void static_for(F&& f) {
-  [&]<std::size_t... I>(std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA { (f(index_c<I>{}), ...); }
+constexpr void static_for(F&& f) {
+  [&]<std::size_t... I>(std::index_sequence<I...>) { (f(index_c<I>{}), ...); }
   (std::make_index_sequence<N>{});
 }
 
