@@ -16,6 +16,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstring>
+#include <iterator>
 #include <limits>
 #include <tuple>
 #include <type_traits>
@@ -54,6 +56,25 @@ constexpr bool sizes_checked() {
 }
 }  // namespace detail
 
+namespace detail {
+// to[i] = x[from + i], i < N: for contiguous doubles in pairs of 16 bytes, whose later wide reads
+// (the evaluator's copies) find them whole in the store buffer; narrow stores would stall them.
+template <std::size_t N, class S, class X>
+KANE_ALWAYS_INLINE void copy_wide(S* to, const X& x, std::size_t from) {
+  if constexpr (std::is_same_v<S, double> && requires { std::data(x); }) {
+    using pair = double __attribute__((vector_size(16)));
+    const double* in = std::data(x) + from;
+    for (std::size_t i = 0; i + 1 < N; i += 2) {
+      pair v;
+      std::memcpy(&v, in + i, sizeof v);
+      std::memcpy(to + i, &v, sizeof v);
+    }
+    if constexpr (N % 2 == 1) to[N - 1] = in[N - 1];
+  } else
+    for (std::size_t i = 0; i < N; ++i) to[i] = x[from + i];
+}
+}  // namespace detail
+
 // x' = (q', u') of the system Sys for any integrator: f(x, dxdt, t).
 template <class Sys, class Ev>
 class motion {
@@ -86,13 +107,15 @@ class motion {
  private:
   template <class X, class DX>
   void step(const X& x, DX& dxdt, scalar time) {
-    for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
-    for (std::size_t i = 0; i < nu; ++i) {
+    auto& u = [&]() -> auto& {  // u = q' without a speed set: what such an evaluator reads
       if constexpr (std::is_void_v<typename Ev::speed_set>)
-        s_.qd[i] = x[nq + i];  // u = q': what an evaluator without a speed set reads
+        return s_.qd;
       else
-        s_.u[i] = x[nq + i];
+        return s_.u;
     }
+    ();
+    detail::copy_wide<nq>(s_.q.data(), x, 0);
+    detail::copy_wide<nu>(u.data(), x, nq);
     s_.t = time;
     if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
       return;
