@@ -96,7 +96,7 @@ KANE_ALWAYS_INLINE S dot_along(const v3<S>& x, const v3<S>& k) {
     return S(0);
   else {
     S out = times<K[first]>(get3<first>(x), get3<first>(k));
-    static_for<3>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {
+    static_for<3>([&](auto j) {
       if constexpr (j > first) out = plus_product<entry::other, K[j]>(out, get3<j>(x), get3<j>(k));
     });
     return out;
@@ -163,7 +163,7 @@ KANE_ALWAYS_INLINE void turn_columns(S* out, const S* in, const S& c, const S& s
     store3(out + 3 * a, c * ea + s * eb);
     store3(out + 3 * b, c * eb - s * ea);
   } else
-    static_for<3>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
+    static_for<3>([&](auto i) {
       constexpr entry x = P[3 * a + i], y = P[3 * b + i];
       constexpr entry z = P[3 * p + i];
       out[3 * p + i] =

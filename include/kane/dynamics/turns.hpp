@@ -107,7 +107,7 @@ struct turn<S, -1> {
   }
   KANE_ALWAYS_INLINE sym3<S> up(const sym3<S>& i) const {
     sym3<S> o;
-    static_for<6>([&](auto k) KANE_ALWAYS_INLINE_LAMBDA {
+    static_for<6>([&](auto k) {
       constexpr std::size_t r = k < 3    ? k
                                 : k == 3 ? 0
                                 : k == 4 ? 1
@@ -117,7 +117,7 @@ struct turn<S, -1> {
                                 : k == 4 ? 2
                                          : 0;
       S x = S(0);
-      static_for<9>([&](auto jl) KANE_ALWAYS_INLINE_LAMBDA {
+      static_for<9>([&](auto jl) {
         constexpr std::size_t j = jl / 3, l = jl % 3;
         x = x + e(Eigen::Index(r), Eigen::Index(j)) * i[sym_at[j][l]] * e(Eigen::Index(q), Eigen::Index(l));
       });
