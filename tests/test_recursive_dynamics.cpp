@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <utility>
 
@@ -211,6 +212,38 @@ TEST_CASE("joint torques as inputs per call: inverse dynamics, then the torques 
     rhs(x, dx, 0.0);
     REQUIRE(rhs.status() == kane::solve_status::ok);
     for (std::size_t i = 0; i < 6; ++i) CHECK(std::abs(dx[6 + i] - s.ud[i]) < 1e-10);
+  }
+}
+
+TEST_CASE("kane::motion reads x from a std::array, an Eigen vector and a strided Eigen map alike",
+          "[recursive]") {
+  std::mt19937 rng(23);
+  const auto s = random_state<arm::state>(rng);
+  kane::motion<arm::system, arm::evaluator> rhs(s);
+  std::array<double, 12> x, dx;
+  for (std::size_t i = 0; i < 6; ++i) x[i] = s.q[i], x[6 + i] = s.u[i];
+  rhs(x, dx, 0.0);
+  REQUIRE(rhs.status() == kane::solve_status::ok);
+  arm::evaluator ev;
+  ev.update(s);
+  const auto ud = kane::forward_dynamics<arm::system>(ev).first;
+  for (std::size_t i = 0; i < 6; ++i) {
+    CHECK(dx[i] == s.u[i]);
+    CHECK(std::abs(dx[6 + i] - ud(Eigen::Index(i))) < 1e-12);
+  }
+  Eigen::Matrix<double, 12, 1> xe, dxe;
+  std::array<double, 24> every_other{};  // x in the even entries, NaN between
+  for (std::size_t i = 0; i < 12; ++i)
+    xe(Eigen::Index(i)) = x[i], every_other[2 * i] = x[i],
+    every_other[2 * i + 1] = std::numeric_limits<double>::quiet_NaN();
+  const Eigen::Map<const Eigen::Matrix<double, 12, 1>, 0, Eigen::InnerStride<2>> strided(every_other.data());
+  std::array<double, 12> dxs;
+  rhs(xe, dxe, 0.0);
+  rhs(strided, dxs, 0.0);
+  REQUIRE(rhs.status() == kane::solve_status::ok);
+  for (std::size_t i = 0; i < 12; ++i) {
+    CHECK(dxe(Eigen::Index(i)) == dx[i]);
+    CHECK(dxs[i] == dx[i]);
   }
 }
 

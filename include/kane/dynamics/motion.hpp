@@ -57,13 +57,25 @@ constexpr bool sizes_checked() {
 }  // namespace detail
 
 namespace detail {
+// x's numbers one after the other in memory: a C array, a std::array, an Eigen vector or map of unit
+// inner stride
+template <class X>
+constexpr bool contiguous() {
+  if constexpr (std::is_array_v<X> || requires { std::tuple_size<X>::value; }) return requires(const X& x) {
+      std::data(x);
+    };
+  else if constexpr (requires { X::InnerStrideAtCompileTime; })
+    return X::InnerStrideAtCompileTime == 1 && requires(const X& x) { x.data(); };
+  else
+    return false;
+}
 // to[i] = x[from + i], i < N: for contiguous doubles in pairs of 16 bytes, whose later wide reads
 // (the evaluator's copies) find them whole in the store buffer; narrow stores would stall them.
 template <std::size_t N, class S, class X>
 KANE_ALWAYS_INLINE void copy_wide(S* to, const X& x, std::size_t from) {
-  if constexpr (std::is_same_v<S, double> && requires { std::data(x); }) {
+  if constexpr (std::is_same_v<S, double> && contiguous<X>()) {
     using pair = double __attribute__((vector_size(16)));
-    const double* in = std::data(x) + from;
+    const double* in = &x[0] + from;
     for (std::size_t i = 0; i + 1 < N; i += 2) {
       pair v;
       std::memcpy(&v, in + i, sizeof v);
