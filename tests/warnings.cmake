@@ -1,4 +1,4 @@
-# Check tests/warnings.cpp with another compiler (clang++) under the strict warnings: -fsyntax-only
+# Check tests/warnings.cpp with a compiler (CXX) under the strict warnings (FLAGS): -fsyntax-only
 # instantiates every template the explicit instantiations reach, without generating code.
 separate_arguments(flags UNIX_COMMAND "${FLAGS}")
 execute_process(COMMAND ${CXX} -std=c++20 ${flags} -fsyntax-only -I${KANE_INCLUDE} -isystem ${EIGEN_INCLUDE}

@@ -1,8 +1,8 @@
-// The whole public API instantiated in float and double, compiled with
+// The whole public API instantiated in float and double, checked with -fsyntax-only under
 //   -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion -Wold-style-cast -Werror
-// by g++ (target kane_warnings) and by clang++ when found (test warnings.clang).
+// by the suite's compiler and by clang++ when found (tests warnings.<compiler>.<scalar>).
 // Nothing runs: the explicit instantiations at the end instantiate every body (one scalar per
-// unit in the suite's build).
+// test).
 #include <array>
 #include <cstddef>
 #include <sstream>
