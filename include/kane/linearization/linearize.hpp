@@ -250,25 +250,41 @@ detail::equations_of<NH, Ev, H, In> linearize_equations(const typename Ev::state
   using J = jet<S, nj + In::n>;
   solve_status status;
   auto [js, x] = detail::constrained_point<Sys, NH, Ev, H, In>(s, status);
-  constrained_motion<Sys, NH, typename detail::rebind_evaluator<Ev, J>::type> rhs(js);
-  std::array<J, nq + p> dx;
-  rhs(x, dx, js.t);  // the dependent speeds; the point's u'
-  const auto& ev = rhs.evaluator();
-  const auto eq = reduced_mass_matrix_and_forcing<Sys, NH>(ev, solve_constraints<NH>(ev)).reduced;
+  // the state at x (u_dep = A u_ind + B, u' = 0), then M~ and f~ on jets, once
+  for (std::size_t k = 0; k < p; ++k) js.u[NH::independents[k] - 1] = x[nq + k];
+  js.ud = {};
+  typename detail::rebind_evaluator<Ev, J>::type ev;
+  ev.update_pose(js);
+  const auto sol = solve_constraints<NH>(ev);
+  for (std::size_t j = 0; j < NH::m; ++j) {
+    J u = sol.B(Eigen::Index(j));
+    for (std::size_t k = 0; k < p; ++k) u += sol.A(Eigen::Index(j), Eigen::Index(k)) * x[nq + k];
+    js.u[NH::dependents[j] - 1] = u;
+  }
+  ev.update_speeds(js);
+  const auto eq = detail::reduced_mass_matrix_and_forcing_at<Sys, NH, true>(ev, sol).reduced;
+  // u_ind' at s: M~ u' = f~ on the numbers
+  equations_of_motion<S, p> at{{}, {}, eq.status};
+  for (std::size_t r = 0; r < p; ++r) {
+    at.f(Eigen::Index(r)) = eq.f(Eigen::Index(r)).v;
+    for (std::size_t c = 0; c < p; ++c)
+      at.M(Eigen::Index(r), Eigen::Index(c)) = eq.M(Eigen::Index(r), Eigen::Index(c)).v;
+  }
+  const auto [ud, solved] = speed_derivatives(at);
   detail::equations_of<NH, Ev, H, In> out;
   for (std::size_t r = 0; r < p; ++r) {
     J res = -eq.f(Eigen::Index(r));
     for (std::size_t c = 0; c < p; ++c) {
       const J& m = eq.M(Eigen::Index(r), Eigen::Index(c));
       out.M(Eigen::Index(r), Eigen::Index(c)) = m.v;
-      res += m * J(dx[nq + c].v);
+      res += m * J(ud(Eigen::Index(c)));
     }
     for (std::size_t j = 0; j < qi.size(); ++j)
       out.K(Eigen::Index(r), Eigen::Index(j)) = qs.slot[j] == detail::no_slot ? S(0) : res.part(qs.slot[j]);
     for (std::size_t c = 0; c < p; ++c) out.C(Eigen::Index(r), Eigen::Index(c)) = res.part(qs.n + c);
     for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(r), Eigen::Index(k)) = -res.part(nj + k);
   }
-  out.status = status != solve_status::ok ? status : rhs.status();
+  out.status = status != solve_status::ok ? status : solved;
   return out;
 }
 
