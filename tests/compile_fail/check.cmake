@@ -1,5 +1,5 @@
-# Build TARGET in BUILD_DIR, or compile SOURCE with CXX and FLAGS; pass if the
-# compile fails, its first error line matches every regular expression of REGEX
+# Build TARGET in BUILD_DIR, or compile SOURCE with CXX and FLAGS; with ACCEPT, pass if it
+# compiles; else pass if the compile fails, its first error line matches every regular expression of REGEX
 # (separated by " && ") and the whole diagnostic is at most MAX_BYTES (default 10 KB).
 # Only the first error line counts: later lines quote the source, which would match
 # anything it names.
@@ -16,11 +16,17 @@ else()
                   OUTPUT_VARIABLE out ERROR_VARIABLE out)
   set(what ${TARGET})
 endif()
-if(result EQUAL 0)
-  message(FATAL_ERROR "${what} compiled, but it must not")
-endif()
 if(out MATCHES "invalid-pch|precompiled header .* (was not|cannot be) used")
   message(FATAL_ERROR "${what}: the precompiled header was not used\n${out}")
+endif()
+if(ACCEPT)  # the accepted twin: it must compile
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "${what} did not compile, but it must\n${out}")
+  endif()
+  return()
+endif()
+if(result EQUAL 0)
+  message(FATAL_ERROR "${what} compiled, but it must not")
 endif()
 string(LENGTH "${out}" bytes)
 if(bytes GREATER MAX_BYTES)
