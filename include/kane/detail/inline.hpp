@@ -25,6 +25,12 @@
 
 // A building block that must disappear into its caller even where that
 // caller is itself inlined (flatten applies only to a function's own body).
+// Only for leaves and for code whose callees are always-inline too: g++ orders
+// early inlining without the calls an always-inline function makes to other
+// functions, so such a callee may still lack its summary when a flattened entry
+// point reaches it, and be cloned by IPA-SRA before the late flattening, which
+// cannot inline a clone: it stays a call. Functions that take callbacks
+// (with_common_subexpressions, Kane's sums per item) are plain inline.
 #ifndef KANE_ALWAYS_INLINE
 #if defined(__GNUC__) && defined(__OPTIMIZE__)
 #define KANE_ALWAYS_INLINE [[gnu::always_inline]] inline

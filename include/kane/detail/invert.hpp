@@ -96,8 +96,8 @@ Eigen::Matrix<S, N, 1> solve_block(const Eigen::Matrix<S, N, N>& inv, const Eige
 // m = L D L^T with every index known at compile time (no loop, no square root): what the
 // optimizer knows of m (constants, zeros) it carries through. a_ij = L_ij d_j.
 template <class S, int N>
-KANE_ALWAYS_INLINE bool solve_unrolled(const Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<S, N, 1>& f,
-                                       Eigen::Matrix<S, N, 1>& x) {
+inline bool solve_unrolled(const Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<S, N, 1>& f,
+                           Eigen::Matrix<S, N, 1>& x) {
   constexpr std::size_t n = std::size_t(N);
   std::array<S, n * n> a, l;
   std::array<S, n> inv, y;

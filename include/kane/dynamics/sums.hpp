@@ -170,7 +170,7 @@ struct frame_of_columns<Cols, list<R, F...>, true> {
 // The sums of M and f over the items of Sys: each item's dot products in the frame where its
 // partial velocities hold the fewest rotations (foreign_units), M_rs and f_r being invariant.
 template <class Sys, bool RestRates, bool Forcing, class Out, class Ev, class Cols, class Ud>
-KANE_ALWAYS_INLINE void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
+inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using Sp = detail::speeds_of<Ev>;

@@ -210,7 +210,7 @@ inline constexpr bool is_recalling<recalling<Ev, Plan>> = true;
 // f(ev), or f of ev recalling the repeated nodes of X... where the scalar is not a
 // number (numbers: the compiler finds common subexpressions itself).
 template <class... X, class Ev, class F>
-KANE_ALWAYS_INLINE decltype(auto) with_common_subexpressions(const Ev& ev, F&& f) {
+inline decltype(auto) with_common_subexpressions(const Ev& ev, F&& f) {
   if constexpr (std::is_arithmetic_v<typename Ev::scalar>)
     return f(ev);
   else if constexpr (memo_plan<X...>::repeated.n == 0)
@@ -219,7 +219,7 @@ KANE_ALWAYS_INLINE decltype(auto) with_common_subexpressions(const Ev& ev, F&& f
     return f(recalling<Ev, memo_plan<X...>>(ev));
 }
 template <class... X, class Ev, class F>
-KANE_ALWAYS_INLINE decltype(auto) with_common_subexpressions(list<X...>, const Ev& ev, F&& f) {
+inline decltype(auto) with_common_subexpressions(list<X...>, const Ev& ev, F&& f) {
   return with_common_subexpressions<X...>(ev, f);
 }
 
