@@ -141,22 +141,6 @@ struct all_speeds {
   template <auto Nz, class A, class V>
   KANE_ALWAYS_INLINE void add_bias(A&, const V&) const {}
 };
-// The frames a body's mass term may use: the root, the body's (unless it spins: its axes are
-// not known) and its inertia's (the rotational term: the root's or the inertia's).
-template <class R, class X>
-struct body_sum_frames {
-  using B = typename X::frame;
-  using I = typename X::inertia_type::frame;
-  using type = std::conditional_t<spin_edge<B> || std::is_same_v<B, I>, list<R, I>, list<R, B, I>>;
-};
-template <class R, class X>
-struct mass_sum_frames {
-  using type = list<R>;
-};
-template <class R, class X>
-requires is_body<X>
-struct mass_sum_frames<R, X> : body_sum_frames<R, X> {
-};
 // The frame of an item's sums: the first of L (the root) while common subexpressions are
 // recalled (their slots hold root components), else the cheapest.
 template <class Cols, class L, bool Recalling>
@@ -167,21 +151,22 @@ template <class Cols, class R, class... F>
 struct frame_of_columns<Cols, list<R, F...>, true> {
   using type = R;
 };
-// The sums of M and f over the items of Sys: each item's dot products in the frame where its
-// partial velocities hold the fewest rotations (foreign_units), M_rs and f_r being invariant.
+// The sums of M and f over the items of Sys, M_rs and f_r being invariant: the mass terms in the
+// root, a body's rotational term in the root or its inertia's frame, whichever holds fewer rotations
+// in the partial angular velocities (foreign_units).
 template <class Sys, bool RestRates, bool Forcing, class Out, class Ev, class Cols, class Ud>
 inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using Sp = detail::speeds_of<Ev>;
   constexpr std::size_t n = Cols::n;
-  // the gravity of the system in A
-  const auto gravity = [&]<class A>(std::type_identity<A>) {
+  // the gravity of the system in the root
+  const auto gravity = [&] {
     Eigen::Matrix<S, 3, 1> g = Eigen::Matrix<S, 3, 1>::Zero();
     [&]<class... X>(detail::list<X...>) {
       (
           [&] {
-            if constexpr (Forcing && detail::is_gravity<X>) g += detail::in_frame_of<A>(X::vector, ev);
+            if constexpr (Forcing && detail::is_gravity<X>) g += detail::in_frame_of<R>(X::vector, ev);
           }(),
           ...);
     }(typename Sys::items{});
@@ -199,27 +184,24 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
     }
     return Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(v));
   };
-  const auto mass = [&]<class Frames>(Frames, const auto& point_velocity, const auto& point_acceleration,
-                                      const auto& m) {
-    using A = typename frame_of_columns<columns_t<Sp, std::remove_cvref_t<decltype(point_velocity)>>, Frames,
-                                        is_recalling<Ev>>::type;
+  const auto mass = [&](const auto& point_velocity, const auto& point_acceleration, const auto& m) {
     Eigen::Matrix<S, 3, 1> a0;
-    const auto v = along(std::type_identity<A>{}, point_velocity, point_acceleration, a0);
+    const auto v = along(std::type_identity<R>{}, point_velocity, point_acceleration, a0);
     const Eigen::Matrix<S, 3, int(n)> mv = detail::eval_scalar(m, ev) * v;
     detail::add_upper<reached_columns<Cols, Sp, std::remove_cvref_t<decltype(point_velocity)>>>(out.M, v, mv);
-    if constexpr (Forcing) out.f.noalias() += mv.transpose() * (gravity(std::type_identity<A>{}) - a0);
+    if constexpr (Forcing) out.f.noalias() += mv.transpose() * (gravity() - a0);
   };
   [&]<class... X>(detail::list<X...>) {
     (
         [&] {
           if constexpr (detail::is_particle<X>) {
             using P = typename X::point;
-            mass(list<R>{}, velocity<R, P>(), acceleration<R, P>(), X::mass);
+            mass(velocity<R, P>(), acceleration<R, P>(), X::mass);
           } else if constexpr (detail::is_body<X>) {
             using B = typename X::frame;
             using P = typename X::centre;
             using I = typename X::inertia_type;
-            mass(typename body_sum_frames<R, X>::type{}, velocity<R, P>(), acceleration<R, P>(), X::mass);
+            mass(velocity<R, P>(), acceleration<R, P>(), X::mass);
             using A = typename frame_of_columns<columns_t<Sp, decltype(angular_velocity<R, B>())>,
                                                 list<R, typename I::frame>, is_recalling<Ev>>::type;
             Eigen::Matrix<S, 3, 1> alpha0;
