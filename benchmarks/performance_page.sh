@@ -126,6 +126,7 @@ for f in benchmarks/*_kane.cpp; do
 done
 for n in 6 12 24 48; do units+=("benchmarks/chain_dynamics_kane.cpp -DKANE_CHAIN_N=$n|benchmark: the $n-link chain's forward dynamics"); done
 for f in tests/test_*.cpp; do units+=("$f|test"); done
+units+=("tests/eigenvalues.cpp|tests: Eigen's EigenSolver, compiled once")
 for scalar in float double; do units+=("tests/warnings.cpp -DKANE_WARNINGS_SCALAR=$scalar|the whole API under strict warnings, $scalar"); done
 {
   echo "| unit | what | CPU s | peak MB |"
