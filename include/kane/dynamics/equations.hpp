@@ -53,13 +53,6 @@ inline constexpr bool recursive_form = [] {
   else
     return false;
 }();
-// The diagonal of M finite: so is all of M, |M_rs| <= (M_rr M_ss)^1/2 (M positive semidefinite).
-template <class M>
-bool finite_diagonal(const M& m) {
-  using S = typename M::Scalar;
-  return [&]<int... I>(std::integer_sequence<int, I...>) { return ((m(I, I) - m(I, I)) + ...) == S(0); }
-  (std::make_integer_sequence<int, M::RowsAtCompileTime>{});
-}
 // M by composite bodies and f by inward sums (crba.hpp, rnea.hpp), written in place into Out:
 // equations_of_motion, or mass_matrix_only (M alone).
 template <class Sys, class Out, class Ev>

@@ -252,9 +252,13 @@ equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, 
     add_items<Sys, RestRates, Forcing>(out, e, cols, ud);
   });
   out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
-  if (out.status == solve_status::ok &&
-      !(detail::all_finite_matrix(out.M) && detail::all_finite_matrix(out.f)))
-    out.status = solve_status::not_finite;
+  const bool finite = [&] {  // numbers: M's diagonal suffices (M = sum m V^T V + W^T I W)
+    if constexpr (std::is_floating_point_v<S>)
+      return detail::finite_diagonal(out.M) && detail::all_finite_matrix(out.f);
+    else
+      return detail::all_finite_matrix(out.M) && detail::all_finite_matrix(out.f);
+  }();
+  if (out.status == solve_status::ok && !finite) out.status = solve_status::not_finite;
   return out;
 }
 }  // namespace detail

@@ -88,6 +88,14 @@ bool all_finite_matrix(const M& m) {
   }
   (std::make_index_sequence<n>{});
 }
+// The diagonal of a mass matrix M finite: so is all of M, |M_rs| <= (M_rr M_ss)^1/2 (M positive
+// semidefinite).
+template <class M>
+bool finite_diagonal(const M& m) {
+  using S = typename M::Scalar;
+  return [&]<int... I>(std::integer_sequence<int, I...>) { return ((m(I, I) - m(I, I)) + ...) == S(0); }
+  (std::make_integer_sequence<int, M::RowsAtCompileTime>{});
+}
 }  // namespace detail
 
 }  // namespace kane
