@@ -154,6 +154,25 @@ class motion {
   solve_status status_ = solve_status::ok;
 };
 
+namespace detail {
+// s at the independent speeds x[nq + k]: u_dep = A u_ind + B from the constraints NH at s's q and t,
+// and ev updated to s (pose, then speeds); the constraints' solution.
+template <class NH, class Ev, class St, class X>
+auto update_at_independent_speeds(Ev& ev, St& s, const X& x) {
+  constexpr std::size_t nq = St::nq;
+  for (std::size_t k = 0; k < NH::p; ++k) s.u[NH::independents[k] - 1] = x[nq + k];
+  ev.update_pose(s);  // A and B depend on q and t alone
+  const auto sol = solve_constraints<NH>(ev);
+  for (std::size_t j = 0; j < NH::m; ++j) {
+    typename St::scalar u = sol.B(Eigen::Index(j));
+    for (std::size_t k = 0; k < NH::p; ++k) u += sol.A(Eigen::Index(j), Eigen::Index(k)) * x[nq + k];
+    s.u[NH::dependents[j] - 1] = u;
+  }
+  ev.update_speeds(s);
+  return sol;
+}
+}  // namespace detail
+
 // A nonholonomic system (constraints NH): x = (q, u_ind), p independent speeds;
 // at each call u_dep = A u_ind + B, then u_ind' from Kane's reduced equations.
 template <class Sys, class NH, class Ev>
@@ -189,16 +208,8 @@ class constrained_motion {
   template <class X, class DX>
   void step(const X& x, DX& dxdt, scalar time) {
     for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
-    for (std::size_t k = 0; k < p; ++k) s_.u[NH::independents[k] - 1] = x[nq + k];
     s_.t = time;
-    ev_.update_pose(s_);  // A and B depend on q and t alone
-    const auto sol = solve_constraints<NH>(ev_);
-    for (std::size_t j = 0; j < NH::m; ++j) {
-      scalar u = sol.B(Eigen::Index(j));
-      for (std::size_t k = 0; k < p; ++k) u += sol.A(Eigen::Index(j), Eigen::Index(k)) * x[nq + k];
-      s_.u[NH::dependents[j] - 1] = u;
-    }
-    ev_.update_speeds(s_);
+    const auto sol = detail::update_at_independent_speeds<NH>(ev_, s_, x);
     const auto [ud, status] =
         speed_derivatives(detail::reduced_mass_matrix_and_forcing_at<Sys, NH, true>(ev_, sol).reduced);
     const auto qd = ev_.coordinate_rates();

@@ -251,17 +251,9 @@ detail::equations_of<NH, Ev, H, In> linearize_equations(const typename Ev::state
   solve_status status;
   auto [js, x] = detail::constrained_point<Sys, NH, Ev, H, In>(s, status);
   // the state at x (u_dep = A u_ind + B, u' = 0), then M~ and f~ on jets, once
-  for (std::size_t k = 0; k < p; ++k) js.u[NH::independents[k] - 1] = x[nq + k];
   js.ud = {};
   typename detail::rebind_evaluator<Ev, J>::type ev;
-  ev.update_pose(js);
-  const auto sol = solve_constraints<NH>(ev);
-  for (std::size_t j = 0; j < NH::m; ++j) {
-    J u = sol.B(Eigen::Index(j));
-    for (std::size_t k = 0; k < p; ++k) u += sol.A(Eigen::Index(j), Eigen::Index(k)) * x[nq + k];
-    js.u[NH::dependents[j] - 1] = u;
-  }
-  ev.update_speeds(js);
+  const auto sol = detail::update_at_independent_speeds<NH>(ev, js, x);
   const auto eq = detail::reduced_mass_matrix_and_forcing_at<Sys, NH, true>(ev, sol).reduced;
   // u_ind' at s: M~ u' = f~ on the numbers
   equations_of_motion<S, p> at{{}, {}, eq.status};
