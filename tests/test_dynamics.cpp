@@ -309,3 +309,67 @@ TEST_CASE("dynamics: a heavy top and a gyrostat with body rates against Euler's 
     CHECK(dx[13] == Approx(-w3d).margin(1e-12));
   }
 }
+
+// The gyrostat's M is known at compile time (known_mass_matrix.hpp); with B's mass a parameter
+// it is not, and Kane's sums evaluate M: the two agree, and so do u' by the known M^-1 and by a
+// Cholesky factorization. A speed that moves no mass is singular.
+TEST_CASE("dynamics: an M known at compile time, against the M of Kane's sums") {
+  namespace gs = models::gyrostat;
+  using summed_system =
+      kane::system<kane::rigid_body<gs::B, gs::Bo, kane::parameter<1>{},
+                                    kane::inertia<gs::B, gs::Bo, kane::literal(1.2), kane::literal(1.5),
+                                                  kane::literal(1.9)>>,
+                   kane::rigid_body<gs::W, gs::Bo, kane::literal(0.5),
+                                    kane::inertia<gs::B, gs::Bo, kane::literal(0.01), kane::literal(0.01),
+                                                  kane::literal(0.02)>>>;
+  using summed_state = kane::state<double, 7, 7, 1>;
+  using summed_evaluator =
+      kane::evaluator<summed_state, kane::frames<gs::W>, kane::level::acceleration, gs::speeds>;
+  constexpr auto known = kane::detail::known_mass_matrix<gs::system, gs::N, gs::speeds>;
+  STATIC_REQUIRE(known.known);
+  STATIC_REQUIRE(!kane::detail::known_mass_matrix<summed_system, gs::N, gs::speeds>.known);
+  STATIC_REQUIRE(!kane::detail::known_mass_matrix<models::heavy_top::system, models::heavy_top::N,
+                                                  models::heavy_top::speeds>.known);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> d(-2, 2);
+  gs::evaluator ev;
+  gs::state s{};
+  summed_evaluator ev_p;
+  summed_state s_p{};
+  for (std::size_t i = 0; i < 7; ++i) s_p.q[i] = s.q[i] = d(rng), s_p.u[i] = s.u[i] = d(rng);
+  s_p.p[0] = 10;
+  ev.update(s);
+  ev_p.update(s_p);
+  const auto summed = kane::mass_matrix<summed_system>(ev_p);
+  REQUIRE(summed.status == kane::solve_status::ok);
+  for (int r = 0; r < 7; ++r)
+    for (int c = 0; c < 7; ++c)
+      CHECK(known.m[std::size_t(r * 7 + c)] == Approx(summed.M(r, c)).margin(1e-14));
+  CHECK(known.m[2 * 7 + 6] == 0.02);
+  const auto e = kane::mass_matrix_and_forcing<summed_system>(ev_p);
+  const auto [ud, status] = kane::forward_dynamics<gs::system>(ev);
+  REQUIRE(status == kane::solve_status::ok);
+  const Eigen::Matrix<double, 7, 1> ref = e.M.llt().solve(e.f);
+  for (int r = 0; r < 7; ++r) CHECK(ud(r) == Approx(ref(r)).margin(1e-13));
+  // the wheel without axial inertia: u7 moves no mass
+  using massless_spin = kane::system<kane::rigid_body<gs::B, gs::Bo, kane::literal(10),
+                                                      kane::inertia<gs::B, gs::Bo, kane::literal(1.2),
+                                                                    kane::literal(1.5), kane::literal(1.9)>>,
+                                     kane::rigid_body<gs::W, gs::Bo, kane::literal(0.5),
+                                                      kane::inertia<gs::B, gs::Bo, kane::literal(0.01),
+                                                                    kane::literal(0.01), kane::literal(0)>>>;
+  STATIC_REQUIRE(kane::detail::known_mass_matrix<massless_spin, gs::N, gs::speeds>.known);
+  STATIC_REQUIRE(!kane::detail::known_inverse<massless_spin, gs::N, gs::speeds>.known);
+  kane::motion<massless_spin, gs::evaluator> rhs(s);
+  std::array<double, 14> x{}, dx{};
+  x[0] = 1;
+  rhs(x, dx, 0.0);
+  CHECK(rhs.status() == kane::solve_status::singular);
+  for (double v : dx) CHECK(std::isnan(v));
+  // a state that is not finite
+  kane::motion<gs::system, gs::evaluator> body(s);
+  x[8] = std::numeric_limits<double>::infinity();
+  body(x, dx, 0.0);
+  CHECK(body.status() == kane::solve_status::not_finite);
+  for (double v : dx) CHECK(std::isnan(v));
+}

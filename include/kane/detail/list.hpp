@@ -6,6 +6,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "kane/detail/inline.hpp"
+
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -17,6 +19,13 @@ using index_c = std::integral_constant<std::size_t, I>;
 template <std::size_t N, class F>
 constexpr void static_for(F&& f) {
   [&]<std::size_t... I>(std::index_sequence<I...>) { (f(index_c<I>{}), ...); }
+  (std::make_index_sequence<N>{});
+}
+// The same inside always-inline code (inline.hpp), f an always-inline lambda: the loop is part of
+// its caller before any optimization (a plain call there could stay a call).
+template <std::size_t N, class F>
+KANE_ALWAYS_INLINE constexpr void static_for_inline(F&& f) {
+  [&]<std::size_t... I>(std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA { (f(index_c<I>{}), ...); }
   (std::make_index_sequence<N>{});
 }
 

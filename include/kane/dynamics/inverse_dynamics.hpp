@@ -62,6 +62,14 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> inverse_at(const Ev& ev) {
 // (benchmarks/chain_dynamics) the two take the same time at 24 speeds; at 12 M costs 0.7x, at 48
 // articulated bodies 0.6x.
 inline constexpr std::size_t articulated_above = 20;
+// M of Kane's sums is a table of numbers (known_mass_matrix.hpp)
+template <class Sys, class Ev>
+constexpr bool known_masses() {
+  if constexpr (!admitted<Sys, speeds_of<Ev>>() || recursive_form<Sys, Ev>)
+    return false;
+  else
+    return known_mass_matrix<Sys, typename Ev::root, speeds_of<Ev>>.known;
+}
 // u' = M^-1 f; RestRates: the state's u' is 0 (as in motion.hpp).
 template <class Sys, bool RestRates, class Ev>
 speed_values<typename Ev::scalar, speeds_of<Ev>::n> forward_at(const Ev& ev) {
@@ -78,6 +86,19 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> forward_at(const Ev& ev) {
     if (status == solve_status::ok && !all_finite_matrix(ud)) status = solve_status::not_finite;
     if (status != solve_status::ok) ud.setConstant(std::numeric_limits<S>::quiet_NaN());
     return {ud, status};
+  } else if constexpr (known_masses<Sys, Ev>()) {
+    constexpr auto inverse =
+        known_inverse<Sys, typename Ev::root, speeds_of<Ev>>;  // M^-1, a table of numbers
+    const auto e = mass_matrix_and_forcing_at<Sys, RestRates>(ev);
+    if constexpr (!inverse.known)
+      return speed_derivatives(e);  // singular
+    else {
+      Eigen::Matrix<S, int(n), 1> ud = times_known<inverse>(e.f);
+      solve_status status = e.status;
+      if (status == solve_status::ok && !all_finite_matrix(ud)) status = solve_status::not_finite;
+      if (status != solve_status::ok) ud.setConstant(std::numeric_limits<S>::quiet_NaN());
+      return {ud, status};
+    }
   } else
     return speed_derivatives(mass_matrix_and_forcing_at<Sys, RestRates>(ev));
 }

@@ -40,6 +40,14 @@ struct independent_speeds {
     for (std::size_t k = 0; k < n; ++k) out[k] = Nz[NH::independents[k] - 1] || dependent;
     return out;
   }
+  template <auto Nz>
+  static constexpr std::array<int, n> kinds() {  // v~_k is v_ind_k where no dependent column enters
+    bool dependent = false;
+    for (std::size_t j = 0; j < NH::m; ++j) dependent = dependent || Nz[NH::dependents[j] - 1];
+    std::array<int, n> out{};
+    for (std::size_t k = 0; k < n; ++k) out[k] = dependent ? general_column : Nz[NH::independents[k] - 1];
+    return out;
+  }
   template <auto Nz, class V>
   KANE_ALWAYS_INLINE Eigen::Matrix<S, 3, int(n)> columns(const V& v) const {
     Eigen::Matrix<S, 3, int(n)> t;

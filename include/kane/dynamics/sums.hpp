@@ -22,6 +22,8 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/invert.hpp"
 #include "kane/dynamics/bodies.hpp"
+#include "kane/dynamics/columns.hpp"
+#include "kane/dynamics/known_mass_matrix.hpp"
 #include "kane/dynamics/system_rules.hpp"
 #include "kane/dynamics/terms.hpp"
 #include "kane/evaluation/evaluate.hpp"
@@ -55,44 +57,6 @@ template <class A, class X, class Ev>
 Eigen::Matrix<typename Ev::scalar, 3, 1> in_frame_of(const X& x, const Ev& ev) {  // components in A
   const auto r = eval_in<A>(x, ev);
   return {r.x, r.y, r.z};
-}
-// What each partial velocity v_r of x is at every state, in A's components: 0 (zero), +-(i + 1)
-// (+-e_i: a unit vector of A, or of the root for A the root; the sums add a number to one
-// component), or general_column. A void: the root of x's tree.
-inline constexpr int general_column = 4;
-template <class V, class A>
-constexpr bool unit_in() {
-  if constexpr (!is_unit<V>::value)
-    return false;
-  else if constexpr (std::is_void_v<A>)
-    return root_unit<V>::value;
-  else if constexpr (std::is_void_v<typename A::tree_parent>)
-    return root_unit<V>::value;
-  else
-    return std::is_same_v<typename V::frame, A> || std::is_same_v<lifted_t<typename V::frame, V::index>, A>;
-}
-template <class V, class A>
-constexpr int column_kind() {
-  if constexpr (is_zero_v<V> || is_zero_vector_v<V>)
-    return 0;
-  else if constexpr (unit_in<V, A>())
-    return V::index;
-  else if constexpr (is_vneg<V>::value) {
-    using U = std::remove_cvref_t<decltype(std::declval<const V&>().v)>;
-    if constexpr (unit_in<U, A>())
-      return -U::index;
-    else
-      return general_column;
-  } else
-    return general_column;
-}
-template <class Sp, class X, class A = void>
-constexpr std::array<int, Sp::n> nonzero_columns() {
-  return []<std::size_t... R>(std::index_sequence<R...>) {
-    return std::array<int, Sp::n>{
-        column_kind<std::remove_cvref_t<decltype(column_of<Sp, R + 1>(std::declval<const X&>()))>, A>()...};
-  }
-  (std::make_index_sequence<Sp::n>{});
 }
 // The columns of M that the partial velocities of X reach (a type: g++ 12 merged
 // instantiations of one function template that differed only in an array argument).
@@ -134,6 +98,10 @@ struct all_speeds {
     for (std::size_t k = 0; k < n; ++k) out[k] = Nz[k] != 0;
     return out;
   }
+  template <auto Nz>
+  static constexpr std::array<int, n> kinds() {  // of the columns (columns.hpp)
+    return Nz;
+  }
   template <auto Nz, class V>
   KANE_ALWAYS_INLINE const V& columns(const V& v) const {
     return v;
@@ -154,7 +122,7 @@ struct frame_of_columns<Cols, list<R, F...>, true> {
 // The sums of M and f over the items of Sys, M_rs and f_r being invariant: the mass terms in the
 // root, a body's rotational term in the root or its inertia's frame, whichever holds fewer rotations
 // in the partial angular velocities (foreign_units).
-template <class Sys, bool RestRates, bool Forcing, class Out, class Ev, class Cols, class Ud>
+template <class Sys, bool RestRates, bool Forcing, bool SumMass, class Out, class Ev, class Cols, class Ud>
 inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
@@ -187,9 +155,15 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
   const auto mass = [&](const auto& point_velocity, const auto& point_acceleration, const auto& m) {
     Eigen::Matrix<S, 3, 1> a0;
     const auto v = along(std::type_identity<R>{}, point_velocity, point_acceleration, a0);
-    const Eigen::Matrix<S, 3, int(n)> mv = detail::eval_scalar(m, ev) * v;
-    detail::add_upper<reached_columns<Cols, Sp, std::remove_cvref_t<decltype(point_velocity)>>>(out.M, v, mv);
-    if constexpr (Forcing) out.f.noalias() += mv.transpose() * (gravity() - a0);
+    using X = std::remove_cvref_t<decltype(point_velocity)>;
+    const S mass = detail::eval_scalar(m, ev);
+    if constexpr (SumMass) {
+      const Eigen::Matrix<S, 3, int(n)> mv = mass * v;
+      detail::add_upper<reached_columns<Cols, Sp, X>>(out.M, v, mv);
+    }
+    if constexpr (Forcing)
+      detail::add_transposed<Cols::template kinds<detail::nonzero_columns<Sp, X, R>()>()>(
+          out.f, v, Eigen::Matrix<S, 3, 1>(mass * (gravity() - a0)));
   };
   [&]<class... X>(detail::list<X...>) {
     (
@@ -207,28 +181,36 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
             Eigen::Matrix<S, 3, 1> alpha0;
             const auto w = along(std::type_identity<A>{}, angular_velocity<R, B>(),
                                  angular_acceleration<R, B>(), alpha0);
+            using Om = decltype(angular_velocity<R, B>());
             const Eigen::Matrix<S, 3, 3> i = [&] {
               if constexpr (std::is_same_v<A, typename I::frame>)
                 return detail::inertia_in_own<I>(ev);
               else
                 return detail::inertia_in_root<I>(ev);
             }();
-            const Eigen::Matrix<S, 3, int(n)> iw = i * w;
-            detail::add_upper<reached_columns<Cols, Sp, decltype(angular_velocity<R, B>())>>(out.M, w, iw);
+            if constexpr (SumMass) {
+              const Eigen::Matrix<S, 3, int(n)> iw = i * w;
+              detail::add_upper<reached_columns<Cols, Sp, Om>>(out.M, w, iw);
+            }
             if constexpr (Forcing) {
               const Eigen::Matrix<S, 3, 1> omega = detail::in_frame_of<A>(angular_velocity<R, B>(), ev);
-              out.f.noalias() -= w.transpose() * (i * alpha0 + omega.cross(i * omega));
+              detail::add_transposed<Cols::template kinds<detail::nonzero_columns<Sp, Om, A>()>()>(
+                  out.f, w, Eigen::Matrix<S, 3, 1>(-(i * alpha0 + omega.cross(i * omega))));
             }
           } else if constexpr (Forcing && detail::is_force<X>) {
             const auto x = velocity<R, typename X::point>();
             const auto v = linear_parts_in<R, true, false>(x, ev);
             constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
-            out.f.noalias() += cols.template columns<nz>(v).transpose() * detail::in_root<R>(X::vector, ev);
+            detail::add_transposed<Cols::template kinds<nz>()>(
+                out.f, Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(v)),
+                detail::in_root<R>(X::vector, ev));
           } else if constexpr (Forcing && detail::is_torque<X>) {
             const auto x = angular_velocity<R, typename X::frame>();
             const auto w = linear_parts_in<R, true, false>(x, ev);
             constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
-            out.f.noalias() += cols.template columns<nz>(w).transpose() * detail::in_root<R>(X::vector, ev);
+            detail::add_transposed<Cols::template kinds<nz>()>(
+                out.f, Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(w)),
+                detail::in_root<R>(X::vector, ev));
           }
         }(),
         ...);
@@ -245,15 +227,26 @@ equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, 
   using Sp = detail::speeds_of<Ev>;
   constexpr std::size_t n = Cols::n;
   static_assert(detail::system_checked<Sys, Sp>(typename Sys::items{}));
+  constexpr bool known = [] {
+    if constexpr (std::is_same_v<Cols, all_speeds<n>>)
+      return known_mass_matrix<Sys, R, Sp>.known;
+    else
+      return false;
+  }();
   equations_of_motion<S, n> out{Eigen::Matrix<S, int(n), int(n)>::Zero(), Eigen::Matrix<S, int(n), 1>::Zero(),
                                 ev.status()};
+  if constexpr (known)  // symmetric: rows or columns alike
+    out.M = Eigen::Map<const Eigen::Matrix<double, int(n), int(n)>>(known_mass_matrix<Sys, R, Sp>.m.data())
+                .template cast<S>();
   const auto ud = detail::speed_rates(ev);
   detail::with_common_subexpressions(system_terms<R, Sp>(typename Sys::items{}), ev, [&](const auto& e) {
-    add_items<Sys, RestRates, Forcing>(out, e, cols, ud);
+    add_items<Sys, RestRates, Forcing, !known>(out, e, cols, ud);
   });
-  out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
+  if constexpr (!known) out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
   const bool finite = [&] {  // numbers: M's diagonal suffices (M = sum m V^T V + W^T I W)
-    if constexpr (std::is_floating_point_v<S>)
+    if constexpr (known)
+      return detail::all_finite_matrix(out.f);
+    else if constexpr (std::is_floating_point_v<S>)
       return detail::finite_diagonal(out.M) && detail::all_finite_matrix(out.f);
     else
       return detail::all_finite_matrix(out.M) && detail::all_finite_matrix(out.f);

@@ -78,7 +78,7 @@ template <class Sys, std::size_t First, std::size_t Size, class S>
 KANE_ALWAYS_INLINE Eigen::Matrix<S, int(Size), int(Size)> scaled_block(const table<S, Sys::n, Sys::n>& m,
                                                                        typename real_type<S>::type f) {
   Eigen::Matrix<S, int(Size), int(Size)> block;
-  static_for<Size * Size>([&](auto ab) {
+  static_for_inline<Size * Size>([&](auto ab) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t a = ab / Size, e = ab % Size, row = Sys::form.row[Sys::form.order[First + a]],
                           col = Sys::form.order[First + e];
     if constexpr (Sys::m[row][col] == entry::one)
@@ -106,7 +106,7 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
   constexpr std::size_t n = Sys::n;
   auto value = [&](auto i, auto j) { return entry_value<Sys>(m, i, j); };
   structured_factors<S, n> out{};
-  static_for<n * n>([&](auto ij) {
+  static_for_inline<n * n>([&](auto ij) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t i = ij / n, j = ij % n;
     if constexpr (Sys::m[i][j] != entry::zero) {
       const S a = abs(value(index_c<i>{}, index_c<j>{}));
@@ -132,7 +132,7 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
       out.f = ldexp(real(1), -e);
     }
   }
-  static_for<Sys::form.count>([&](auto b) {
+  static_for_inline<Sys::form.count>([&](auto b) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t first = Sys::form.start[b], size = Sys::form.start[b + 1] - first;
     if constexpr (size == 1) {
       constexpr std::size_t c = Sys::form.order[first], row = Sys::form.row[c];
@@ -147,12 +147,12 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
       const S tol = limits::epsilon() * S(n) * (scale * f);
       const auto block = scaled_block<Sys, first, size>(m, f);
       Eigen::Matrix<S, int(size), int(size)> inverse;
-      static_for<size>([&](auto a) {
+      static_for_inline<size>([&](auto a) KANE_ALWAYS_INLINE_LAMBDA {
         const S norm2 = block.row(Eigen::Index(a)).squaredNorm();
         out.singular = out.singular || (norm2 == norm2 && !(norm2 > tol * tol));
         inverse.col(Eigen::Index(a)) = block.row(Eigen::Index(a)).transpose() * (S(1) / norm2);
       });
-      static_for<size * size>([&](auto ab) {
+      static_for_inline<size * size>([&](auto ab) KANE_ALWAYS_INLINE_LAMBDA {
         constexpr std::size_t a = ab / size, e = ab % size;
         out.inverse[Sys::form.order[first + a]][Sys::form.order[first + e]] = inverse(a, e);
       });
@@ -165,7 +165,7 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
         out.singular = out.singular || block.allFinite();
         inverse.setConstant(limits::quiet_NaN());
       }
-      static_for<size * size>([&](auto ab) {
+      static_for_inline<size * size>([&](auto ab) KANE_ALWAYS_INLINE_LAMBDA {
         constexpr std::size_t a = ab / size, e = ab % size;
         out.inverse[Sys::form.order[first + a]][Sys::form.order[first + e]] = inverse(a, e);
       });
@@ -192,17 +192,17 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
     else
       return r[i][j];
   };
-  static_for<n * k>([&](auto cj) {
+  static_for_inline<n * k>([&](auto cj) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t c = cj / k, j = cj % k;
     if constexpr (WriteConstants && Sys::x[c][j] != entry::other) x[c][j] = S(Sys::x[c][j] == entry::one);
   });
-  static_for<Sys::form.count>([&](auto b) {
+  static_for_inline<Sys::form.count>([&](auto b) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t first = Sys::form.start[b], size = Sys::form.start[b + 1] - first;
     // t_j = R_{row c, j} - sum over unknowns d of earlier blocks of M_{row c, d} x_dj
     auto reduced = [&](auto c, auto j) {
       constexpr std::size_t row = Sys::form.row[c];
       S t = rhs(index_c<row>{}, j);
-      static_for<n>([&](auto d) {
+      static_for_inline<n>([&](auto d) KANE_ALWAYS_INLINE_LAMBDA {
         if constexpr (Sys::form.block[d] != b && Sys::m[row][d] == entry::one && Sys::x[d][j] != entry::zero)
           t -= x[d][j];
         else if constexpr (Sys::form.block[d] != b && Sys::m[row][d] != entry::zero &&
@@ -213,7 +213,7 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
     };
     if constexpr (size == 1) {
       constexpr std::size_t c = Sys::form.order[first], row = Sys::form.row[c];
-      static_for<k>([&](auto j) {
+      static_for_inline<k>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {
         if constexpr (Sys::x[c][j] == entry::other) {
           const S t = reduced(index_c<c>{}, j);
           if constexpr (Sys::m[row][c] == entry::one)
@@ -225,24 +225,26 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
     } else {
       const auto block = scaled_block<Sys, first, size>(m, fac.f);
       Eigen::Matrix<S, int(size), int(size)> inverse;  // (f M_B)^-1
-      static_for<size * size>([&](auto ab) {
+      static_for_inline<size * size>([&](auto ab) KANE_ALWAYS_INLINE_LAMBDA {
         constexpr std::size_t a = ab / size, e = ab % size;
         inverse(a, e) = fac.inverse[Sys::form.order[first + a]][Sys::form.order[first + e]];
       });
-      static_for<k>([&](auto j) {
+      static_for_inline<k>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {
         if constexpr (Sys::x[Sys::form.order[first]][j] != entry::zero) {
           Eigen::Matrix<S, int(size), 1> t;
-          static_for<size>([&](auto a) {
+          static_for_inline<size>([&](auto a) KANE_ALWAYS_INLINE_LAMBDA {
             t(Eigen::Index(a)) = reduced(index_c<Sys::form.order[first + a]>{}, j) * fac.f;
           });
           const Eigen::Matrix<S, int(size), 1> y = solve_block(inverse, block, t);  // (f M)^-1 f t
-          static_for<size>([&](auto a) { x[Sys::form.order[first + a]][j] = y(Eigen::Index(a)); });
+          static_for_inline<size>([&](auto a) KANE_ALWAYS_INLINE_LAMBDA {
+            x[Sys::form.order[first + a]][j] = y(Eigen::Index(a));
+          });
         }
       });
     }
   });
   S residue = S(0);  // x - x is 0 for a finite x, NaN otherwise
-  static_for<n * k>([&](auto cj) {
+  static_for_inline<n * k>([&](auto cj) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t c = cj / k, j = cj % k;
     if constexpr (Sys::x[c][j] == entry::other) residue += x[c][j] - x[c][j];
   });
@@ -251,7 +253,7 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
                               : residue == S(0)             ? solve_status::ok
                                                             : solve_status::not_finite;
   const auto spoil = nan_unless<S>(status == solve_status::ok);
-  static_for<n * k>([&](auto cj) {
+  static_for_inline<n * k>([&](auto cj) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t c = cj / k, j = cj % k;
     if constexpr (Sys::x[c][j] == entry::other) spoil(x[c][j]);
   });

@@ -1,0 +1,157 @@
+// M known at compile time: every mass and inertia of the system a known number, every partial
+// velocity of a mass centre 0 or +-e_i of the root, every partial angular velocity 0 or +-e_i of
+// its inertia's frame (a free body about its mass centre with body rates and q' as speeds, a
+// gyrostat). Then M_rs = sum m [v_r = +-v_s] + e_r . I . e_s is a table of numbers, and so is
+// M^-1 (LDL^T in a constant expression): u' = M^-1 f multiplies by its nonzero entries alone.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include <Eigen/Core>
+
+#include "kane/detail/inline.hpp"
+#include "kane/detail/list.hpp"
+#include "kane/dynamics/bodies.hpp"
+#include "kane/dynamics/columns.hpp"
+#include "kane/dynamics/fixed_vectors.hpp"
+#include "kane/dynamics/terms.hpp"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
+namespace kane::detail {
+// an N x N table by rows; known: every entry a number of the code (M), or definite (M^-1)
+template <std::size_t N>
+struct known_table {
+  bool known = true;
+  std::array<double, N * N> m{};
+};
+template <std::size_t N>
+constexpr void add_mass_terms(known_table<N>& out, const std::array<int, N>& k, double mass) {
+  for (std::size_t r = 0; r < N; ++r)
+    for (std::size_t s = 0; s < N; ++s)
+      if (k[r] != 0 && (k[r] == k[s] || k[r] == -k[s])) out.m[r * N + s] += k[r] == k[s] ? mass : -mass;
+}
+template <std::size_t N>
+constexpr bool units_only(const std::array<int, N>& k) {
+  for (int c : k)
+    if (c == general_column) return false;
+  return true;
+}
+template <class... C>
+constexpr bool known_scalars(std::type_identity<std::tuple<C...>>) {
+  return (known_scalar<C>() && ...);
+}
+template <class R, class Sp, class X>
+constexpr void add_known_terms(known_table<Sp::n>& out) {
+  constexpr std::size_t n = Sp::n;
+  if constexpr (is_particle<X> || is_body<X>) {
+    using P = typename point_of_mass<X>::type;
+    constexpr auto k = nonzero_columns<Sp, decltype(velocity<R, P>()), R>();
+    if constexpr (!known_scalar<std::remove_cv_t<decltype(X::mass)>>() || !units_only(k))
+      out.known = false;
+    else
+      add_mass_terms(out, k, known_value(X::mass));
+    if constexpr (is_body<X>) {
+      using I = typename X::inertia_type;
+      constexpr auto w =
+          nonzero_columns<Sp, decltype(angular_velocity<R, typename X::frame>()), typename I::frame>();
+      constexpr auto c = I::components;
+      if constexpr (!known_scalars(std::type_identity<std::remove_cv_t<decltype(c)>>{}) || !units_only(w))
+        out.known = false;
+      else {
+        const std::array<double, 6> i = [&]<std::size_t... J>(std::index_sequence<J...>) {
+          return std::array<double, 6>{known_value(std::get<J>(c))...};
+        }
+        (std::make_index_sequence<6>{});
+        for (std::size_t r = 0; r < n; ++r)
+          for (std::size_t s = 0; s < n; ++s)
+            if (w[r] != 0 && w[s] != 0) {
+              const double v = i[inertia_at[std::size_t(w[r] < 0 ? -w[r] : w[r]) - 1]
+                                           [std::size_t(w[s] < 0 ? -w[s] : w[s]) - 1]];
+              out.m[r * n + s] += (w[r] < 0) == (w[s] < 0) ? v : -v;
+            }
+      }
+    }
+  }
+}
+// M of Sys over the speeds Sp in the root R, if known (known_table::known)
+template <class Sys, class R, class Sp>
+inline constexpr known_table<Sp::n> known_mass_matrix = []<class... X>(list<X...>) {
+  known_table<Sp::n> out;
+  (add_known_terms<R, Sp, X>(out), ...);
+  return out;
+}(typename Sys::items{});
+// M^-1 by M = L D L^T; known: M is positive definite (no pivot d_j <= 0)
+template <std::size_t N>
+constexpr known_table<N> inverse_of(const known_table<N>& a) {
+  known_table<N> out;
+  std::array<double, N * N> l{};
+  std::array<double, N> d{};
+  for (std::size_t j = 0; j < N; ++j) {
+    d[j] = a.m[j * N + j];
+    for (std::size_t k = 0; k < j; ++k) d[j] -= l[j * N + k] * l[j * N + k] * d[k];
+    if (!(d[j] > 0)) {
+      out.known = false;
+      return out;
+    }
+    l[j * N + j] = 1;
+    for (std::size_t i = j + 1; i < N; ++i) {
+      double s = a.m[i * N + j];
+      for (std::size_t k = 0; k < j; ++k) s -= l[i * N + k] * l[j * N + k] * d[k];
+      l[i * N + j] = s / d[j];
+    }
+  }
+  for (std::size_t c = 0; c < N; ++c) {  // column c: L y = e_c, then L^T x = D^-1 y
+    std::array<double, N> y{};
+    for (std::size_t i = 0; i < N; ++i) {
+      y[i] = i == c ? 1 : 0;
+      for (std::size_t k = 0; k < i; ++k) y[i] -= l[i * N + k] * y[k];
+    }
+    for (std::size_t i = N; i-- > 0;) {
+      double x = y[i] / d[i];
+      for (std::size_t k = i + 1; k < N; ++k) x -= l[k * N + i] * out.m[k * N + c];
+      out.m[i * N + c] = x;
+    }
+  }
+  return out;
+}
+template <class Sys, class R, class Sp>
+inline constexpr known_table<Sp::n> known_inverse = [] {
+  if constexpr (known_mass_matrix<Sys, R, Sp>.known)
+    return inverse_of(known_mass_matrix<Sys, R, Sp>);
+  else
+    return known_table<Sp::n>{false, {}};
+}();
+template <std::size_t N>
+constexpr std::size_t first_nonzero(const known_table<N>& t, std::size_t r) {  // in row r, or N
+  std::size_t c = 0;
+  while (c < N && t.m[r * N + c] == 0) ++c;
+  return c;
+}
+// x = T b for a table T of numbers: its zeros cost nothing
+template <auto T, class S, int N>
+KANE_ALWAYS_INLINE Eigen::Matrix<S, N, 1> times_known(const Eigen::Matrix<S, N, 1>& b) {
+  constexpr std::size_t n = std::size_t(N);
+  Eigen::Matrix<S, N, 1> x;
+  [&]<std::size_t... I>(std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA {
+    (
+        [&] KANE_ALWAYS_INLINE_LAMBDA {
+          constexpr std::size_t r = I / n, c = I % n, first = first_nonzero(T, r);
+          if constexpr (first == n && c == 0)
+            x(Eigen::Index(r)) = S(0);
+          else if constexpr (c == first)
+            x(Eigen::Index(r)) = S(T.m[I]) * b(Eigen::Index(c));
+          else if constexpr (T.m[I] != 0)
+            x(Eigen::Index(r)) += S(T.m[I]) * b(Eigen::Index(c));
+        }(),
+        ...);
+  }
+  (std::make_index_sequence<n * n>{});
+  return x;
+}
+}  // namespace kane::detail
+#pragma GCC diagnostic pop
