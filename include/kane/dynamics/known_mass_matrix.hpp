@@ -1,8 +1,9 @@
 // M known at compile time: every mass and inertia of the system a known number, every partial
-// velocity of a mass centre 0 or +-e_i of the root, every partial angular velocity 0 or +-e_i of
-// its inertia's frame (a free body about its mass centre with body rates and q' as speeds, a
-// gyrostat). Then M_rs = sum m [v_r = +-v_s] + e_r . I . e_s is a table of numbers, and so is
-// M^-1 (LDL^T in a constant expression): u' = M^-1 f multiplies by its nonzero entries alone.
+// velocity of a mass centre constant in the root or in its body's frame, every partial angular
+// velocity constant in its inertia's frame, with known components (a free body about its mass
+// centre with body rates and q' as speeds, a gyrostat, a top on body rates). Then
+// M_rs = sum m v_r . v_s + w_r . I . w_s is a table of numbers, and so is M^-1 (LDL^T in a
+// constant expression): u' = M^-1 f multiplies by its nonzero entries alone.
 #pragma once
 
 #include <array>
@@ -29,51 +30,75 @@ struct known_table {
   bool known = true;
   std::array<double, N * N> m{};
 };
-template <std::size_t N>
-constexpr void add_mass_terms(known_table<N>& out, const std::array<int, N>& k, double mass) {
-  for (std::size_t r = 0; r < N; ++r)
-    for (std::size_t s = 0; s < N; ++s)
-      if (k[r] != 0 && (k[r] == k[s] || k[r] == -k[s])) out.m[r * N + s] += k[r] == k[s] ? mass : -mass;
-}
-template <std::size_t N>
-constexpr bool units_only(const std::array<int, N>& k) {
-  for (int c : k)
-    if (c == general_column) return false;
-  return true;
-}
 template <class... C>
 constexpr bool known_scalars(std::type_identity<std::tuple<C...>>) {
   return (known_scalar<C>() && ...);
 }
+// The partial velocities of x in F's components, if known: 0, +-e_i of F (or of the root for F the
+// root), or constant multiples of F's unit vectors with known factors.
+template <std::size_t N>
+struct known_columns {
+  bool known = true;
+  std::array<std::array<double, 3>, N> c{};
+};
+template <class Sp, class F, class X>
+constexpr known_columns<Sp::n> columns_known_in(const X& x) {
+  constexpr auto k = nonzero_columns<Sp, X, F>();
+  known_columns<Sp::n> out;
+  [&]<std::size_t... R>(std::index_sequence<R...>) {
+    (
+        [&] {
+          using C = std::remove_cvref_t<decltype(column_of<Sp, R + 1>(x))>;
+          if constexpr (k[R] == 0)
+            return;
+          else if constexpr (k[R] != general_column)
+            out.c[R][std::size_t(k[R] < 0 ? -k[R] : k[R]) - 1] = k[R] < 0 ? -1 : 1;
+          else if constexpr (std::is_same_v<typename fixed_frame_of<C>::type, F> && known_vector<C>())
+            out.c[R] = known_components(column_of<Sp, R + 1>(x));
+          else
+            out.known = false;
+        }(),
+        ...);
+  }
+  (std::make_index_sequence<Sp::n>{});
+  return out;
+}
+template <std::size_t N, class W>
+constexpr void add_products(known_table<N>& out, const known_columns<N>& v, const W& weight) {
+  for (std::size_t r = 0; r < N; ++r)
+    for (std::size_t s = 0; s < N; ++s)
+      for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) out.m[r * N + s] += v.c[r][i] * weight(i, j) * v.c[s][j];
+}
 template <class R, class Sp, class X>
 constexpr void add_known_terms(known_table<Sp::n>& out) {
-  constexpr std::size_t n = Sp::n;
   if constexpr (is_particle<X> || is_body<X>) {
     using P = typename point_of_mass<X>::type;
-    constexpr auto k = nonzero_columns<Sp, decltype(velocity<R, P>()), R>();
-    if constexpr (!known_scalar<std::remove_cv_t<decltype(X::mass)>>() || !units_only(k))
+    constexpr auto v = [] {  // in the root, else in the body's frame
+      constexpr auto in_root = columns_known_in<Sp, R>(velocity<R, P>());
+      if constexpr (is_body<X> && !in_root.known)
+        return columns_known_in<Sp, typename X::frame>(velocity<R, P>());
+      else
+        return in_root;
+    }();
+    if constexpr (!known_scalar<std::remove_cv_t<decltype(X::mass)>>() || !v.known)
       out.known = false;
-    else
-      add_mass_terms(out, k, known_value(X::mass));
+    else {
+      constexpr double m = known_value(X::mass);
+      add_products(out, v, [](std::size_t i, std::size_t j) { return i == j ? m : 0.0; });
+    }
     if constexpr (is_body<X>) {
       using I = typename X::inertia_type;
-      constexpr auto w =
-          nonzero_columns<Sp, decltype(angular_velocity<R, typename X::frame>()), typename I::frame>();
+      constexpr auto w = columns_known_in<Sp, typename I::frame>(angular_velocity<R, typename X::frame>());
       constexpr auto c = I::components;
-      if constexpr (!known_scalars(std::type_identity<std::remove_cv_t<decltype(c)>>{}) || !units_only(w))
+      if constexpr (!known_scalars(std::type_identity<std::remove_cv_t<decltype(c)>>{}) || !w.known)
         out.known = false;
       else {
-        const std::array<double, 6> i = [&]<std::size_t... J>(std::index_sequence<J...>) {
+        constexpr std::array<double, 6> i = [&]<std::size_t... J>(std::index_sequence<J...>) {
           return std::array<double, 6>{known_value(std::get<J>(c))...};
         }
         (std::make_index_sequence<6>{});
-        for (std::size_t r = 0; r < n; ++r)
-          for (std::size_t s = 0; s < n; ++s)
-            if (w[r] != 0 && w[s] != 0) {
-              const double v = i[inertia_at[std::size_t(w[r] < 0 ? -w[r] : w[r]) - 1]
-                                           [std::size_t(w[s] < 0 ? -w[s] : w[s]) - 1]];
-              out.m[r * n + s] += (w[r] < 0) == (w[s] < 0) ? v : -v;
-            }
+        add_products(out, w, [&](std::size_t a, std::size_t b) { return i[inertia_at[a][b]]; });
       }
     }
   }
