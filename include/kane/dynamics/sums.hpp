@@ -128,13 +128,13 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
   using R = typename Ev::root;
   using Sp = detail::speeds_of<Ev>;
   constexpr std::size_t n = Cols::n;
-  // the gravity of the system in the root
-  const auto gravity = [&] {
+  // the gravity of the system in A
+  const auto gravity = [&]<class A>(std::type_identity<A>) {
     Eigen::Matrix<S, 3, 1> g = Eigen::Matrix<S, 3, 1>::Zero();
     [&]<class... X>(detail::list<X...>) {
       (
           [&] {
-            if constexpr (Forcing && detail::is_gravity<X>) g += detail::in_frame_of<R>(X::vector, ev);
+            if constexpr (Forcing && detail::is_gravity<X>) g += detail::in_frame_of<A>(X::vector, ev);
           }(),
           ...);
     }(typename Sys::items{});
@@ -152,9 +152,11 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
     }
     return Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(v));
   };
-  const auto mass = [&](const auto& point_velocity, const auto& point_acceleration, const auto& m) {
+  // the mass terms in A
+  const auto mass = [&]<class A>(std::type_identity<A> in, const auto& point_velocity,
+                                 const auto& point_acceleration, const auto& m) {
     Eigen::Matrix<S, 3, 1> a0;
-    const auto v = along(std::type_identity<R>{}, point_velocity, point_acceleration, a0);
+    const auto v = along(in, point_velocity, point_acceleration, a0);
     using X = std::remove_cvref_t<decltype(point_velocity)>;
     const S mass = detail::eval_scalar(m, ev);
     if constexpr (SumMass) {
@@ -162,20 +164,24 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
       detail::add_upper<reached_columns<Cols, Sp, X>>(out.M, v, mv);
     }
     if constexpr (Forcing)
-      detail::add_transposed<Cols::template kinds<detail::nonzero_columns<Sp, X, R>()>()>(
-          out.f, v, Eigen::Matrix<S, 3, 1>(mass * (gravity() - a0)));
+      detail::add_transposed<Cols::template kinds<detail::nonzero_columns<Sp, X, A>()>()>(
+          out.f, v, Eigen::Matrix<S, 3, 1>(mass * (gravity(in) - a0)));
   };
   [&]<class... X>(detail::list<X...>) {
     (
         [&] {
           if constexpr (detail::is_particle<X>) {
             using P = typename X::point;
-            mass(velocity<R, P>(), acceleration<R, P>(), X::mass);
+            mass(std::type_identity<R>{}, velocity<R, P>(), acceleration<R, P>(), X::mass);
           } else if constexpr (detail::is_body<X>) {
             using B = typename X::frame;
             using P = typename X::centre;
             using I = typename X::inertia_type;
-            mass(velocity<R, P>(), acceleration<R, P>(), X::mass);
+            // the mass terms in B where its partial velocities are constants there alone
+            constexpr bool in_body = !is_recalling<Ev> && !columns_known_in<Sp, R>(velocity<R, P>()).known &&
+                                     columns_known_in<Sp, B>(velocity<R, P>()).known;
+            mass(std::type_identity<std::conditional_t<in_body, B, R>>{}, velocity<R, P>(),
+                 acceleration<R, P>(), X::mass);
             using A = typename frame_of_columns<columns_t<Sp, decltype(angular_velocity<R, B>())>,
                                                 list<R, typename I::frame>, is_recalling<Ev>>::type;
             Eigen::Matrix<S, 3, 1> alpha0;
