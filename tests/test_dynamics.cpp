@@ -250,6 +250,17 @@ TEST_CASE("dynamics: an inertia symmetric about a joint axis, given in the joint
 #include "../examples/models/gyrostat.hpp"
 #include "../examples/models/heavy_top.hpp"
 
+namespace {
+// The gyrostat with B's mass Mass and the wheel's inertia given in F, its axial moment J.
+template <auto Mass, class F, auto J>
+using gyrostat_with = kane::system<
+    kane::rigid_body<models::gyrostat::B, models::gyrostat::Bo, Mass,
+                     kane::inertia<models::gyrostat::B, models::gyrostat::Bo, kane::literal(1.2),
+                                   kane::literal(1.5), kane::literal(1.9)>>,
+    kane::rigid_body<models::gyrostat::W, models::gyrostat::Bo, kane::literal(0.5),
+                     kane::inertia<F, models::gyrostat::Bo, kane::literal(0.01), kane::literal(0.01), J>>>;
+}  // namespace
+
 // Body rates as speeds (partial angular velocities the frame's unit vectors), sums in the
 // body's frame, the Euler-parameter rows solved in closed form: closed forms by hand.
 TEST_CASE("dynamics: a heavy top and a gyrostat with body rates against Euler's equations") {
@@ -277,12 +288,7 @@ TEST_CASE("dynamics: a heavy top and a gyrostat with body rates against Euler's 
   namespace gs = models::gyrostat;
   kane::motion<gs::system, gs::evaluator> body(gs::state{});
   // the wheel's inertia given in the spinning wheel's own frame: symmetric about w3, the same dyadic
-  using in_wheel = kane::system<kane::rigid_body<gs::B, gs::Bo, kane::literal(10),
-                                                 kane::inertia<gs::B, gs::Bo, kane::literal(1.2),
-                                                               kane::literal(1.5), kane::literal(1.9)>>,
-                                kane::rigid_body<gs::W, gs::Bo, kane::literal(0.5),
-                                                 kane::inertia<gs::W, gs::Bo, kane::literal(0.01),
-                                                               kane::literal(0.01), kane::literal(0.02)>>>;
+  using in_wheel = gyrostat_with<kane::literal(10), gs::W, kane::literal(0.02)>;
   kane::motion<in_wheel, gs::evaluator> body_w(gs::state{});
   for (int k = 0; k < 20; ++k) {
     std::array<double, 14> x{}, dx{}, dw{};
@@ -315,13 +321,7 @@ TEST_CASE("dynamics: a heavy top and a gyrostat with body rates against Euler's 
 // known M^-1 and by a Cholesky factorization. A speed that moves no mass is singular.
 TEST_CASE("dynamics: an M known at compile time, against the M of Kane's sums") {
   namespace gs = models::gyrostat;
-  using summed_system =
-      kane::system<kane::rigid_body<gs::B, gs::Bo, kane::parameter<1>{},
-                                    kane::inertia<gs::B, gs::Bo, kane::literal(1.2), kane::literal(1.5),
-                                                  kane::literal(1.9)>>,
-                   kane::rigid_body<gs::W, gs::Bo, kane::literal(0.5),
-                                    kane::inertia<gs::B, gs::Bo, kane::literal(0.01), kane::literal(0.01),
-                                                  kane::literal(0.02)>>>;
+  using summed_system = gyrostat_with<kane::parameter<1>{}, gs::B, kane::literal(0.02)>;
   using summed_state = kane::state<double, 7, 7, 1>;
   using summed_evaluator =
       kane::evaluator<summed_state, kane::frames<gs::W>, kane::level::acceleration, gs::speeds>;
@@ -356,12 +356,7 @@ TEST_CASE("dynamics: an M known at compile time, against the M of Kane's sums") 
   const Eigen::Matrix<double, 7, 1> ref = e.M.llt().solve(e.f);
   for (int r = 0; r < 7; ++r) CHECK(ud(r) == Approx(ref(r)).margin(1e-13));
   // the wheel without axial inertia: u7 moves no mass
-  using massless_spin = kane::system<kane::rigid_body<gs::B, gs::Bo, kane::literal(10),
-                                                      kane::inertia<gs::B, gs::Bo, kane::literal(1.2),
-                                                                    kane::literal(1.5), kane::literal(1.9)>>,
-                                     kane::rigid_body<gs::W, gs::Bo, kane::literal(0.5),
-                                                      kane::inertia<gs::B, gs::Bo, kane::literal(0.01),
-                                                                    kane::literal(0.01), kane::literal(0)>>>;
+  using massless_spin = gyrostat_with<kane::literal(10), gs::B, kane::literal(0)>;
   STATIC_REQUIRE(kane::detail::known_mass_matrix<massless_spin, gs::N, gs::speeds>.known);
   STATIC_REQUIRE(!kane::detail::known_inverse<massless_spin, gs::N, gs::speeds>.known);
   kane::motion<massless_spin, gs::evaluator> rhs(s);
