@@ -28,7 +28,13 @@ KANE_ALWAYS_INLINE void edge_columns(S* cf, const S* parent, const Trig& t, cons
   using P = typename F::tree_parent;
   constexpr bool below_root = std::is_void_v<typename P::tree_parent>;
   Eigen::Map<matrix3> m(cf);
-  if constexpr (matrix_edge<F>) {
+  if constexpr (euler_edge<F>) {  // the evaluator's Euler parameters are of unit norm
+    constexpr auto i = F::step::coordinates;
+    matrix3 e;  // (^P P^F)^T
+    quaternion_columns(below_root ? cf : e.data(), st.q[i[0] - 1], st.q[i[1] - 1], st.q[i[2] - 1],
+                       st.q[i[3] - 1], S(1));
+    if constexpr (!below_root) m.noalias() = Eigen::Map<const matrix3>(parent) * e;
+  } else if constexpr (matrix_edge<F>) {
     const matrix3 e = F::step::template matrix<S>(t, st);
     if constexpr (below_root)
       m = e.transpose();

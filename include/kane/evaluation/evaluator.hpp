@@ -258,9 +258,10 @@ class evaluator<St, frames<Fs...>, Level, Given>
             using std::sqrt;
             constexpr auto c = F::step::coordinates;
             scalar n2 = scalar(0);
-            for (std::size_t i : c) n2 += st_.q[i - 1] * st_.q[i - 1];
+            detail::static_for_inline<4>(
+                [&](auto i) KANE_ALWAYS_INLINE_LAMBDA { n2 += st_.q[c[i] - 1] * st_.q[c[i] - 1]; });
             const scalar k = scalar(1) / sqrt(n2);
-            for (std::size_t i : c) st_.q[i - 1] *= k;
+            detail::static_for_inline<4>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { st_.q[c[i] - 1] *= k; });
             residue += k - k;
           }
         }(),

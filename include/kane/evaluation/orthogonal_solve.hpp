@@ -32,8 +32,9 @@ constexpr bool orthogonal_form() {
   return ok;
 }
 // The numbers of X = M^-1 for an orthogonal_form; singular for a zero row, not_finite for NaN
-// or inf. The zeros and ones of X are not written.
-template <class Sys, class S>
+// or inf. The zeros and ones of X are not written. A row r with Inverse[r] != 0 is known to
+// have 1 / |row|^2 = Inverse[r] (+-c q_i over Euler parameters of unit norm).
+template <class Sys, auto Inverse = std::array<double, Sys::n>{}, class S>
 KANE_ALWAYS_INLINE solve_status solve_orthogonal(const table<S, Sys::n, Sys::n>& m,
                                                  table<S, Sys::n, Sys::n>& x) {
   S residue = S(0);  // NaN or inf in a row, or a row norm that overflows
@@ -48,11 +49,14 @@ KANE_ALWAYS_INLINE solve_status solve_orthogonal(const table<S, Sys::n, Sys::n>&
           constexpr std::size_t c = Sys::form.order[first + e];
           v[e] = Sys::m[row][c] == entry::one ? S(1) : Sys::m[row][c] == entry::zero ? S(0) : m[row][c];
         });
-        S n2 = S(0);
-        static_for<size>([&](auto e) { n2 += v[e] * v[e]; });
-        singular = singular || n2 == S(0);
-        const S k = S(1) / n2;
-        residue += k - k;
+        S k = S(Inverse[row]);
+        if constexpr (Inverse[row] == 0) {
+          S n2 = S(0);
+          static_for<size>([&](auto e) { n2 += v[e] * v[e]; });
+          singular = singular || n2 == S(0);
+          k = S(1) / n2;
+          residue += k - k;
+        }
         static_for<size>([&](auto e) {
           constexpr std::size_t c = Sys::form.order[first + e];
           if constexpr (Sys::x[c][row] == entry::other) x[c][row] = v[e] * k;

@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
 #include "kane/frames/angle.hpp"
 #include "kane/frames/axis.hpp"
@@ -55,14 +56,21 @@ constexpr bool valid_sequence() {
   return I >= 1 && I <= 3 && J >= 1 && J <= 3 && K >= 1 && K <= 3 && I != J && J != K;
 }
 
+// |e|^2 ^P P^C of the Euler parameters e = (a, b, c, d), transposed (^C P^P: its columns are
+// c_1, c_2, c_3 in P), column after column into m; k = 1/|e|^2 (1 where e is of unit norm).
+template <class S>
+KANE_ALWAYS_INLINE void quaternion_columns(S* m, S a, S b, S c, S d, S k) {
+  const S aa = a * a, bb = b * b, cc = c * c, dd = d * d, w = 2 * k;
+  m[0] = k * (aa + bb - cc - dd), m[1] = w * (b * c + a * d), m[2] = w * (b * d - a * c);
+  m[3] = w * (b * c - a * d), m[4] = k * (aa - bb + cc - dd), m[5] = w * (c * d + a * b);
+  m[6] = w * (b * d + a * c), m[7] = w * (c * d - a * b), m[8] = k * (aa - bb - cc + dd);
+}
 // ^P P^C of the Euler parameters (a, b, c, d), divided by their squared norm.
 template <class S>
 Eigen::Matrix<S, 3, 3> quaternion_matrix(S a, S b, S c, S d) {
-  const S aa = a * a, bb = b * b, cc = c * c, dd = d * d, k = S(1) / (aa + bb + cc + dd), w = 2 * k;
   Eigen::Matrix<S, 3, 3> m;
-  m << k * (aa + bb - cc - dd), w * (b * c + a * d), w * (b * d - a * c),  //
-      w * (b * c - a * d), k * (aa - bb + cc - dd), w * (c * d + a * b),   //
-      w * (b * d + a * c), w * (c * d - a * b), k * (aa - bb - cc + dd);
+  quaternion_columns(m.data(), a, b, c, d, S(1) / (a * a + b * b + c * c + d * d));
+  m.transposeInPlace();
   return m;
 }
 
