@@ -89,10 +89,10 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> forward_at(const Ev& ev) {
   } else if constexpr (known_masses<Sys, Ev>()) {
     constexpr auto inverse =
         known_inverse<Sys, typename Ev::root, speeds_of<Ev>>;  // M^-1, a table of numbers
-    const auto e = mass_matrix_and_forcing_at<Sys, RestRates>(ev);
     if constexpr (!inverse.known)
-      return speed_derivatives(e);  // singular
+      return speed_derivatives(mass_matrix_and_forcing_at<Sys, RestRates>(ev));  // singular
     else {
+      const auto e = equations_along<Sys, RestRates, true, false>(ev, all_speeds<n>{});
       Eigen::Matrix<S, int(n), 1> ud = times_known<inverse>(e.f);
       solve_status status = e.status;
       if (status == solve_status::ok && !all_finite_matrix(ud)) status = solve_status::not_finite;

@@ -132,22 +132,38 @@ class motion {
     if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
       return;
     else if constexpr (detail::recursive_form<Sys, Ev>)
-      ev_.update(s_);
+      ev_.template update_for<every_read>(s_);
     else  // Kane's sums read a few angular accelerations and q'' (evaluation/reads.hpp)
       ev_.template update_for<equation_reads>(s_);
     const auto [ud, status] = detail::forward_at<Sys, true>(ev_);
-    const auto qd = ev_.coordinate_rates();
     status_ = status;
-    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
-    for (std::size_t i = 0; i < nq; ++i) dxdt[i] = status == solve_status::ok ? qd[i] : nan;
+    if (status == solve_status::ok) {  // else q' may be finite (u' is NaN)
+      const auto qd = ev_.coordinate_rates();
+      for (std::size_t i = 0; i < nq; ++i) dxdt[i] = qd[i];
+    } else
+      for (std::size_t i = 0; i < nq; ++i) dxdt[i] = std::numeric_limits<scalar>::quiet_NaN();
     for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = ud(Eigen::Index(i));
   }
 
+  struct every_read {  // every angular acceleration and q'', at u' = 0
+    static constexpr auto alpha = [] {
+      std::array<bool, detail::size<typename Ev::closure>::value> a{};
+      a.fill(true);
+      return a;
+    }();
+    static constexpr auto qdd = [] {
+      std::array<bool, nq> a{};
+      a.fill(true);
+      return a;
+    }();
+    static constexpr bool rest = true;
+  };
   struct equation_reads {
     static constexpr auto reads = detail::acceleration_reads_of<Ev>(
         decltype(detail::system_terms<typename Ev::root, detail::speeds_of<Ev>>(typename Sys::items{})){});
     static constexpr auto alpha = reads.alpha;
     static constexpr auto qdd = reads.qdd;
+    static constexpr bool rest = true;  // u' = 0
   };
   state_type s_;
   Ev ev_;

@@ -49,6 +49,12 @@ struct equations_of_motion {
 };
 
 namespace detail {
+// f alone, where M is known at compile time (known_mass_matrix.hpp)
+template <class S, std::size_t N>
+struct forcing_only {
+  Eigen::Matrix<S, int(N), 1> f;
+  solve_status status;
+};
 template <class R, class X, class Ev>
 Eigen::Matrix<typename Ev::scalar, 3, 1> in_root(const X& x, const Ev& ev) {
   return express_in<R>(x, ev).eigen();
@@ -226,9 +232,10 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
 // M and f along the columns Cols; RestRates: the caller's state has u' = 0 (the
 // right-hand sides of motion.hpp), so the bias accelerations are the evaluator's
 // (a - v u' would multiply by zeros); without Forcing, M alone (f stays 0: no
-// velocity, acceleration or load is read).
-template <class Sys, bool RestRates, bool Forcing, class Ev, class Cols>
-equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, const Cols& cols) {
+// velocity, acceleration or load is read). WithM false: where M is known, f alone (forcing_only),
+// not checked (the caller checks u' = M^-1 f).
+template <class Sys, bool RestRates, bool Forcing, bool WithM = true, class Ev, class Cols>
+auto equations_along(const Ev& ev, const Cols& cols) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using Sp = detail::speeds_of<Ev>;
@@ -240,16 +247,26 @@ equations_of_motion<typename Ev::scalar, Cols::n> equations_along(const Ev& ev, 
     else
       return false;
   }();
-  equations_of_motion<S, n> out{Eigen::Matrix<S, int(n), int(n)>::Zero(), Eigen::Matrix<S, int(n), 1>::Zero(),
-                                ev.status()};
-  if constexpr (known)  // symmetric: rows or columns alike
-    out.M = Eigen::Map<const Eigen::Matrix<double, int(n), int(n)>>(known_mass_matrix<Sys, R, Sp>.m.data())
-                .template cast<S>();
+  using result = std::conditional_t<known && !WithM, forcing_only<S, n>, equations_of_motion<S, n>>;
+  result out = [&] {
+    if constexpr (known && !WithM)
+      return result{Eigen::Matrix<S, int(n), 1>::Zero(), ev.status()};
+    else if constexpr (known)  // symmetric: rows or columns alike
+      return result{
+          Eigen::Map<const Eigen::Matrix<double, int(n), int(n)>>(known_mass_matrix<Sys, R, Sp>.m.data())
+              .template cast<S>(),
+          Eigen::Matrix<S, int(n), 1>::Zero(), ev.status()};
+    else
+      return result{Eigen::Matrix<S, int(n), int(n)>::Zero(), Eigen::Matrix<S, int(n), 1>::Zero(),
+                    ev.status()};
+  }();
   const auto ud = detail::speed_rates(ev);
   detail::with_common_subexpressions(system_terms<R, Sp>(typename Sys::items{}), ev, [&](const auto& e) {
     add_items<Sys, RestRates, Forcing, !known>(out, e, cols, ud);
   });
   if constexpr (!known) out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
+  if constexpr (known && !WithM)  // the caller checks M^-1 f: a NaN or inf of f reaches it
+    return out;
   const bool finite = [&] {  // numbers: M's diagonal suffices (M = sum m V^T V + W^T I W)
     if constexpr (known)
       return detail::all_finite_matrix(out.f);

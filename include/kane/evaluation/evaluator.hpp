@@ -186,14 +186,21 @@ class evaluator<St, frames<Fs...>, Level, Given>
   static constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
 
   // 0 if the rates this level reads (q' or u, then q'' or u') are finite, NaN if not.
+  template <bool Rest = false>
   static scalar rates_residue(const St& s) {
     scalar residue = scalar(0);
     if constexpr (velocity)
       residue += solves ? detail::nonfinite_residue(s.u) : detail::nonfinite_residue(s.qd);
-    if constexpr (acceleration)
+    if constexpr (acceleration && !Rest)
       residue += solves ? detail::nonfinite_residue(s.ud) : detail::nonfinite_residue(s.qdd);
     return residue;
   }
+
+  // Reads::rest: u' = 0, not read from the state (motion.hpp)
+  template <class Reads>
+  static constexpr bool rests = requires {
+    Reads::rest;
+  };
 
   struct everything {
     static constexpr auto alpha = pass_type::every_frame::alpha;
@@ -206,12 +213,14 @@ class evaluator<St, frames<Fs...>, Level, Given>
     const bool rotations = attitudes(closure{});       // NaN in st_ where not
     if constexpr (!solves)
       st_.qd = s.qd, st_.qdd = s.qdd;
+    else if constexpr (Rates && rests<Reads>)
+      st_.u = s.u, st_.ud = {};
     else if constexpr (Rates)
       st_.u = s.u, st_.ud = s.ud;
     const auto tr = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
     scalar residue =
         detail::nonfinite_residue(s.q) + detail::nonfinite_residue(s.p) + (s.t - s.t) + norm_residue;
-    if constexpr (Rates) residue += rates_residue(s);
+    if constexpr (Rates) residue += rates_residue<rests<Reads>>(s);
     const bool finite = residue == scalar(0);
     this->status_ = !finite     ? solve_status::not_finite
                     : rotations ? solve_status::ok
@@ -236,7 +245,7 @@ class evaluator<St, frames<Fs...>, Level, Given>
       this->template pass<false, true, false>(tr, *this);
     }
     if constexpr (acceleration) {
-      this->template solve_accelerations<Reads>(*this, s);
+      this->template solve_accelerations<Reads>(*this, st_);  // u' as copied (or 0)
       this->template pass<false, false, true, Reads>(tr, *this);
     }
   }

@@ -256,7 +256,7 @@ class kinematic_equations {
     }
     if (status_ == solve_status::ok && !all_finite(qd_)) status_ = solve_status::not_finite;
     if (status_ != solve_status::ok)  // a branch, as for q'': as products (nan_unless) they measured slower
-      qd_.fill(std::numeric_limits<scalar>::quiet_NaN());
+      fill_nan(qd_);
   }
   // (W v)_c (+ X_c) for v zero beyond its first Cols entries, skipping the zeros of W and X.
   template <std::size_t C, bool Offset, std::size_t Cols, class V>
@@ -326,7 +326,7 @@ class kinematic_equations {
       if constexpr (Reads::qdd[c]) finite = finite & (qdd_[c] - qdd_[c] == scalar(0));
     });
     if (status_ == solve_status::ok && !finite) status_ = solve_status::not_finite;
-    if (status_ != solve_status::ok) qdd_.fill(nan);
+    if (status_ != solve_status::ok) fill_nan(qdd_);
   }
 
   solve_status status_ = solve_status::ok;

@@ -164,7 +164,7 @@ class outward_pass {
     else if constexpr (Velocity)
       velocity_edge<F>(rates);
     if constexpr (Skipped)
-      a_[index<F>()].fill(std::numeric_limits<scalar>::quiet_NaN());
+      fill_nan(a_[index<F>()]);
     else if constexpr (Acceleration && component_speeds_in<closure, F, Rates>() != 0)
       store3(a_[index<F>()].data(), components_value<F, 1>(rates));
     else if constexpr (Acceleration)
