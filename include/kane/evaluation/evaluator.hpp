@@ -119,7 +119,8 @@ class evaluator<St, frames<Fs...>, Level, Given>
 
   // update(s) for the reads of one computation (motion.hpp): at the acceleration level the
   // angular accelerations of the frames of Reads::alpha (by closure index) and the q'' of
-  // Reads::qdd (by coordinate) only; the others are NaN.
+  // Reads::qdd (by coordinate) only; the others are NaN. With Reads::rest, u' (or q'') is 0,
+  // not read from s.
   template <class Reads>
   KANE_INLINE_FLATTEN void update_for(const St& s) {
     pass_at<true, Reads>(s);
@@ -211,7 +212,9 @@ class evaluator<St, frames<Fs...>, Level, Given>
     st_.q = s.q, st_.p = s.p, st_.t = s.t, st_.r = s.r, updated_ = true;
     const scalar norm_residue = normalise(closure{});  // Euler parameters of unit norm
     const bool rotations = attitudes(closure{});       // NaN in st_ where not
-    if constexpr (!solves)
+    if constexpr (!solves && rests<Reads>)
+      st_.qd = s.qd, st_.qdd = {};
+    else if constexpr (!solves)
       st_.qd = s.qd, st_.qdd = s.qdd;
     else if constexpr (Rates && rests<Reads>)
       st_.u = s.u, st_.ud = {};
