@@ -276,6 +276,11 @@ TEST_CASE("dynamics: a heavy top and a gyrostat with body rates against Euler's 
     REQUIRE(top.status() == kane::solve_status::ok);
     // Euler about O: I1 = 0.02 + m l^2, the gravity torque m g l s2 (c3 c1 - s3 c2)
     const double I1 = 0.02 + 1.5 * 0.09, I3 = 0.035, h = 1.5 * 9.81 * 0.3 / I1;
+    // the evaluator at this call's state: T = (I1 (u1^2 + u2^2) + I3 u3^2) / 2 about O
+    const auto ev = top.evaluator();
+    CHECK(ev.state().q[1] == x[1]);
+    CHECK(kane::kinetic_energy<ht::system>(ev) ==
+          Approx((I1 * (x[3] * x[3] + x[4] * x[4]) + I3 * x[5] * x[5]) / 2).margin(1e-13));
     const double s2 = std::sin(x[1]), c2 = std::cos(x[1]), s3 = std::sin(x[2]), c3 = std::cos(x[2]);
     const double q1d = (s3 * x[3] + c3 * x[4]) / s2;
     CHECK(dx[0] == Approx(q1d).margin(1e-12));

@@ -112,9 +112,14 @@ class motion {
   solve_status status() const { return status_; }
   // The inputs r of the calls from now on (a controller's torques), kept between calls.
   typename state_type::inputs_type& inputs() { return s_.r; }
-  // The evaluator at the last call's state (energies, positions, ...; of its accelerations, at
-  // u' = 0, only those the equations read are computed, the others NaN).
-  const Ev& evaluator() const { return ev_; }
+  // An evaluator updated at the last call's state (before the first call, s's), u' = 0: energies,
+  // positions, ... (each call evaluates in a local one, so that the compiler drops what its
+  // equations do not read).
+  Ev evaluator() const {
+    Ev ev;
+    ev.update(s_);
+    return ev;
+  }
 
  private:
   template <class X, class DX>
@@ -129,16 +134,17 @@ class motion {
     detail::copy_wide<nq>(s_.q.data(), x, 0);
     detail::copy_wide<nu>(u.data(), x, nq);
     s_.t = time;
+    Ev ev;
     if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
       return;
     else if constexpr (detail::recursive_form<Sys, Ev>)
-      ev_.template update_for<every_read>(s_);
+      ev.template update_for<every_read>(s_);
     else  // Kane's sums read a few angular accelerations and q'' (evaluation/reads.hpp)
-      ev_.template update_for<equation_reads>(s_);
-    const auto [ud, status] = detail::forward_at<Sys, true>(ev_);
+      ev.template update_for<equation_reads>(s_);
+    const auto [ud, status] = detail::forward_at<Sys, true>(ev);
     status_ = status;
     if (status == solve_status::ok) {  // else q' may be finite (u' is NaN)
-      const auto qd = ev_.coordinate_rates();
+      const auto qd = ev.coordinate_rates();
       for (std::size_t i = 0; i < nq; ++i) dxdt[i] = qd[i];
     } else
       for (std::size_t i = 0; i < nq; ++i) dxdt[i] = std::numeric_limits<scalar>::quiet_NaN();
@@ -166,7 +172,6 @@ class motion {
     static constexpr bool rest = true;  // u' = 0
   };
   state_type s_;
-  Ev ev_;
   solve_status status_ = solve_status::ok;
 };
 
