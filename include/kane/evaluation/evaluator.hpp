@@ -28,6 +28,7 @@
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
 #include "kane/detail/v3.hpp"
+#include "kane/evaluation/attitudes.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/kinematic_equations.hpp"
 #include "kane/evaluation/outward_pass.hpp"
@@ -210,8 +211,8 @@ class evaluator<St, frames<Fs...>, Level, Given>
   template <bool Rates, class Reads = everything>
   KANE_ALWAYS_INLINE void pass_at(const St& s) {
     st_.q = s.q, st_.p = s.p, st_.t = s.t, st_.r = s.r, updated_ = true;
-    const scalar norm_residue = normalise(closure{});  // Euler parameters of unit norm
-    const bool rotations = attitudes(closure{});       // NaN in st_ where not
+    const scalar norm_residue = detail::normalise(st_, closure{});  // Euler parameters of unit norm
+    const bool rotations = detail::attitudes(st_, closure{});       // NaN in st_ where not
     if constexpr (!solves && rests<Reads>)
       st_.qd = s.qd, st_.qdd = {};
     else if constexpr (!solves)
@@ -258,46 +259,6 @@ class evaluator<St, frames<Fs...>, Level, Given>
     if (const scalar residue = rates_residue(s); this->status_ == solve_status::ok && !(residue == scalar(0)))
       this->status_ = solve_status::not_finite;
     rates_at(s, this->cached_trig());
-  }
-
-  // e / |e| for the Euler parameters e of each frame; 0, or NaN for |e| zero or not finite.
-  template <class... F>
-  KANE_ALWAYS_INLINE scalar normalise(detail::list<F...>) {
-    scalar residue = scalar(0);
-    (
-        [&] {
-          if constexpr (detail::euler_edge<F>) {
-            using std::sqrt;
-            constexpr auto c = F::step::coordinates;
-            scalar n2 = scalar(0);
-            detail::static_for_inline<4>(
-                [&](auto i) KANE_ALWAYS_INLINE_LAMBDA { n2 += st_.q[c[i] - 1] * st_.q[c[i] - 1]; });
-            const scalar k = scalar(1) / sqrt(n2);
-            detail::static_for_inline<4>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { st_.q[c[i] - 1] *= k; });
-            residue += k - k;
-          }
-        }(),
-        ...);
-    return residue;
-  }
-
-  // Each attitude of the state is a rotation; where one is not, its numbers in st_ become NaN.
-  template <class... F>
-  KANE_ALWAYS_INLINE bool attitudes(detail::list<F...>) {
-    bool all = true;
-    (
-        [&] {
-          if constexpr (detail::attitude_edge<F>) {
-            using src = typename F::step::source;
-            if (!F::step::rotation(st_)) {
-              for (std::size_t i = 0; i < src::count; ++i)
-                st_.p[src::first - 1 + i] = std::numeric_limits<scalar>::quiet_NaN();
-              all = false;
-            }
-          }
-        }(),
-        ...);
-    return all;
   }
 
   St st_;

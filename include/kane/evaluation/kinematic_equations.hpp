@@ -24,44 +24,6 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
-// c and i where X is +-c q_i (c > 0 a constant), else c = 0.
-struct scaled_coordinate {
-  double c = 0;
-  std::size_t i = 0;
-};
-template <class X>
-constexpr scaled_coordinate as_scaled_coordinate() {
-  if constexpr (coordinate_info<X>::value) {
-    if constexpr (X::order == 0) return {1.0, X::index};
-    return {};
-  } else if constexpr (is_v<X, neg>)
-    return as_scaled_coordinate<std::remove_cvref_t<decltype(X::x)>>();
-  else if constexpr (is_v<X, mul> && requires { std::remove_cvref_t<decltype(X::l)>::num; }) {
-    using L = std::remove_cvref_t<decltype(X::l)>;
-    scaled_coordinate r = as_scaled_coordinate<std::remove_cvref_t<decltype(X::r)>>();
-    r.c *= double(L::num < 0 ? -L::num : L::num) / double(L::den);
-    return r;
-  } else
-    return {};
-}
-
-// The four i are the Euler parameters of a frame of Closure (of unit norm in the evaluator).
-template <class... F>
-constexpr bool euler_parameters_of(list<F...>, const std::array<std::size_t, 4>& i) {
-  const auto of = [&](const auto& c) {
-    bool all = true;
-    for (std::size_t a : i) all = all && (a == c[0] || a == c[1] || a == c[2] || a == c[3]);
-    return all && i[0] != i[1] && i[0] != i[2] && i[0] != i[3] && i[1] != i[2] && i[1] != i[3] &&
-           i[2] != i[3];
-  };
-  return ([&] {
-    if constexpr (euler_edge<F>)
-      return of(F::step::coordinates);
-    else
-      return false;
-  }() || ...);
-}
-
 // Speeds: void to read q' and q'' from the state; a speed set to solve them from u and u'.
 template <class St, class Speeds>
 class kinematic_equations {
@@ -174,37 +136,6 @@ class kinematic_equations {
       return system::offset;
   }
 
-  // 1 / |Y_r|^2 where each number of Y's row r is +-c q_i, one c, over the Euler parameters
-  // of a frame of Closure; else 0.
-  template <class Closure, std::size_t R>
-  static constexpr double inverse_norm() {
-    std::array<scaled_coordinate, nq> e{};
-    bool ok = true;
-    static_for<nq>([&](auto c) {
-      if constexpr (system::m[R][c] == entry::other)
-        e[c] =
-            as_scaled_coordinate<std::remove_cv_t<decltype(diff(definition<R>(), coordinate<c + 1, 1>{}))>>();
-      else if constexpr (system::m[R][c] == entry::one)
-        ok = false;
-    });
-    std::array<std::size_t, 4> i{};
-    std::size_t n = 0;
-    double c = 0;
-    for (std::size_t k = 0; k < nq; ++k)
-      if (system::m[R][k] == entry::other) {
-        ok = ok && e[k].c > 0 && n < 4 && (c == 0 || e[k].c == c);
-        if (ok) i[n++] = e[k].i, c = e[k].c;
-      }
-    return ok && n == 4 && euler_parameters_of(Closure{}, i) ? 1 / (c * c) : 0;
-  }
-  template <class Closure>
-  static constexpr std::array<double, nq> inverse_norms() {
-    return []<std::size_t... R>(std::index_sequence<R...>) {
-      return std::array<double, nq>{inverse_norm<Closure, R>()...};
-    }
-    (std::make_index_sequence<nq>{});
-  }
-
   // Y q' + Z = u, so q' = W u + X with W = Y^-1 (evaluation/block_solve.hpp) and X = -W Z:
   // W and X depend on q alone. The zeros and ones of W are written once, by the constructor.
   // status_ holds the check of the state; a failure there or here makes W's numbers and X NaN.
@@ -220,7 +151,7 @@ class kinematic_equations {
     });
     const solve_status solved = [&] {
       if constexpr (!direct && orthogonal_form<system>())
-        return solve_orthogonal<system, inverse_norms<typename Ev::closure>()>(y, kde_w_);
+        return solve_orthogonal<system, inverse_norms<system, Speeds, typename Ev::closure>()>(y, kde_w_);
       else
         return solve_structured<system, false>(y, y, kde_w_);
     }();
