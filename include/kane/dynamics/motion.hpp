@@ -57,6 +57,13 @@ constexpr bool sizes_checked() {
 }  // namespace detail
 
 namespace detail {
+// N trues
+template <std::size_t N>
+constexpr std::array<bool, N> every() {
+  std::array<bool, N> a{};
+  a.fill(true);
+  return a;
+}
 // x's numbers one after the other in memory: a C array, a std::array, an Eigen vector or map of unit
 // inner stride
 template <class X>
@@ -152,16 +159,8 @@ class motion {
   }
 
   struct every_read {  // every angular acceleration and q'', at u' = 0
-    static constexpr auto alpha = [] {
-      std::array<bool, detail::size<typename Ev::closure>::value> a{};
-      a.fill(true);
-      return a;
-    }();
-    static constexpr auto qdd = [] {
-      std::array<bool, nq> a{};
-      a.fill(true);
-      return a;
-    }();
+    static constexpr auto alpha = detail::every<detail::size<typename Ev::closure>::value>();
+    static constexpr auto qdd = detail::every<nq>();
     static constexpr bool rest = true;
   };
   struct equation_reads {
@@ -178,7 +177,7 @@ class motion {
 namespace detail {
 // s at the independent speeds x[nq + k]: u_dep = A u_ind + B from the constraints NH at s's q and t,
 // and ev updated to s (pose, then speeds); the constraints' solution.
-template <class NH, class Ev, class St, class X>
+template <class NH, class Reads = void, class Ev, class St, class X>
 auto update_at_independent_speeds(Ev& ev, St& s, const X& x) {
   constexpr std::size_t nq = St::nq;
   for (std::size_t k = 0; k < NH::p; ++k) s.u[NH::independents[k] - 1] = x[nq + k];
@@ -189,7 +188,10 @@ auto update_at_independent_speeds(Ev& ev, St& s, const X& x) {
     for (std::size_t k = 0; k < NH::p; ++k) u += sol.A(Eigen::Index(j), Eigen::Index(k)) * x[nq + k];
     s.u[NH::dependents[j] - 1] = u;
   }
-  ev.update_speeds(s);
+  if constexpr (std::is_void_v<Reads>)
+    ev.update_speeds(s);
+  else
+    ev.template update_speeds_for<Reads>(s);
   return sol;
 }
 }  // namespace detail
@@ -220,8 +222,13 @@ class constrained_motion {
   solve_status status() const { return status_; }
   // the inputs r of the calls from now on, kept between calls
   typename state_type::inputs_type& inputs() { return s_.r; }
-  // the evaluator at the last call's state
-  const Ev& evaluator() const { return ev_; }
+  // An evaluator updated at the last call's state (before the first call, s's), u' = 0 (each call
+  // evaluates in a local one).
+  Ev evaluator() const {
+    Ev ev;
+    ev.update(s_);
+    return ev;
+  }
   // The state of the last call, its dependent speeds solved.
   const state_type& state() const { return s_; }
 
@@ -230,18 +237,23 @@ class constrained_motion {
   void step(const X& x, DX& dxdt, scalar time) {
     for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
     s_.t = time;
-    const auto sol = detail::update_at_independent_speeds<NH>(ev_, s_, x);
+    Ev ev;
+    const auto sol = detail::update_at_independent_speeds<NH, every_read>(ev, s_, x);
     const auto [ud, status] =
-        speed_derivatives(detail::reduced_mass_matrix_and_forcing_at<Sys, NH, true>(ev_, sol).reduced);
-    const auto qd = ev_.coordinate_rates();
+        speed_derivatives(detail::reduced_mass_matrix_and_forcing_at<Sys, NH, true>(ev, sol).reduced);
+    const auto qd = ev.coordinate_rates();
     status_ = status;
     const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
     for (std::size_t i = 0; i < nq; ++i) dxdt[i] = status == solve_status::ok ? qd[i] : nan;
     for (std::size_t k = 0; k < p; ++k) dxdt[nq + k] = ud(Eigen::Index(k));
   }
 
+  struct every_read {  // every angular acceleration and q'' (the constraints' derivatives read them), u' = 0
+    static constexpr auto alpha = detail::every<detail::size<typename Ev::closure>::value>();
+    static constexpr auto qdd = detail::every<nq>();
+    static constexpr bool rest = true;
+  };
   state_type s_;
-  Ev ev_;
   solve_status status_ = solve_status::ok;
 };
 

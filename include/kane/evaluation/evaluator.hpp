@@ -118,6 +118,12 @@ class evaluator<St, frames<Fs...>, Level, Given>
     speeds_at(s);
   }
 
+  // update_speeds(s) for the reads of one computation, as update_for
+  template <class Reads>
+  KANE_INLINE_FLATTEN void update_speeds_for(const St& s) requires(solves) {
+    speeds_at<Reads>(s);
+  }
+
   // update(s) for the reads of one computation (motion.hpp): at the acceleration level the
   // angular accelerations of the frames of Reads::alpha (by closure index) and the q'' of
   // Reads::qdd (by coordinate) only; the others are NaN. With Reads::rest, u' (or q'') is 0,
@@ -253,12 +259,18 @@ class evaluator<St, frames<Fs...>, Level, Given>
       this->template pass<false, false, true, Reads>(tr, *this);
     }
   }
+  template <class Reads = everything>
   KANE_ALWAYS_INLINE void speeds_at(const St& s) {
     assert(updated_ && "kane: update_speeds after update_pose");
-    st_.u = s.u, st_.ud = s.ud;
-    if (const scalar residue = rates_residue(s); this->status_ == solve_status::ok && !(residue == scalar(0)))
+    st_.u = s.u;
+    if constexpr (rests<Reads>)
+      st_.ud = {};
+    else
+      st_.ud = s.ud;
+    if (const scalar residue = rates_residue<rests<Reads>>(s);
+        this->status_ == solve_status::ok && !(residue == scalar(0)))
       this->status_ = solve_status::not_finite;
-    rates_at(s, this->cached_trig());
+    rates_at<Reads>(s, this->cached_trig());
   }
 
   St st_;
