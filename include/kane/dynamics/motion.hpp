@@ -54,9 +54,6 @@ constexpr bool sizes_checked() {
                 "declare them with motion::size entries");
   return true;
 }
-}  // namespace detail
-
-namespace detail {
 // N trues
 template <std::size_t N>
 constexpr std::array<bool, N> every() {
