@@ -61,6 +61,13 @@ constexpr std::array<bool, N> every() {
   a.fill(true);
   return a;
 }
+// The reads of Ev's update_for: every angular acceleration and q'', at u' = 0 (motion's state).
+template <class Ev>
+struct every_read {
+  static constexpr auto alpha = every<size<typename Ev::closure>::value>();
+  static constexpr auto qdd = every<Ev::state_type::nq>();
+  static constexpr bool rest = true;
+};
 // x's numbers one after the other in memory: a C array, a std::array, an Eigen vector or map of unit
 // inner stride
 template <class X>
@@ -142,7 +149,7 @@ class motion {
     if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
       return;
     else if constexpr (detail::recursive_form<Sys, Ev>)
-      ev.template update_for<every_read>(s_);
+      ev.template update_for<detail::every_read<Ev>>(s_);
     else  // Kane's sums read a few angular accelerations and q'' (evaluation/reads.hpp)
       ev.template update_for<equation_reads>(s_);
     const auto [ud, status] = detail::forward_at<Sys, true>(ev);
@@ -155,11 +162,6 @@ class motion {
     for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = ud(Eigen::Index(i));
   }
 
-  struct every_read {  // every angular acceleration and q'', at u' = 0
-    static constexpr auto alpha = detail::every<detail::size<typename Ev::closure>::value>();
-    static constexpr auto qdd = detail::every<nq>();
-    static constexpr bool rest = true;
-  };
   struct equation_reads {
     static constexpr auto reads = detail::acceleration_reads_of<Ev>(
         decltype(detail::system_terms<typename Ev::root, detail::speeds_of<Ev>>(typename Sys::items{})){});
@@ -235,7 +237,8 @@ class constrained_motion {
     for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
     s_.t = time;
     Ev ev;
-    const auto sol = detail::update_at_independent_speeds<NH, every_read>(ev, s_, x);
+    const auto sol = detail::update_at_independent_speeds<NH, detail::every_read<Ev>>(
+        ev, s_, x);  // the constraints' derivatives read every alpha and q''
     const auto [ud, status] =
         speed_derivatives(detail::reduced_mass_matrix_and_forcing_at<Sys, NH, true>(ev, sol).reduced);
     const auto qd = ev.coordinate_rates();
@@ -245,11 +248,6 @@ class constrained_motion {
     for (std::size_t k = 0; k < p; ++k) dxdt[nq + k] = ud(Eigen::Index(k));
   }
 
-  struct every_read {  // every angular acceleration and q'' (the constraints' derivatives read them), u' = 0
-    static constexpr auto alpha = detail::every<detail::size<typename Ev::closure>::value>();
-    static constexpr auto qdd = detail::every<nq>();
-    static constexpr bool rest = true;
-  };
   state_type s_;
   solve_status status_ = solve_status::ok;
 };
