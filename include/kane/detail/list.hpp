@@ -2,6 +2,7 @@
 // unrolled at compile time.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <type_traits>
 #include <utility>
@@ -27,6 +28,13 @@ template <std::size_t N, class F>
 KANE_ALWAYS_INLINE constexpr void static_for_inline(F&& f) {
   [&]<std::size_t... I>(std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA { (f(index_c<I>{}), ...); }
   (std::make_index_sequence<N>{});
+}
+// N trues (a computation that reads every frame or coordinate)
+template <std::size_t N>
+constexpr std::array<bool, N> every() {
+  std::array<bool, N> a{};
+  a.fill(true);
+  return a;
 }
 
 template <class... T>

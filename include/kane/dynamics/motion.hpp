@@ -54,13 +54,6 @@ constexpr bool sizes_checked() {
                 "declare them with motion::size entries");
   return true;
 }
-// N trues
-template <std::size_t N>
-constexpr std::array<bool, N> every() {
-  std::array<bool, N> a{};
-  a.fill(true);
-  return a;
-}
 // The reads of Ev's update_for: every angular acceleration and q'', at u' = 0 (motion's state).
 template <class Ev>
 struct every_read {

@@ -210,11 +210,7 @@ class kinematic_equations {
   }
 
   struct every_coordinate {
-    static constexpr std::array<bool, nq> qdd = [] {
-      std::array<bool, nq> a{};
-      a.fill(true);
-      return a;
-    }();
+    static constexpr std::array<bool, nq> qdd = every<nq>();
   };
   // u' = Y q'' + Y' q' + Z', so q'' = W (u' - Y' q' - Z'): the q_c'' of Reads::qdd only (the
   // rows of u' - Y' q' - Z' that W mixes into them), the others NaN.

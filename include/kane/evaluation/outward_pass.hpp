@@ -87,11 +87,7 @@ class outward_pass {
   }
 
   struct every_frame {  // every frame's angular acceleration
-    static constexpr std::array<bool, size> alpha = [] {
-      std::array<bool, size> a{};
-      a.fill(true);
-      return a;
-    }();
+    static constexpr std::array<bool, size> alpha = every<size>();
   };
   // One pass at the levels asked for, frame after frame; at the acceleration level the
   // frames of Reads::alpha only (by closure index).
