@@ -1,7 +1,9 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "../examples/models/disc.hpp"
 #include "trees.hpp"
@@ -127,6 +129,38 @@ TEST_CASE("numbers: A and B of constraints scaled by 1e-300, 1e+300, 1e+308 and 
   check_scaled_constraints<identity_nh>({-1, 0.5}, {0, 1});
   check_scaled_constraints<triangular_nh>({-1, 0}, {0, 2});
   check_scaled_constraints<coupled_nh>({-0.5, -0.5}, {0.5, -0.5});
+}
+
+TEST_CASE("numbers: the equilibration's power of two from the bits of x is frexp's and ldexp's",
+          "[numbers]") {
+  using limits = std::numeric_limits<double>;
+  const auto reference = [](double x) {  // 2^-e, 2^(e-1) <= x < 2^e, e clamped so that 2^-e is normal
+    int e = 0;
+    std::frexp(x, &e);
+    e = std::min(std::max(e, limits::min_exponent - 2), limits::max_exponent - 2);
+    return std::ldexp(1.0, -e);
+  };
+  std::vector<double> xs = {limits::denorm_min(),
+                            1e-320,
+                            1e-310,
+                            0x1p-1023,
+                            std::nextafter(0x1p-1023, 0.0),
+                            std::nextafter(0x1p-1023, 1.0),
+                            limits::min(),
+                            std::nextafter(limits::min(), 0.0),
+                            1e-300,
+                            0.5,
+                            0.75,
+                            1.0,
+                            3.0,
+                            1e300,
+                            0x1p1023,
+                            limits::max()};
+  for (int k = -1074; k <= 1023; k += 7) xs.push_back(std::ldexp(1.3, k));
+  for (double x : xs) {
+    CAPTURE(x);
+    CHECK(kane::detail::inverse_power_of_two(x) == reference(x));
+  }
 }
 
 TEST_CASE("numbers: the rank rule near its threshold does not depend on the scale of the matrix",

@@ -51,6 +51,17 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
+// b, its value hidden from the optimizer: code that selects by it is not duplicated along the
+// paths where earlier branches decided it (jump threading), so stores after it stay on one path.
+KANE_ALWAYS_INLINE bool opaque(bool b) {
+#if defined(__GNUC__)
+  int v = b;
+  __asm__("" : "+r"(v));
+  return v != 0;
+#else
+  return b;
+#endif
+}
 // f() in one function body when S is a number; other scalars (jets) keep
 // their calls, whose flattened bodies would multiply the compile's cost.
 template <class S, class F>

@@ -89,6 +89,18 @@ KANE_ALWAYS_INLINE void copy_wide(S* to, const X& x, std::size_t from) {
   } else
     for (std::size_t i = 0; i < N; ++i) to[i] = x[from + i];
 }
+// dxdt[i] = q'_i, i < N, NaN unless ok (q' may be finite where u' is NaN): by products and a flag
+// the optimizer cannot thread, since a branch here keeps the local evaluator's dead stores (and
+// the work behind them, such as sin and cos of an angle nothing reads) alive.
+template <std::size_t N, class S, class Q, class DX>
+KANE_ALWAYS_INLINE void write_rates(DX& dxdt, const Q& qd, bool ok) {
+  const auto spoil = nan_unless<S>(opaque(ok));
+  static_for<N>([&](auto i) {
+    S v = qd[i];
+    spoil(v);
+    dxdt[i] = v;
+  });
+}
 }  // namespace detail
 
 // x' = (q', u') of the system Sys for any integrator: f(x, dxdt, t).
@@ -147,11 +159,7 @@ class motion {
       ev.template update_for<equation_reads>(s_);
     const auto [ud, status] = detail::forward_at<Sys, true>(ev);
     status_ = status;
-    if (status == solve_status::ok) {  // else q' may be finite (u' is NaN)
-      const auto qd = ev.coordinate_rates();
-      for (std::size_t i = 0; i < nq; ++i) dxdt[i] = qd[i];
-    } else
-      for (std::size_t i = 0; i < nq; ++i) dxdt[i] = std::numeric_limits<scalar>::quiet_NaN();
+    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status == solve_status::ok);
     for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = ud(Eigen::Index(i));
   }
 
@@ -234,10 +242,8 @@ class constrained_motion {
         ev, s_, x);  // the constraints' derivatives read every alpha and q''
     const auto [ud, status] =
         speed_derivatives(detail::reduced_mass_matrix_and_forcing_at<Sys, NH, true>(ev, sol).reduced);
-    const auto qd = ev.coordinate_rates();
     status_ = status;
-    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
-    for (std::size_t i = 0; i < nq; ++i) dxdt[i] = status == solve_status::ok ? qd[i] : nan;
+    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status == solve_status::ok);
     for (std::size_t k = 0; k < p; ++k) dxdt[nq + k] = ud(Eigen::Index(k));
   }
 

@@ -17,8 +17,10 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -46,6 +48,31 @@ constexpr S pow2(int e) {
   for (; e > 0; --e) x *= S(2);
   for (; e < 0; ++e) x /= S(2);
   return x;
+}
+
+// 2^-e with 2^(e-1) <= x < 2^e (frexp's e), e clamped to [min_exponent - 2, max_exponent - 2] so
+// that 2^-e is normal; x finite and positive. For doubles from the bits: no call, which would keep
+// the stores of a local evaluator alive.
+template <class S>
+KANE_ALWAYS_INLINE typename real_type<S>::type inverse_power_of_two(const S& x) {
+  using real = typename real_type<S>::type;
+  using limits = std::numeric_limits<real>;
+  int e = 0;
+  if constexpr (std::is_same_v<S, double> && limits::is_iec559) {
+    const int biased = int((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff);
+    e = biased != 0 ? biased - 1022 : x >= pow2<double>(-1023) ? -1022 : -1023;  // subnormal: clamped
+  } else {
+    using std::frexp;
+    frexp(x, &e);
+  }
+  if (e < limits::min_exponent - 2) e = limits::min_exponent - 2;  // a subnormal scale
+  if (e > limits::max_exponent - 2) e = limits::max_exponent - 2;
+  if constexpr (std::is_same_v<real, double> && limits::is_iec559)
+    return std::bit_cast<double>(std::uint64_t(1023 - e) << 52);
+  else {
+    using std::ldexp;
+    return ldexp(real(1), -e);
+  }
 }
 
 // What a solve keeps of M: the rank rule's scale, the power of two f, whether
@@ -124,12 +151,7 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
   if constexpr (coupled) {
     if (constexpr real lo = pow2<real>(limits::min_exponent / 2), hi = pow2<real>(limits::max_exponent / 2);
         scale > S(0) && scale <= limits::max() && !(scale >= S(lo) && scale <= S(hi))) {
-      using std::frexp, std::ldexp;
-      int e = 0;
-      frexp(scale, &e);
-      if (e < limits::min_exponent - 2) e = limits::min_exponent - 2;  // a subnormal scale
-      if (e > limits::max_exponent - 2) e = limits::max_exponent - 2;
-      out.f = ldexp(real(1), -e);
+      out.f = inverse_power_of_two(scale);
     }
   }
   static_for_inline<Sys::form.count>([&](auto b) KANE_ALWAYS_INLINE_LAMBDA {
