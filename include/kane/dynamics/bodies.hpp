@@ -150,6 +150,24 @@ struct inertia_for<I> {
       std::conditional_t<symmetric, in_parent,
                          inertia<P, typename I::about, std::get<0>(c), std::get<0>(c), std::get<0>(c)>>;
 };
+
+// I in the highest frame up the tree from its own whose edges below it turn about axes I is
+// symmetric about (a disc or a wheel given in its own frame): the same components there, read
+// without the turns' angles.
+template <class I>
+struct symmetric_lift {
+  using type = I;
+};
+template <class I>
+requires(!std::is_void_v<typename I::frame::tree_parent> &&
+         !matrix_edge<typename I::frame>) struct symmetric_lift<I> {
+  using P = typename I::frame::tree_parent;
+  static constexpr auto c = I::components;
+  using in_parent = inertia<P, typename I::about, std::get<0>(c), std::get<1>(c), std::get<2>(c),
+                            std::get<3>(c), std::get<4>(c), std::get<5>(c)>;
+  using type = typename std::conditional_t<spins_symmetric<typename I::frame, in_parent>(),
+                                           symmetric_lift<in_parent>, std::type_identity<I>>::type;
+};
 }  // namespace detail
 
 namespace detail {

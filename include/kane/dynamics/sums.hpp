@@ -189,8 +189,10 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
                                      columns_known_in<Sp, B>(velocity<R, P>()).known;
             mass(std::type_identity<std::conditional_t<in_body, B, R>>{}, velocity<R, P>(),
                  acceleration<R, P>(), X::mass);
+            using IL = typename symmetric_lift<I>::type;  // I's components hold in IL's frame too
             using A = typename frame_of_columns<columns_t<Sp, decltype(angular_velocity<R, B>())>,
-                                                list<R, typename I::frame>, is_recalling<Ev>>::type;
+                                                list<R, typename I::frame, typename IL::frame>,
+                                                is_recalling<Ev>>::type;
             Eigen::Matrix<S, 3, 1> alpha0;
             const auto w = along(std::type_identity<A>{}, angular_velocity<R, B>(),
                                  angular_acceleration<R, B>(), alpha0);
@@ -198,6 +200,8 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
             const Eigen::Matrix<S, 3, 3> i = [&] {
               if constexpr (std::is_same_v<A, typename I::frame>)
                 return detail::inertia_in_own<I>(ev);
+              else if constexpr (std::is_same_v<A, typename IL::frame>)
+                return detail::inertia_in_own<IL>(ev);
               else
                 return detail::inertia_in_root<I>(ev);
             }();
