@@ -113,7 +113,6 @@ inline bool solve_unrolled(const Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<
     positive = positive && d > S(0);
     inv[i] = S(1) / d;
   });
-  if (!positive) return false;
   static_for<n>([&](auto i) {  // L y = f
     S s = f(Eigen::Index(i));
     static_for<i>([&](auto k) { s -= l[i * n + k] * y[k]; });
@@ -128,7 +127,7 @@ inline bool solve_unrolled(const Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<
     });
     x(Eigen::Index(i)) = s;
   });
-  return true;
+  return positive;  // x is solved regardless (numbers, no branch): the caller discards it if false
 }
 // x = m^-1 f for a symmetric m by Cholesky; false if m is not positive definite. Jets
 // overload it (jet.hpp).

@@ -109,22 +109,30 @@ mass_matrix(const Ev& ev) {
   });
 }
 
+namespace detail {
+// speed_derivatives in the caller's body (motion's flattened step)
+// (the caller's body, without a branch around a store: motion's local evaluator stays dead)
+template <class S, std::size_t N>
+std::pair<Eigen::Matrix<S, int(N), 1>, solve_status> speed_derivatives_at(
+    const equations_of_motion<S, N>& e) {
+  Eigen::Matrix<S, int(N), 1> ud = Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN());
+  using detail::solve_positive_definite;  // jets: theirs (argument-dependent lookup)
+  const bool positive = solve_positive_definite(e.M, e.f, ud);
+  const solve_status status = e.status != solve_status::ok     ? e.status
+                              : !positive                      ? solve_status::singular
+                              : !detail::all_finite_matrix(ud) ? solve_status::not_finite
+                                                               : solve_status::ok;
+  const auto spoil = nan_unless<S>(opaque(status == solve_status::ok));
+  static_for<N>([&](auto i) { spoil(ud(Eigen::Index(i))); });
+  return {ud, status};
+}
+}  // namespace detail
+
 // u' = M^-1 f by a Cholesky factorization of fixed size; singular if M is not
 // positive definite (a speed that moves no mass), with NaN.
 template <class S, std::size_t N>
 std::pair<Eigen::Matrix<S, int(N), 1>, solve_status> speed_derivatives(const equations_of_motion<S, N>& e) {
-  using result = std::pair<Eigen::Matrix<S, int(N), 1>, solve_status>;
-  return detail::flat<S>([&]() -> result {
-    Eigen::Matrix<S, int(N), 1> ud =
-        Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN());
-    if (e.status != solve_status::ok) return {ud, e.status};
-    using detail::solve_positive_definite;  // jets: theirs (argument-dependent lookup)
-    if (!solve_positive_definite(e.M, e.f, ud)) return {ud, solve_status::singular};
-    if (!detail::all_finite_matrix(ud))
-      return {Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN()),
-              solve_status::not_finite};
-    return {ud, solve_status::ok};
-  });
+  return detail::flat<S>([&] { return detail::speed_derivatives_at(e); });
 }
 
 }  // namespace kane

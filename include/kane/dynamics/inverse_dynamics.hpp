@@ -90,7 +90,7 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> forward_at(const Ev& ev) {
     constexpr auto inverse =
         known_inverse<Sys, typename Ev::root, speeds_of<Ev>>;  // M^-1, a table of numbers
     if constexpr (!inverse.known)
-      return speed_derivatives(mass_matrix_and_forcing_at<Sys, RestRates>(ev));  // singular
+      return speed_derivatives_at(mass_matrix_and_forcing_at<Sys, RestRates>(ev));  // singular
     else {
       const auto e = equations_along<Sys, RestRates, true, false>(ev, all_speeds<n>{});
       Eigen::Matrix<S, int(n), 1> ud = times_known<inverse>(e.f);
@@ -100,7 +100,7 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> forward_at(const Ev& ev) {
       return {ud, status};
     }
   } else
-    return speed_derivatives(mass_matrix_and_forcing_at<Sys, RestRates>(ev));
+    return speed_derivatives_at(mass_matrix_and_forcing_at<Sys, RestRates>(ev));
 }
 }  // namespace detail
 

@@ -267,9 +267,9 @@ class evaluator<St, frames<Fs...>, Level, Given>
       st_.ud = {};
     else
       st_.ud = s.ud;
-    if (const scalar residue = rates_residue<rests<Reads>>(s);
-        this->status_ == solve_status::ok && !(residue == scalar(0)))
-      this->status_ = solve_status::not_finite;
+    const scalar residue = rates_residue<rests<Reads>>(s);
+    this->status_ = this->status_ == solve_status::ok && !(residue == scalar(0)) ? solve_status::not_finite
+                                                                                 : this->status_;
     rates_at<Reads>(s, this->cached_trig());
   }
 
