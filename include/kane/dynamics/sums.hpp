@@ -127,8 +127,9 @@ struct frame_of_columns<Cols, list<R, F...>, true> {
 };
 // The sums of M and f over the items of Sys, M_rs and f_r being invariant: the mass terms in the
 // root (a body's in its own frame where its partial velocities are known constants there alone), a
-// body's rotational term in the root or its inertia's frame, whichever holds fewer rotations in the
-// partial angular velocities (foreign_units). SumMass false: M is known (known_mass_matrix.hpp).
+// body's rotational term in the root, its inertia's frame or the frame above that the inertia is
+// symmetric about the turn to (symmetric_lift), whichever holds fewer rotations in the partial
+// angular velocities (foreign_units). SumMass false: M is known (known_mass_matrix.hpp).
 template <class Sys, bool RestRates, bool Forcing, bool SumMass, class Out, class Ev, class Cols, class Ud>
 inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
   using S = typename Ev::scalar;
