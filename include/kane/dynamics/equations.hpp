@@ -110,8 +110,8 @@ mass_matrix(const Ev& ev) {
 }
 
 namespace detail {
-// speed_derivatives in the caller's body (motion's flattened step)
-// (the caller's body, without a branch around a store: motion's local evaluator stays dead)
+// speed_derivatives in the caller's body, with no branch around a store (after it, motion's local
+// evaluator's unread stores stay dead: motion.hpp)
 template <class S, std::size_t N>
 std::pair<Eigen::Matrix<S, int(N), 1>, solve_status> speed_derivatives_at(
     const equations_of_motion<S, N>& e) {
