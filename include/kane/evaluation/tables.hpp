@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <tuple>
 #include <type_traits>
@@ -85,6 +86,19 @@ constexpr auto remainder_of(const X& x) {
 // a vector) and the remainder t, each computed only if asked for. Column r is
 // the expression dx/du_r + sum_s dx/dq_s' W_sr, t is x_0 + sum_s dx/dq_s' X_s,
 // with the zeros and ones of W and X known at compile time (speeds.hpp).
+// Column c of t set to v: for doubles the first two numbers as one 16-byte store, since the
+// copy that reads them next (into the caller's matrix) reads them as one, and a wide load of
+// two narrow stores waits for both to leave the store buffer.
+template <class T, class V>
+KANE_ALWAYS_INLINE void set_column(T& t, Eigen::Index c, const V& v) {
+  if constexpr (std::is_same_v<typename T::Scalar, double> && T::RowsAtCompileTime == 3) {
+    using pair = double __attribute__((vector_size(16)));
+    const pair xy = {v(0), v(1)};
+    std::memcpy(&t(0, c), &xy, sizeof xy);
+    t(2, c) = v(2);
+  } else
+    t.col(c) = v;
+}
 template <class A, bool Table, bool Rest, class X, class Ev>
 KANE_ALWAYS_INLINE auto linear_parts_in(const X& x, const Ev& ev) {
   using Sp = speeds_of<Ev>;
@@ -92,7 +106,7 @@ KANE_ALWAYS_INLINE auto linear_parts_in(const X& x, const Ev& ev) {
   Eigen::Matrix<typename Ev::scalar, rows, int(Sp::n)> t;
   Eigen::Matrix<typename Ev::scalar, rows, 1> rest;
   [&]<std::size_t... R>(std::index_sequence<R...>) {
-    if constexpr (Table) ((t.col(R) = numbers<A>(column_of<Sp, R + 1>(x), ev)), ...);
+    if constexpr (Table) (set_column(t, Eigen::Index(R), numbers<A>(column_of<Sp, R + 1>(x), ev)), ...);
     if constexpr (Rest) rest = numbers<A>(remainder_of<Sp>(x), ev);
   }
   (std::make_index_sequence<Sp::n>{});
@@ -277,7 +291,7 @@ KANE_INLINE_FLATTEN auto nonholonomic_partial_velocities(const X& x, const Ev& e
       detail::add_scaled<F>(col, detail::column_of<Sp, NH::dependents[r]>(x),
                             sol.A(Eigen::Index(r), Eigen::Index(k)), ev);
     });
-    out.col(k) = col;
+    detail::set_column(out, Eigen::Index(k), col);
   });
   return out;
 }
