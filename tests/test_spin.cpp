@@ -30,6 +30,14 @@ struct Below : kane::point<Centre, -r * e<L, 3>> {};
 struct D : kane::frame<L, kane::simple<kane::axis::y, q<5>>> {};
 struct S : kane::frame<L, kane::spin<kane::axis::y, kane::speed<5>>> {};
 
+// An inertia symmetric about its frame's turn holds in the parent (the disc's in D holds in L, not in
+// Y: L turns about l1, about which it is not symmetric), but not in a spinning parent (no axes).
+using disc_inertia = kane::inertia<D, Centre, kane::literal(1.0), kane::literal(2.0), kane::literal(1.0)>;
+static_assert(std::is_same_v<kane::detail::symmetric_lift<disc_inertia>::type::frame, L>);
+struct X : kane::frame<S, kane::simple<kane::axis::x, q<6>>> {};
+using below_spin = kane::inertia<X, Centre, kane::literal(1.0), kane::literal(2.0), kane::literal(2.0)>;
+static_assert(std::is_same_v<kane::detail::symmetric_lift<below_spin>::type::frame, X>);
+
 using speeds_q = kane::qdot_speeds<5>;
 using speeds_s = kane::speeds<kane::dt(kane::q<1>), kane::dt(kane::q<2>), kane::dt(kane::q<3>),
                               kane::dt(kane::q<4>), kane::free_speed>;

@@ -153,7 +153,7 @@ struct inertia_for<I> {
 
 // I in the highest frame up the tree from its own whose edges below it turn about axes I is
 // symmetric about (a disc or a wheel given in its own frame): the same components there, read
-// without the turns' angles.
+// without the turns' angles. Not into a spinning frame (its axes are not known).
 template <class I>
 struct symmetric_lift {
   using type = I;
@@ -165,7 +165,7 @@ requires(!std::is_void_v<typename I::frame::tree_parent> &&
   static constexpr auto c = I::components;
   using in_parent = inertia<P, typename I::about, std::get<0>(c), std::get<1>(c), std::get<2>(c),
                             std::get<3>(c), std::get<4>(c), std::get<5>(c)>;
-  using type = typename std::conditional_t<spins_symmetric<typename I::frame, in_parent>(),
+  using type = typename std::conditional_t<spins_symmetric<typename I::frame, in_parent>() && !spin_edge<P>,
                                            symmetric_lift<in_parent>, std::type_identity<I>>::type;
 };
 }  // namespace detail
