@@ -16,8 +16,8 @@
 #include "kane/dynamics/system_rules.hpp"
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/memo.hpp"
+#include "kane/evaluation/nonholonomic_tables.hpp"
 #include "kane/evaluation/status.hpp"
-#include "kane/evaluation/tables.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

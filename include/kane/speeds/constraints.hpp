@@ -4,7 +4,7 @@
 //       f_k(q, t) = 0; n = 3 Particles + 6 RigidBodies - M at compile time.
 //   kane::nonholonomic<Speeds, kane::dependent<4, 5>, c1, c2>
 //       c_k linear in the speeds, c_k = 0 (m of them for m dependent speeds);
-//       at a state (evaluation/tables.hpp): u_dep = A u_ind + B, and the
+//       at a state (evaluation/nonholonomic_tables.hpp): u_dep = A u_ind + B, and the
 //       nonholonomic partial velocities v~_s = v_s + sum_r v_r A_rs with
 //       remainder v~_t = v_t + sum_r v_r B_r.
 #pragma once
