@@ -21,7 +21,9 @@ int main() {
   s3.q = {0.3, 0.2, 1.0};
   s3.u = {0.5, -1.5, 0.8};
   s3.p = {0.25};
-  kane::evaluator<decltype(s3), kane::frames<R>, kane::level::velocity, speeds3> ev3;
+  // what the partial velocities of v_centre and w read: their frames at the pose level
+  kane::evaluator_for<decltype(s3), kane::reads<kane::partials_of(v_centre), kane::partials_of(w)>, speeds3>
+      ev3;
   ev3.update(s3);
   const auto V3 = kane::partial_velocities<N>(v_centre, ev3);  // v_r of the centre, in N
   print("partial velocities of the centre (columns v_1 v_2 v_3, in N):", V3);
@@ -31,12 +33,14 @@ int main() {
   s5.q = {0.3, 0.2, 1.0, 2.0, -1.0};
   s5.u = {0.5, -1.5, 0.8, 0.0, 0.0};
   s5.p = {0.25};
-  kane::evaluator<decltype(s5), kane::frames<R>, kane::level::velocity, speeds5> ev5;
+  constexpr auto v5 = kane::velocity<N, Centre5>();  // the centre; v_below: the constraints
+  kane::evaluator_for<decltype(s5), kane::reads<kane::partials_of(v5), kane::partials_of(v_below)>, speeds5>
+      ev5;
   ev5.update(s5);
   const auto sol = kane::solve_constraints<rolling>(ev5);  // u4, u5 = A (u1 u2 u3) + B
   if (sol.status != kane::solve_status::ok) return 1;
   print("A (rows u4 u5, columns u1 u2 u3):", sol.A);
-  const auto V5 = kane::nonholonomic_partial_velocities<N, rolling>(kane::velocity<N, Centre5>(), ev5, sol);
+  const auto V5 = kane::nonholonomic_partial_velocities<N, rolling>(v5, ev5, sol);
   print("nonholonomic partial velocities of the centre, five coordinates (in N):", V5);
   const double gap = (V5 - V3).cwiseAbs().maxCoeff();
   std::printf("largest difference to the three-coordinate disc: %.1e\n", gap);

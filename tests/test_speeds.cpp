@@ -471,11 +471,18 @@ TEST_CASE("speeds: block forms found at compile time solve what a full inverse s
 
 TEST_CASE("speeds: partial velocities and constraints need only the pose level") {
   using EvPose = kane::evaluator<St5, kane::frames<L>, kane::level::pose, disc5_speeds>;
+  // partials_of: the frames of the centre's velocity and the contact's, at the pose level
+  using partials =
+      kane::reads<kane::partials_of(kane::velocity<DN, Centre5>()), kane::partials_of(v_contact)>;
+  static_assert(partials::needed == kane::level::pose &&
+                kane::reads<kane::velocity<DN, Centre5>()>::needed == kane::level::velocity);
+  using EvFor = kane::evaluator_for<St5, partials, disc5_speeds>;
+  static_assert(std::is_same_v<EvFor::closure, EvPose::closure>);  // N, Y, L: not R
   for (const auto& c : sympy_speeds::disc) {
     St5 s;
     for (int i = 0; i < 5; ++i) s.q[i] = c.q[i], s.u[i] = c.u[i];
     s.p = {c.r};
-    EvPose ev;  // L suffices: nothing here needs the spin angle q3
+    EvFor ev;  // L suffices: nothing here needs the spin angle q3
     ev.update(s);
     REQUIRE(ev.status() == kane::solve_status::ok);
     const auto sol = kane::solve_constraints<rolling>(ev);

@@ -3,6 +3,7 @@
 //   constexpr auto v = kane::velocity<N, P>(), a = kane::acceleration<N, P>();
 //   kane::evaluator_for<State, kane::reads<v, a>> ev;          // frames and level of v and a
 //   kane::evaluator_for<State, kane::reads<v>, Speeds> ev2;    // with a speed set
+//   kane::evaluator_for<State, kane::reads<kane::partials_of(v)>, Speeds> ev3;  // v_r: the pose
 //
 // A unit vector needs the highest frame it is a unit vector of (e_B3 = e_A3 when B turns
 // about a3), an angular velocity or acceleration of a frame turned by one axis its parent only
@@ -22,6 +23,16 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
+
+// What the partial velocities of x read (partial_velocities, nonholonomic_partial_velocities,
+// solve_constraints of x): x's frames at the pose level, the speeds' W and X with them.
+template <class X>
+struct partials_of_t {
+  X x;
+};
+template <class X>
+requires VectorExpr<X> || ScalarExpr<X>
+constexpr partials_of_t<X> partials_of(X x) { return {x}; }
 
 namespace detail {
 // The frame an evaluator holds for omega<F> or alpha<F>: F's parent where F turns about one axis.
@@ -64,7 +75,9 @@ constexpr auto frames_read() {
 template <class X>
 constexpr int level_read() {
   using C = const X&;
-  if constexpr (is_v<X, omega>)
+  if constexpr (is_v<X, partials_of_t>)
+    return 0;
+  else if constexpr (is_v<X, omega>)
     return 1;
   else if constexpr (is_v<X, alpha>)
     return 2;
