@@ -29,6 +29,7 @@
 // case frame_not_held: evaluator_does_not_hold_the_frame_add_it_to_frames<C>
 // case third_derivative_in_state: kane: a state holds q, q' and q'' only
 // case reads_only_root: kane: these expressions read no frame but a root. hold one with kane::evaluator<State, kane::frames<F>>
+// case partials_of_frame: kane: partials_of takes an expression linear in the speeds. for a frame pass its angular velocity
 #include <kane/kane.hpp>
 
 using q1 = kane::coordinate<1>;
@@ -209,6 +210,13 @@ double use() {
 #endif
   ev_for.update(s);
   x += kane::express<N>(kane::e<N, 1>, ev_for)[0];
+#ifdef KANE_CASE_partials_of_frame
+  kane::evaluator_for<St, kane::reads<kane::partials_of(B{})>> ev_partials;
+#else
+  kane::evaluator_for<St, kane::reads<kane::partials_of(angular_velocity<N, B>())>> ev_partials;
+#endif
+  ev_partials.update(s);
+  x += kane::express<N>(kane::e<A, 1>, ev_partials)[0];
 #ifdef KANE_CASE_third_derivative_in_state
   x += s[kane::dt(kane::dt(kane::dt(kane::q<1>)))];
 #else

@@ -31,8 +31,12 @@ struct partials_of_t {
   X x;
 };
 template <class X>
-requires VectorExpr<X> || ScalarExpr<X>
-constexpr partials_of_t<X> partials_of(X x) { return {x}; }
+constexpr partials_of_t<X> partials_of(X x) {
+  static_assert(VectorExpr<X> || ScalarExpr<X>,
+                "kane: partials_of takes an expression linear in the speeds; for a frame pass its angular "
+                "velocity, kane::angular_velocity<N, F>()");
+  return {x};
+}
 
 namespace detail {
 // The frame an evaluator holds for omega<F> or alpha<F>: F's parent where F turns about one axis.
