@@ -40,15 +40,16 @@ extern "C" int disc_step(const real* q, const real* u, real radius, real* out) {
   kane::state<real, 5, 5, 1> s;
   for (int i = 0; i < 5; ++i) s.q[i] = q[i], s.u[i] = u[i];
   s.p[0] = radius;
-  kane::evaluator<kane::state<real, 5, 5, 1>, kane::frames<disc::L>, kane::level::pose, disc::speeds5> ev;
+  constexpr auto v = kane::velocity<disc::N, disc::Centre5>();
+  kane::evaluator_for<decltype(s), kane::reads<kane::partials_of(v), kane::partials_of(disc::v_below)>,
+                      disc::speeds5>
+      ev;
   ev.update(s);
   const auto sol = kane::solve_constraints<disc::rolling>(ev);
-  const auto V = kane::nonholonomic_partial_velocities<disc::N, disc::rolling>(
-      kane::velocity<disc::N, disc::Centre5>(), ev, sol);
+  const auto V = kane::nonholonomic_partial_velocities<disc::N, disc::rolling>(v, ev, sol);
   for (int i = 0; i < 6; ++i) out[i] = sol.A(i % 2, i / 2);
   for (int i = 0; i < 9; ++i) out[6 + i] = V(i % 3, i / 3);
-  const auto t =
-      kane::nonholonomic_remainder<disc::N, disc::rolling>(kane::velocity<disc::N, disc::Centre5>(), ev, sol);
+  const auto t = kane::nonholonomic_remainder<disc::N, disc::rolling>(v, ev, sol);
   for (int i = 0; i < 3; ++i) out[15 + i] = t(i);
   return sol.status == kane::solve_status::ok ? 0 : 1;
 }
