@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "data/sympy_kinematics.hpp"
@@ -398,4 +399,28 @@ TEST_CASE("kinematics: ^A w^B - ^A w^C = ^C w^B, reversed chains, and the evalua
   CHECK(ev.coordinate_value<1, 0>() == 0.3);
   ev.update(s);
   CHECK(kane::express<N>(e<A, 1>, ev)[0] == Approx(std::cos(0.7)));
+}
+
+// Components known to be zero at compile time are not formed: q1' n1 + q2' n2 has no n3 part, and
+// a x b drops the products with a known zero. An inf in q1' stays in its component (inf * 0 would
+// make NaN of the others) and -0 keeps its sign (x + 0 would not).
+TEST_CASE("kinematics: components known to be zero take no arithmetic") {
+  constexpr auto v = kane::dt(q1{}) * e<N, 1> + kane::dt(q2{}) * e<N, 2>;
+  static_assert(kane::detail::zeros_in_v<void, decltype(v)> == 4u);
+  static_assert(kane::detail::zeros_in_v<A, decltype(kane::dt(q1{}) * e<A, 1>)> == 6u);
+  static_assert(kane::detail::zeros_in_v<A, decltype(kane::dt(q1{}) * e<N, 1>)> == 0u);  // N's axes in A
+  static_assert(kane::detail::cross_zeros<6u, 5u>() == 3u);                              // e1 x e2 = e3
+  static_assert(kane::detail::cross_zeros<6u, 6u>() == 7u);                              // e1 x e1 = 0
+  state6 s;
+  s.qd = {std::numeric_limits<double>::infinity(), -0.0, 0.5, 0, 0, 0};
+  kane::evaluator<state6, kane::frames<A>> ev;
+  ev.update(s);
+  const auto x = kane::express<N>(v, ev);
+  CHECK(std::isinf(x[0]));
+  CHECK((x[1] == 0.0 && std::signbit(x[1])));
+  CHECK((x[2] == 0.0 && !std::isnan(x[2])));
+  const auto w = kane::express<N>(kane::cross(kane::dt(q3{}) * e<N, 1>, kane::dt(q1{}) * e<N, 2>), ev);
+  CHECK(w[0] == 0.0);  // inf would make NaN of 0.5 * 0 * inf
+  CHECK(w[1] == 0.0);
+  CHECK(std::isinf(w[2]));
 }

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/list.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -60,6 +61,74 @@ template <class S>
 KANE_ALWAYS_INLINE constexpr S dot3(const v3<S>& a, const v3<S>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
+// The operations with components known to be zero (bit i of Za, Zb: component i of a, b): those
+// terms are not formed, since the optimizer keeps s * 0 and x + 0 (NaN, inf and -0 forbid folding).
+template <unsigned Z, int I, class S>
+KANE_ALWAYS_INLINE constexpr S get(const v3<S>& a) {
+  if constexpr (Z >> I & 1u)
+    return S(0);
+  else
+    return I == 0 ? a.x : I == 1 ? a.y : a.z;
+}
+template <unsigned Za, unsigned Zb, class S>
+KANE_ALWAYS_INLINE constexpr v3<S> add_known(const v3<S>& a, const v3<S>& b) {
+  const auto c = [&](auto i) {
+    if constexpr (Za >> i & 1u)
+      return get<Zb, i>(b);
+    else if constexpr (Zb >> i & 1u)
+      return get<Za, i>(a);
+    else
+      return get<Za, i>(a) + get<Zb, i>(b);
+  };
+  return {c(index_c<0>{}), c(index_c<1>{}), c(index_c<2>{})};
+}
+template <unsigned Za, unsigned Zb, class S>
+KANE_ALWAYS_INLINE constexpr v3<S> subtract_known(const v3<S>& a, const v3<S>& b) {
+  const auto c = [&](auto i) {
+    if constexpr (Zb >> i & 1u)
+      return get<Za, i>(a);
+    else
+      return get<Za, i>(a) - get<Zb, i>(b);  // 0 - y, not -y: the sign of a zero as before
+  };
+  return {c(index_c<0>{}), c(index_c<1>{}), c(index_c<2>{})};
+}
+template <unsigned Z, class S>
+KANE_ALWAYS_INLINE constexpr v3<S> scale_known(const S& s, const v3<S>& a) {
+  const auto c = [&](auto i) {
+    if constexpr (Z >> i & 1u)
+      return S(0);
+    else
+      return s * get<Z, i>(a);
+  };
+  return {c(index_c<0>{}), c(index_c<1>{}), c(index_c<2>{})};
+}
+// the zeros of a x b: component i = a_j b_k - a_k b_j, (i, j, k) cyclic
+template <unsigned Za, unsigned Zb>
+constexpr unsigned cross_zeros() {
+  unsigned z = 0;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    if (((Za >> j | Zb >> k) & 1u) && ((Za >> k | Zb >> j) & 1u)) z |= 1u << i;
+  }
+  return z;
+}
+template <unsigned Za, unsigned Zb, class S>
+KANE_ALWAYS_INLINE constexpr v3<S> cross_known(const v3<S>& a, const v3<S>& b) {
+  const auto c = [&](auto i) {
+    constexpr int j = (i + 1) % 3, k = (i + 2) % 3;
+    constexpr bool first = !((Za >> j | Zb >> k) & 1u), second = !((Za >> k | Zb >> j) & 1u);
+    if constexpr (first && second)
+      return get<Za, j>(a) * get<Zb, k>(b) - get<Za, k>(a) * get<Zb, j>(b);
+    else if constexpr (first)
+      return get<Za, j>(a) * get<Zb, k>(b);
+    else if constexpr (second)
+      return -(get<Za, k>(a) * get<Zb, j>(b));
+    else
+      return S(0);
+  };
+  return {c(index_c<0>{}), c(index_c<1>{}), c(index_c<2>{})};
+}
+
 template <class S>
 constexpr v3<S> load3(const S* p) {
   return {p[0], p[1], p[2]};

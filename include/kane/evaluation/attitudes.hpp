@@ -18,7 +18,7 @@ namespace kane::detail {
 template <class St, class... F>
 KANE_ALWAYS_INLINE typename St::scalar normalise(St& st, list<F...>) {
   using S = typename St::scalar;
-  S residue = S(0);
+  S residue = -S(0);
   (
       [&] {
         if constexpr (euler_edge<F>) {

@@ -265,7 +265,7 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
       });
     }
   });
-  S residue = S(0);  // x - x is 0 for a finite x, NaN otherwise
+  S residue = -S(0);  // x - x is 0 for a finite x, NaN otherwise
   static_for_inline<n * k>([&](auto cj) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t c = cj / k, j = cj % k;
     if constexpr (Sys::x[c][j] == entry::other) residue += x[c][j] - x[c][j];

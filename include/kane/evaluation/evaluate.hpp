@@ -57,6 +57,33 @@ v3<S> cross_unit(const v3<S>& a) {
     return {a.y, -a.x, S(0)};
 }
 
+// The components of v known to be zero at compile time (bit i: component i + 1), in the root's
+// components (A void) or in A's: a unit vector of that frame has two zeros; scaling, negation,
+// sums and cross products keep what follows from them.
+template <class A, class V>
+constexpr unsigned zeros_in() {
+  using C = const V&;
+  if constexpr (is_zero_vector_v<V>)
+    return 7u;
+  else if constexpr (is_unit<V>::value) {
+    using F = lifted_t<typename V::frame, V::index>;
+    constexpr bool own = std::is_void_v<A> ? std::is_void_v<typename F::tree_parent>
+                                           : std::is_same_v<typename V::frame, A> || std::is_same_v<F, A>;
+    return own ? 7u & ~(1u << (V::index - 1)) : 0u;
+  } else if constexpr (is_v<V, scaled> || is_v<V, vneg> || Quantity<V>)
+    return zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().v)>>();
+  else if constexpr (is_v<V, vsum> || is_v<V, vdiff>)
+    return zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().l)>>() &
+           zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().r)>>();
+  else if constexpr (is_v<V, vcross>)
+    return cross_zeros<zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().l)>>(),
+                       zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().r)>>()>();
+  else
+    return 0u;
+}
+template <class A, class X>
+inline constexpr unsigned zeros_in_v = zeros_in<A, std::remove_cvref_t<X>>();
+
 template <bool Recall = true, class Ev, class X>
 KANE_ALWAYS_INLINE typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
   using S = typename Ev::scalar;
@@ -143,11 +170,13 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev)
       return load3(ev.template axes<F>().data() + 3 * (V::index - 1));
   } else if constexpr (is_v<V, scaled>) {
     const S s = eval_scalar(v.s, ev);
-    return s * eval_vector(v.v, ev);
+    return scale_known<zeros_in_v<void, decltype(v.v)>>(s, eval_vector(v.v, ev));
   } else if constexpr (is_v<V, vsum>)
-    return eval_vector(v.l, ev) + eval_vector(v.r, ev);
+    return add_known<zeros_in_v<void, decltype(v.l)>, zeros_in_v<void, decltype(v.r)>>(eval_vector(v.l, ev),
+                                                                                       eval_vector(v.r, ev));
   else if constexpr (is_v<V, vdiff>)
-    return eval_vector(v.l, ev) - eval_vector(v.r, ev);
+    return subtract_known<zeros_in_v<void, decltype(v.l)>, zeros_in_v<void, decltype(v.r)>>(
+        eval_vector(v.l, ev), eval_vector(v.r, ev));
   else if constexpr (is_v<V, vneg>)
     return -eval_vector(v.v, ev);
   else if constexpr (is_v<V, vcross>) {
@@ -156,7 +185,8 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev)
     else if constexpr (root_unit<decltype(v.l)>::value)
       return -cross_unit<decltype(v.l)::index>(eval_vector(v.r, ev));
     else
-      return cross3(eval_vector(v.l, ev), eval_vector(v.r, ev));
+      return cross_known<zeros_in_v<void, decltype(v.l)>, zeros_in_v<void, decltype(v.r)>>(
+          eval_vector(v.l, ev), eval_vector(v.r, ev));
   } else if constexpr (is_v<V, omega>)
     return ev.template omega_value<typename V::frame>(ev);
   else if constexpr (is_v<V, alpha>)

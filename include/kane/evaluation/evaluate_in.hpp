@@ -89,15 +89,18 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> eval_in(const V& v, const Ev& ev) {
     } else
       return in_frame<A>(eval_vector(v, ev), ev);
   } else if constexpr (is_v<V, scaled>)
-    return eval_scalar(v.s, ev) * eval_in<A>(v.v, ev);
+    return scale_known<zeros_in_v<A, decltype(v.v)>>(eval_scalar(v.s, ev), eval_in<A>(v.v, ev));
   else if constexpr (is_v<V, vsum>)
-    return eval_in<A>(v.l, ev) + eval_in<A>(v.r, ev);
+    return add_known<zeros_in_v<A, decltype(v.l)>, zeros_in_v<A, decltype(v.r)>>(eval_in<A>(v.l, ev),
+                                                                                 eval_in<A>(v.r, ev));
   else if constexpr (is_v<V, vdiff>)
-    return eval_in<A>(v.l, ev) - eval_in<A>(v.r, ev);
+    return subtract_known<zeros_in_v<A, decltype(v.l)>, zeros_in_v<A, decltype(v.r)>>(eval_in<A>(v.l, ev),
+                                                                                      eval_in<A>(v.r, ev));
   else if constexpr (is_v<V, vneg>)
     return -eval_in<A>(v.v, ev);
   else if constexpr (is_v<V, vcross>)
-    return cross3(eval_in<A>(v.l, ev), eval_in<A>(v.r, ev));
+    return cross_known<zeros_in_v<A, decltype(v.l)>, zeros_in_v<A, decltype(v.r)>>(eval_in<A>(v.l, ev),
+                                                                                   eval_in<A>(v.r, ev));
   else if constexpr (Quantity<V>)
     return eval_in<A>(v.v, ev);
   else if constexpr (is_v<V, omega> || is_v<V, alpha>) {

@@ -113,7 +113,7 @@ constexpr std::array<double, Sys::n> inverse_norms() {
 template <class Sys, auto Inverse = std::array<double, Sys::n>{}, class S>
 KANE_ALWAYS_INLINE solve_status solve_orthogonal(const table<S, Sys::n, Sys::n>& m,
                                                  table<S, Sys::n, Sys::n>& x) {
-  S residue = S(0);  // NaN or inf in a row, or a row norm that overflows
+  S residue = -S(0);  // NaN or inf in a row, or a row norm that overflows
   bool singular = false;
   static_for<Sys::form.count>([&](auto b) {
     constexpr std::size_t first = Sys::form.start[b], size = Sys::form.start[b + 1] - first;

@@ -46,10 +46,11 @@ constexpr const char* to_string(solve_status s) {
 
 namespace detail {
 // 0 if every number of a is finite, NaN otherwise: x - x is 0 for a finite x and
-// NaN for NaN or inf, and a sum of zeros is 0 (no comparison per number).
+// NaN for NaN or inf, and a sum of zeros is 0 (no comparison per number). Sums start
+// at -0, the additive identity the optimizer folds away (x + 0 is not x for x = -0).
 template <class S, std::size_t N>
 constexpr S nonfinite_residue(const std::array<S, N>& a) {
-  S sum = S(0);
+  S sum = -S(0);
   [&]<std::size_t... I>(std::index_sequence<I...>) { ((sum += a[I] - a[I]), ...); }
   (std::make_index_sequence<N>{});
   return sum;
