@@ -192,12 +192,7 @@ class kinematic_equations {
   // (W v)_c (+ X_c) for v zero beyond its first Cols entries, skipping the zeros of W and X.
   template <std::size_t C, bool Offset, std::size_t Cols, class V>
   KANE_ALWAYS_INLINE scalar apply_row(const V& v) const {
-    constexpr bool terms = [] {
-      for (std::size_t j = 0; j < Cols; ++j)
-        if (system::x[C][j] != entry::zero) return true;
-      return false;
-    }();
-    scalar sum = terms ? -scalar(0) : scalar(0);  // -0 + x is x: a row of one term is a copy
+    scalar sum = scalar(0);
     if constexpr (Offset && system::offset[C]) sum = kde_x_[C];
     static_for<Cols>([&](auto j) {
       if constexpr (system::x[C][j] == entry::one)
