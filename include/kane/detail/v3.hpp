@@ -64,7 +64,7 @@ KANE_ALWAYS_INLINE constexpr S dot3(const v3<S>& a, const v3<S>& b) {
 // The operations with components known to be zero (bit i of Za, Zb: component i of a, b): those
 // terms are not formed, since the optimizer keeps s * 0 and x + 0 (NaN, inf and -0 forbid folding).
 template <unsigned Z, int I, class S>
-KANE_ALWAYS_INLINE constexpr S get(const v3<S>& a) {
+KANE_ALWAYS_INLINE constexpr S part(const v3<S>& a) {
   if constexpr (Z >> I & 1u)
     return S(0);
   else
@@ -74,11 +74,11 @@ template <unsigned Za, unsigned Zb, class S>
 KANE_ALWAYS_INLINE constexpr v3<S> add_known(const v3<S>& a, const v3<S>& b) {
   const auto c = [&](auto i) {
     if constexpr (Za >> i & 1u)
-      return get<Zb, i>(b);
+      return part<Zb, i>(b);
     else if constexpr (Zb >> i & 1u)
-      return get<Za, i>(a);
+      return part<Za, i>(a);
     else
-      return get<Za, i>(a) + get<Zb, i>(b);
+      return part<Za, i>(a) + part<Zb, i>(b);
   };
   return {c(index_c<0>{}), c(index_c<1>{}), c(index_c<2>{})};
 }
@@ -86,9 +86,9 @@ template <unsigned Za, unsigned Zb, class S>
 KANE_ALWAYS_INLINE constexpr v3<S> subtract_known(const v3<S>& a, const v3<S>& b) {
   const auto c = [&](auto i) {
     if constexpr (Zb >> i & 1u)
-      return get<Za, i>(a);
+      return part<Za, i>(a);
     else
-      return get<Za, i>(a) - get<Zb, i>(b);  // 0 - y, not -y: the sign of a zero as before
+      return part<Za, i>(a) - part<Zb, i>(b);  // 0 - y, not -y: the sign of a zero as before
   };
   return {c(index_c<0>{}), c(index_c<1>{}), c(index_c<2>{})};
 }
@@ -98,7 +98,7 @@ KANE_ALWAYS_INLINE constexpr v3<S> scale_known(const S& s, const v3<S>& a) {
     if constexpr (Z >> i & 1u)
       return S(0);
     else
-      return s * get<Z, i>(a);
+      return s * part<Z, i>(a);
   };
   return {c(index_c<0>{}), c(index_c<1>{}), c(index_c<2>{})};
 }
@@ -118,11 +118,11 @@ KANE_ALWAYS_INLINE constexpr v3<S> cross_known(const v3<S>& a, const v3<S>& b) {
     constexpr int j = (i + 1) % 3, k = (i + 2) % 3;
     constexpr bool first = !((Za >> j | Zb >> k) & 1u), second = !((Za >> k | Zb >> j) & 1u);
     if constexpr (first && second)
-      return get<Za, j>(a) * get<Zb, k>(b) - get<Za, k>(a) * get<Zb, j>(b);
+      return part<Za, j>(a) * part<Zb, k>(b) - part<Za, k>(a) * part<Zb, j>(b);
     else if constexpr (first)
-      return get<Za, j>(a) * get<Zb, k>(b);
+      return part<Za, j>(a) * part<Zb, k>(b);
     else if constexpr (second)
-      return -(get<Za, k>(a) * get<Zb, j>(b));
+      return -(part<Za, k>(a) * part<Zb, j>(b));
     else
       return S(0);
   };

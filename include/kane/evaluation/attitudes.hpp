@@ -24,7 +24,7 @@ KANE_ALWAYS_INLINE typename St::scalar normalise(St& st, list<F...>) {
         if constexpr (euler_edge<F>) {
           using std::sqrt;
           constexpr auto c = F::step::coordinates;
-          S n2 = S(0);
+          S n2 = -S(0);
           static_for_inline<4>([&](auto i)
                                    KANE_ALWAYS_INLINE_LAMBDA { n2 += st.q[c[i] - 1] * st.q[c[i] - 1]; });
           const S k = S(1) / sqrt(n2);
