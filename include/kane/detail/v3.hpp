@@ -10,7 +10,6 @@
 #include <utility>
 
 #include "kane/detail/inline.hpp"
-#include "kane/detail/list.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -70,37 +69,50 @@ KANE_ALWAYS_INLINE constexpr S part(const v3<S>& a) {
   else
     return I == 0 ? a.x : I == 1 ? a.y : a.z;
 }
+template <unsigned Za, unsigned Zb, int I, class S>
+KANE_ALWAYS_INLINE constexpr S sum_part(const v3<S>& a, const v3<S>& b) {
+  if constexpr (Za >> I & 1u)
+    return part<Zb, I>(b);
+  else if constexpr (Zb >> I & 1u)
+    return part<Za, I>(a);
+  else
+    return part<Za, I>(a) + part<Zb, I>(b);
+}
 template <unsigned Za, unsigned Zb, class S>
 KANE_ALWAYS_INLINE constexpr v3<S> add_known(const v3<S>& a, const v3<S>& b) {
-  const auto c = [&](auto i) {
-    if constexpr (Za >> i & 1u)
-      return part<Zb, i>(b);
-    else if constexpr (Zb >> i & 1u)
-      return part<Za, i>(a);
-    else
-      return part<Za, i>(a) + part<Zb, i>(b);
-  };
-  return {c(index_c<0>{}), c(index_c<1>{}), c(index_c<2>{})};
+  if constexpr (Za == 0 && Zb == 0)  // the common case: nothing to instantiate
+    return a + b;
+  else
+    return {sum_part<Za, Zb, 0>(a, b), sum_part<Za, Zb, 1>(a, b), sum_part<Za, Zb, 2>(a, b)};
+}
+template <unsigned Za, unsigned Zb, int I, class S>
+KANE_ALWAYS_INLINE constexpr S difference_part(const v3<S>& a, const v3<S>& b) {
+  if constexpr (Zb >> I & 1u)
+    return part<Za, I>(a);
+  else
+    return part<Za, I>(a) - part<Zb, I>(b);  // 0 - y, not -y: the sign of a zero as before
 }
 template <unsigned Za, unsigned Zb, class S>
 KANE_ALWAYS_INLINE constexpr v3<S> subtract_known(const v3<S>& a, const v3<S>& b) {
-  const auto c = [&](auto i) {
-    if constexpr (Zb >> i & 1u)
-      return part<Za, i>(a);
-    else
-      return part<Za, i>(a) - part<Zb, i>(b);  // 0 - y, not -y: the sign of a zero as before
-  };
-  return {c(index_c<0>{}), c(index_c<1>{}), c(index_c<2>{})};
+  if constexpr (Za == 0 && Zb == 0)
+    return a - b;
+  else
+    return {difference_part<Za, Zb, 0>(a, b), difference_part<Za, Zb, 1>(a, b),
+            difference_part<Za, Zb, 2>(a, b)};
+}
+template <unsigned Z, int I, class S>
+KANE_ALWAYS_INLINE constexpr S scaled_part(const S& s, const v3<S>& a) {
+  if constexpr (Z >> I & 1u)
+    return S(0);
+  else
+    return s * part<Z, I>(a);
 }
 template <unsigned Z, class S>
 KANE_ALWAYS_INLINE constexpr v3<S> scale_known(const S& s, const v3<S>& a) {
-  const auto c = [&](auto i) {
-    if constexpr (Z >> i & 1u)
-      return S(0);
-    else
-      return s * part<Z, i>(a);
-  };
-  return {c(index_c<0>{}), c(index_c<1>{}), c(index_c<2>{})};
+  if constexpr (Z == 0)
+    return s * a;
+  else
+    return {scaled_part<Z, 0>(s, a), scaled_part<Z, 1>(s, a), scaled_part<Z, 2>(s, a)};
 }
 // the zeros of a x b: component i = a_j b_k - a_k b_j, (i, j, k) cyclic
 template <unsigned Za, unsigned Zb>
@@ -112,21 +124,25 @@ constexpr unsigned cross_zeros() {
   }
   return z;
 }
+template <unsigned Za, unsigned Zb, int I, class S>
+KANE_ALWAYS_INLINE constexpr S cross_part(const v3<S>& a, const v3<S>& b) {
+  constexpr int j = (I + 1) % 3, k = (I + 2) % 3;
+  constexpr bool first = !((Za >> j | Zb >> k) & 1u), second = !((Za >> k | Zb >> j) & 1u);
+  if constexpr (first && second)
+    return part<Za, j>(a) * part<Zb, k>(b) - part<Za, k>(a) * part<Zb, j>(b);
+  else if constexpr (first)
+    return part<Za, j>(a) * part<Zb, k>(b);
+  else if constexpr (second)
+    return -(part<Za, k>(a) * part<Zb, j>(b));
+  else
+    return S(0);
+}
 template <unsigned Za, unsigned Zb, class S>
 KANE_ALWAYS_INLINE constexpr v3<S> cross_known(const v3<S>& a, const v3<S>& b) {
-  const auto c = [&](auto i) {
-    constexpr int j = (i + 1) % 3, k = (i + 2) % 3;
-    constexpr bool first = !((Za >> j | Zb >> k) & 1u), second = !((Za >> k | Zb >> j) & 1u);
-    if constexpr (first && second)
-      return part<Za, j>(a) * part<Zb, k>(b) - part<Za, k>(a) * part<Zb, j>(b);
-    else if constexpr (first)
-      return part<Za, j>(a) * part<Zb, k>(b);
-    else if constexpr (second)
-      return -(part<Za, k>(a) * part<Zb, j>(b));
-    else
-      return S(0);
-  };
-  return {c(index_c<0>{}), c(index_c<1>{}), c(index_c<2>{})};
+  if constexpr (Za == 0 && Zb == 0)
+    return cross3(a, b);
+  else
+    return {cross_part<Za, Zb, 0>(a, b), cross_part<Za, Zb, 1>(a, b), cross_part<Za, Zb, 2>(a, b)};
 }
 
 template <class S>
