@@ -46,16 +46,6 @@ template <int I, class S>
 S component(const v3<S>& a) {
   return I == 1 ? a.x : I == 2 ? a.y : a.z;
 }
-// a x e_Ri
-template <int I, class S>
-v3<S> cross_unit(const v3<S>& a) {
-  if constexpr (I == 1)
-    return {S(0), a.z, -a.y};
-  else if constexpr (I == 2)
-    return {-a.z, S(0), a.x};
-  else
-    return {a.y, -a.x, S(0)};
-}
 
 // The components of v known to be zero at compile time (bit i: component i + 1), in the root's
 // components (A void) or in A's: a unit vector of that frame has two zeros; scaling, negation,
@@ -179,15 +169,10 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev)
         eval_vector(v.l, ev), eval_vector(v.r, ev));
   else if constexpr (is_v<V, vneg>)
     return -eval_vector(v.v, ev);
-  else if constexpr (is_v<V, vcross>) {
-    if constexpr (root_unit<decltype(v.r)>::value)
-      return cross_unit<decltype(v.r)::index>(eval_vector(v.l, ev));
-    else if constexpr (root_unit<decltype(v.l)>::value)
-      return -cross_unit<decltype(v.l)::index>(eval_vector(v.r, ev));
-    else
-      return cross_known<zeros_in_v<void, decltype(v.l)>, zeros_in_v<void, decltype(v.r)>>(
-          eval_vector(v.l, ev), eval_vector(v.r, ev));
-  } else if constexpr (is_v<V, omega>)
+  else if constexpr (is_v<V, vcross>)  // a root's unit vector: two of a x e_Ri's products, no zero formed
+    return cross_known<zeros_in_v<void, decltype(v.l)>, zeros_in_v<void, decltype(v.r)>>(
+        eval_vector(v.l, ev), eval_vector(v.r, ev));
+  else if constexpr (is_v<V, omega>)
     return ev.template omega_value<typename V::frame>(ev);
   else if constexpr (is_v<V, alpha>)
     return ev.template alpha_value<typename V::frame>(ev);
