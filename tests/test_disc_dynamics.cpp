@@ -166,3 +166,20 @@ TEST_CASE("dynamics: the disc in three coordinates, its centre known by its velo
     CHECK(((centre(plus) - centre(minus)) / (2 * h) - a).norm() < 1e-6 * (1 + a.norm()));
   }
 }
+
+TEST_CASE("dynamics: kane::constrained_motion with vectors of another run-time size says wrong_size") {
+  disc_state s;
+  for (int i = 0; i < 3; ++i) s.p[i] = sympy_disc_dynamics::p[i];
+  kane::constrained_motion<dd::system, dd::rolling, disc_evaluator> f(s);
+  const Eigen::VectorXd right = Eigen::VectorXd::Constant(8, 0.3), wrong = Eigen::VectorXd::Constant(5, 0.3);
+  Eigen::VectorXd dx = Eigen::VectorXd::Zero(8), short_dx = Eigen::VectorXd::Zero(3);
+  f(wrong, dx, 0.0);  // x of 5 numbers, not nq + p = 8: nothing read beyond them
+  CHECK(f.status() == kane::solve_status::wrong_size);
+  CHECK(dx.array().isNaN().all());
+  f(right, short_dx, 0.0);  // dx/dt of 3: nothing written beyond it
+  CHECK(f.status() == kane::solve_status::wrong_size);
+  CHECK(short_dx.array().isNaN().all());
+  f(right, dx, 0.0);
+  CHECK(f.status() == kane::solve_status::ok);
+  CHECK(dx.allFinite());
+}

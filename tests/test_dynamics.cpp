@@ -55,6 +55,28 @@ TEST_CASE("dynamics: statuses have names") {
   CHECK(std::string(kane::to_string(kane::solve_status::not_finite)) == "not_finite");
   CHECK(std::string(kane::to_string(kane::solve_status::not_converged)) == "not_converged");
   CHECK(std::string(kane::to_string(kane::solve_status::not_a_rotation)) == "not_a_rotation");
+  CHECK(std::string(kane::to_string(kane::solve_status::wrong_size)) == "wrong_size");
+}
+
+TEST_CASE("dynamics: kane::motion with vectors of another run-time size says wrong_size") {
+  state1 s;
+  s.p = {0.7, 2.0, 9.81};
+  kane::motion<pendulum, eval1> f(s);
+  // x of 1 or 3 numbers, dx/dt of 1: nothing beyond them is read or written (AddressSanitizer)
+  for (const Eigen::Index nx : {1, 2, 3})
+    for (const Eigen::Index nd : {1, 2, 3}) {
+      const Eigen::VectorXd x = Eigen::VectorXd::Constant(nx, 0.4);
+      Eigen::VectorXd dx = Eigen::VectorXd::Zero(nd);
+      f(x, dx, 0.0);
+      if (nx == 2 && nd == 2) {
+        CHECK(f.status() == kane::solve_status::ok);
+        CHECK(dx(1) == Approx(-9.81 / 0.7 * std::sin(0.4)).epsilon(1e-14));
+      } else {
+        CHECK(f.status() == kane::solve_status::wrong_size);
+        for (Eigen::Index i = 0; i < std::min<Eigen::Index>(nd, 2); ++i) CHECK(std::isnan(dx(i)));
+        if (nd == 3) CHECK(dx(2) == 0.0);
+      }
+    }
 }
 
 TEST_CASE("dynamics: kane::motion over an evaluator without a speed set integrates u = q'") {

@@ -164,7 +164,7 @@ KANE_ALWAYS_INLINE Eigen::Matrix<S, N, 1> times_known(const Eigen::Matrix<S, N, 
   Eigen::Matrix<S, N, 1> x;
   [&]<std::size_t... I>(std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA {
     (
-        [&] KANE_ALWAYS_INLINE_LAMBDA {
+        [&]() KANE_ALWAYS_INLINE_LAMBDA {
           constexpr std::size_t r = I / n, c = I % n, first = first_nonzero(T, r);
           if constexpr (first == n && c == 0)
             x(Eigen::Index(r)) = S(0);

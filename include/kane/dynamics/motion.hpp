@@ -8,9 +8,9 @@
 //   kane::constrained_motion<System, NH, Evaluator>  // nonholonomic: x = (q, u_ind)
 //
 // Without a speed set the evaluator's speeds are u = q' (x = (q, q'), dx/dt = (q', q'')).
-// x and dxdt are any containers with operator[] and nq + nu entries (a size known at compile time
-// is checked; motion::size)
-// (std::array, Eigen vectors or maps, plain arrays); no allocation. status()
+// x and dxdt are any containers with operator[] and nq + nu entries (motion::size): std::array,
+// Eigen vectors or maps, plain arrays; no allocation. A size known at compile time is checked
+// then, one known at run time (size()) at each call: wrong_size, nothing read, dxdt NaN. status()
 // is that of the last call: when it is not ok, dxdt is NaN.
 #pragma once
 
@@ -61,6 +61,24 @@ struct every_read {
   static constexpr auto qdd = every<Ev::state_type::nq>();
   static constexpr bool rest = true;
 };
+// x and dxdt hold Size entries: known at compile time (sizes_checked), or by size() at run time
+// (a container without size() is taken at its word). Otherwise the call reads nothing, writes NaN
+// into as many entries of dxdt as it has, up to Size, and says wrong_size.
+template <std::size_t Size, class S, class X, class DX>
+KANE_ALWAYS_INLINE bool size_fits(const X& x, DX& dxdt) {
+  const auto fits = [](const auto& c) {
+    if constexpr (fixed_size<std::remove_cvref_t<decltype(c)>>() == 0 && requires { c.size(); })
+      return std::size_t(c.size()) == Size;
+    else
+      return true;
+  };
+  if (fits(x) && fits(dxdt)) return true;
+  std::size_t n = Size;
+  if constexpr (fixed_size<DX>() == 0 && requires { dxdt.size(); })
+    n = std::size_t(dxdt.size()) < Size ? std::size_t(dxdt.size()) : Size;
+  for (std::size_t i = 0; i < n; ++i) dxdt[i] = std::numeric_limits<S>::quiet_NaN();
+  return false;
+}
 // x's numbers one after the other in memory: a C array, a std::array, an Eigen vector or map of unit
 // inner stride
 template <class X>
@@ -140,6 +158,10 @@ class motion {
  private:
   template <class X, class DX>
   void step(const X& x, DX& dxdt, scalar time) {
+    if (!detail::size_fits<size, scalar>(x, dxdt)) {
+      status_ = solve_status::wrong_size;
+      return;
+    }
     auto& u = [&]() -> auto& {  // u = q' without a speed set: what such an evaluator reads
       if constexpr (std::is_void_v<typename Ev::speed_set>)
         return s_.qd;
@@ -235,6 +257,10 @@ class constrained_motion {
  private:
   template <class X, class DX>
   void step(const X& x, DX& dxdt, scalar time) {
+    if (!detail::size_fits<size, scalar>(x, dxdt)) {
+      status_ = solve_status::wrong_size;
+      return;
+    }
     for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
     s_.t = time;
     Ev ev;

@@ -100,7 +100,8 @@ KANE_ALWAYS_INLINE S entry_value(const table<S, Sys::n, Sys::n>& m, index_c<I>, 
     return m[I][J];
 }
 
-// f M_B of the coupled block of size unknowns from the place first of the block order.
+// f M_B of the coupled block of size unknowns from the place first of the block order (M's zeros
+// and ones from the pattern: only its other entries are read).
 template <class Sys, std::size_t First, std::size_t Size, class S>
 KANE_ALWAYS_INLINE Eigen::Matrix<S, int(Size), int(Size)> scaled_block(const table<S, Sys::n, Sys::n>& m,
                                                                        typename real_type<S>::type f) {
@@ -110,6 +111,8 @@ KANE_ALWAYS_INLINE Eigen::Matrix<S, int(Size), int(Size)> scaled_block(const tab
                           col = Sys::form.order[First + e];
     if constexpr (Sys::m[row][col] == entry::one)
       block(a, e) = S(f);
+    else if constexpr (Sys::m[row][col] == entry::zero)  // not stored
+      block(a, e) = S(0);
     else
       block(a, e) = m[row][col] * f;
   });
@@ -225,11 +228,21 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
       constexpr std::size_t row = Sys::form.row[c];
       S t = rhs(index_c<row>{}, j);
       static_for_inline<n>([&](auto d) KANE_ALWAYS_INLINE_LAMBDA {
-        if constexpr (Sys::form.block[d] != b && Sys::m[row][d] == entry::one && Sys::x[d][j] != entry::zero)
-          t -= x[d][j];
-        else if constexpr (Sys::form.block[d] != b && Sys::m[row][d] != entry::zero &&
-                           Sys::x[d][j] != entry::zero)
-          t -= m[row][d] * x[d][j];
+        if constexpr (Sys::form.block[d] != b && Sys::m[row][d] != entry::zero &&
+                      Sys::x[d][j] != entry::zero) {
+          // x_dj as solved: an exact one of X is read from the pattern (WriteConstants false keeps it
+          // unwritten)
+          const auto xd = [&] {
+            if constexpr (Sys::x[d][j] == entry::one)
+              return S(1);
+            else
+              return x[d][j];
+          }();
+          if constexpr (Sys::m[row][d] == entry::one)
+            t -= xd;
+          else
+            t -= m[row][d] * xd;
+        }
       });
       return t;
     };

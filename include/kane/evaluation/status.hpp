@@ -1,7 +1,8 @@
 // What a numeric solve found: ok, a singular matrix (a pivot at or below the
 // rank threshold), numbers that are not finite (NaN or inf in or out), an
-// iteration that did not reach its tolerance (configuration.hpp), or an
-// attitude read from the state that is not a rotation (kane::attitude).
+// iteration that did not reach its tolerance (configuration.hpp), an
+// attitude read from the state that is not a rotation (kane::attitude), or a
+// container of another size than the call needs (kane::motion).
 // ok promises finite numbers: the promise rests on IEEE comparisons with NaN,
 // which -ffast-math and -ffinite-math-only let the compiler fold away, so
 // those flags are an error here unless KANE_ALLOW_FAST_MATH is defined (then
@@ -25,8 +26,9 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
-// ok, a singular matrix, numbers not finite, no convergence, or an attitude not a rotation
-enum class solve_status { ok, singular, not_finite, not_converged, not_a_rotation };
+// ok, a singular matrix, numbers not finite, no convergence, an attitude not a rotation, or a
+// container of the wrong size
+enum class solve_status { ok, singular, not_finite, not_converged, not_a_rotation, wrong_size };
 // The name of a status ("ok", "singular", ...).
 constexpr const char* to_string(solve_status s) {
   switch (s) {
@@ -40,6 +42,8 @@ constexpr const char* to_string(solve_status s) {
       return "not_converged";
     case solve_status::not_a_rotation:
       return "not_a_rotation";
+    case solve_status::wrong_size:
+      return "wrong_size";
   }
   return "unknown";
 }

@@ -60,7 +60,9 @@ constexpr auto ddt(X x) {
   else if constexpr (is_v<X, vdot>) {
     using R = root_frame_of_t<vsum<decltype(x.l), decltype(x.r)>>;
     return derived_dot(ddt_in<R>(x.l), x.r) + derived_dot(x.l, ddt_in<R>(x.r));
-  } else
+  } else if constexpr (PoseNumber<X>)
+    return X::time_derivative();
+  else
     static_assert(!sizeof(X), "kane: dt of an unknown scalar node");
 }
 

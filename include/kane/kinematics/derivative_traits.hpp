@@ -79,6 +79,12 @@ struct speed_info : std::false_type {};
 template <std::size_t I, std::size_t D>
 struct speed_info<speed<I, D>> : std::true_type {};
 
+// A number the evaluator computes from q and t alone (W and X of the kinematic equations): it
+// holds no rate or speed, and X::time_derivative() is its time derivative as an expression.
+struct pose_number_tag {};
+template <class X>
+concept PoseNumber = __is_base_of(pose_number_tag, X);
+
 template <class X>
 concept LeafConstant =
     is_constant<X>::value || std::is_same_v<X, literal> || is_fixed<X>::value || Parameter<X> || Input<X>;
@@ -187,8 +193,8 @@ constexpr leaf_set leaves_in() {
     return {X::order == 1 ? leaf_bit(X::index) : 0, 0};
   else if constexpr (speed_info<X>::value)
     return {0, X::order == 0 ? leaf_bit(X::index) : 0};
-  else if constexpr (std::is_same_v<X, time_variable> || LeafConstant<X> || is_unit<X>::value ||
-                     is_zero_vector_v<X>)
+  else if constexpr (std::is_same_v<X, time_variable> || LeafConstant<X> || PoseNumber<X> ||
+                     is_unit<X>::value || is_zero_vector_v<X>)
     return {};
   else if constexpr (binary_node(static_cast<X*>(nullptr)))
     return leaves_of<decltype(X::l)> | leaves_of<decltype(X::r)>;

@@ -39,8 +39,8 @@ using row_t = std::remove_cvref_t<decltype(std::get<K>(Sp::definitions))>;
 template <class Sp, class B, std::size_t K, int I>
 constexpr bool component_row_of() {
   using T = component_row<row_t<Sp, K + std::size_t(I) - 1>>;
-  if constexpr (T::value) {
-    using First = component_row<row_t<Sp, K>>;
+  using First = component_row<row_t<Sp, K>>;
+  if constexpr (T::value && First::value) {
     return std::is_same_v<typename T::body, B> && std::is_same_v<typename T::observer, root_of<B>> &&
            std::is_same_v<typename T::frame, typename First::frame> && T::index == I;
   } else

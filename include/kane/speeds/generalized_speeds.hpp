@@ -141,19 +141,23 @@ using angular_velocity_speeds =
 
 // W_SR = dq_S'/du_R and X_S = q_S' at u = 0 of the speed set Sp: numbers the evaluator solves for.
 template <std::size_t S, std::size_t R, class Sp>
-struct kde_weight : detail::scalar_tag {
+struct kde_weight : detail::scalar_tag, detail::pose_number_tag {
   // row = S and column = R of W_SR
   static constexpr std::size_t row = S, column = R;
   // Sp, the speed set
   using speed_set = Sp;
+  // W' = -W Y' W
+  static constexpr auto time_derivative();
 };
 // X_S of q' = W u + X for the speed set Sp: a scalar the evaluator computes.
 template <std::size_t S, class Sp>
-struct kde_offset : detail::scalar_tag {
+struct kde_offset : detail::scalar_tag, detail::pose_number_tag {
   // S of X_S
   static constexpr std::size_t row = S;
   // Sp, the speed set
   using speed_set = Sp;
+  // X' = -W (Y' X + Z')
+  static constexpr auto time_derivative();
 };
 
 namespace detail {
@@ -294,7 +298,64 @@ constexpr auto offset() {
     return kde_offset<S, Sp>{};
 }
 
+// W_SA of every row A, held rows included (weight() gives 0 there: u is 0 in a held row).
+template <class Sp, std::size_t S, std::size_t A>
+constexpr auto full_weight() {
+  if constexpr (kde_system<Sp>::x[S - 1][A - 1] == entry::zero)
+    return zero_t{};
+  else if constexpr (kde_system<Sp>::x[S - 1][A - 1] == entry::one)
+    return one_t{};
+  else
+    return kde_weight<S, A, Sp>{};
+}
+// sum over a = 1..rows of W_Sa Y'_a(X), skipping the products known to be zero; Y'_a(X) of row a.
+template <class Sp, std::size_t S, class Row>
+constexpr auto weighted_rows(Row row) {
+  return [&]<std::size_t... A>(std::index_sequence<A...>) {
+    return (zero_t{} + ... + [&] {
+      const auto w = full_weight<Sp, S, A + 1>();
+      const auto y = row(index_c<A + 1>{});
+      if constexpr (is_zero_v<std::remove_cv_t<decltype(w)>> || is_zero_v<std::remove_cv_t<decltype(y)>>)
+        return zero_t{};
+      else
+        return w * y;
+    }());
+  }
+  (std::make_index_sequence<Sp::rows>{});
+}
+// sum over b = 1..rows of dt(Y_ab) x_b for row a, x_b = Of(b)
+template <class Sp, std::size_t A, class Of>
+constexpr auto rate_row(Of of) {
+  return [&]<std::size_t... B>(std::index_sequence<B...>) {
+    return (zero_t{} + ... + [&] {
+      const auto yd = ddt(diff(std::get<A - 1>(Sp::definitions), coordinate<B + 1, 1>{}));
+      const auto x = of(index_c<B + 1>{});
+      if constexpr (is_zero_v<std::remove_cv_t<decltype(yd)>> || is_zero_v<std::remove_cv_t<decltype(x)>>)
+        return zero_t{};
+      else
+        return yd * x;
+    }());
+  }
+  (std::make_index_sequence<Sp::rows>{});
+}
+
 }  // namespace detail
+
+template <std::size_t S, std::size_t R, class Sp>
+constexpr auto kde_weight<S, R, Sp>::time_derivative() {
+  return -detail::weighted_rows<Sp, S>([](auto a) {
+    return detail::rate_row<Sp, decltype(a)::value>(
+        [](auto b) { return detail::full_weight<Sp, decltype(b)::value, R>(); });
+  });
+}
+template <std::size_t S, class Sp>
+constexpr auto kde_offset<S, Sp>::time_derivative() {
+  return -detail::weighted_rows<Sp, S>([](auto a) {
+    constexpr std::size_t A = decltype(a)::value;
+    return detail::rate_row<Sp, A>([](auto b) { return detail::offset<Sp, decltype(b)::value>(); }) +
+           detail::ddt(detail::at_rest(std::get<A - 1>(Sp::definitions)));
+  });
+}
 
 }  // namespace kane
 #pragma GCC diagnostic pop
