@@ -399,3 +399,22 @@ TEST_CASE("dynamics: an M known at compile time, against the M of Kane's sums") 
   CHECK(body.status() == kane::solve_status::not_finite);
   for (double v : dx) CHECK(std::isnan(v));
 }
+
+TEST_CASE("dynamics: plain numbers are accepted where a constant is: a mass of 2.0, products of 0.0") {
+  // the rod pendulum about n1: M = m L^2 + I11, f = -m g L sin q
+  using rod_inertia = kane::inertia<A, P, 0.25, 0.5, 0.75, 0.0, 0.0, 0.0>;
+  using rod = kane::system<kane::rigid_body<A, P, 2.0, rod_inertia>, kane::gravity<-g * e<N, 3>>>;
+  state1 s;
+  s.p = {0.7, 99.0, 9.81};  // the mass parameter is not read
+  s.q = {0.4};
+  s.u = {1.3};
+  eval1 ev;
+  ev.update(s);
+  const auto eom = kane::mass_matrix_and_forcing<rod>(ev);
+  REQUIRE(eom.status == kane::solve_status::ok);
+  CHECK(eom.M(0, 0) == Approx(2.0 * 0.49 + 0.25).epsilon(1e-15));
+  CHECK(eom.f(0) == Approx(-2.0 * 9.81 * 0.7 * std::sin(0.4)).epsilon(1e-14));
+  // 0.0 is a type-level zero, as kane::constant<0>
+  STATIC_REQUIRE(
+      kane::is_zero_v<std::remove_cv_t<std::tuple_element_t<3, decltype(rod_inertia::components)>>>);
+}

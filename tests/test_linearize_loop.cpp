@@ -12,6 +12,7 @@
 #include <kane/linearization.hpp>
 
 #include "../examples/models/fourbar.hpp"
+#include "../examples/rk4.hpp"
 
 namespace {
 namespace fb = models::fourbar;
@@ -75,4 +76,38 @@ TEST_CASE("linearize: a closed loop (four-bar) with and without an input, agains
   CHECK(kane::linearize_constrained<fourbar_system, fb::rates, fourbar_evaluator, fb::loop,
                                     kane::inputs<fp<5>>>(s)
             .status == kane::solve_status::not_finite);
+}
+
+TEST_CASE("constrained_motion: project closes the loop that integration lets drift") {
+  fourbar_state s;
+  s.p = {1.0, 2.2, 1.8, 2.5, 0.7, 1.3, 0.9, 9.81, 0.05};
+  s.q = {0.9, 0.6, 1.9};
+  s.u = {2.0, 0, 0};
+  fourbar_evaluator ev;
+  REQUIRE(kane::solve_configuration<fb::loop>(ev, s).status == kane::solve_status::ok);
+  kane::constrained_motion<fourbar_system, fb::rates, fourbar_evaluator> f(s);
+  const auto gap = [&](const std::array<double, 4>& x) {  // max |f_k| of the loop at x's q
+    fourbar_state t = s;
+    t.q = {x[0], x[1], x[2]};
+    fourbar_evaluator e;
+    e.update(t);
+    return std::fmax(std::fabs(kane::evaluate(kane::dot(fb::gap, kane::e<fb::N, 1>), e)),
+                     std::fabs(kane::evaluate(kane::dot(fb::gap, kane::e<fb::N, 2>), e)));
+  };
+  std::array<double, 4> drifting{s.q[0], s.q[1], s.q[2], s.u[0]}, projected = drifting;
+  const double h = 0.05;
+  for (int k = 0; k < 40; ++k) {
+    rk4_step(f, drifting, k * h, h);
+    rk4_step(f, projected, k * h, h);
+    const auto closed = f.project<fb::loop>(projected);
+    REQUIRE(closed.status == kane::solve_status::ok);
+    CHECK(closed.residual <= 64 * std::numeric_limits<double>::epsilon());
+  }
+  CHECK(gap(projected) < 1e-13);
+  CHECK(gap(drifting) > 1e-8);                          // RK4 keeps the loop's rates, not the loop
+  CHECK(std::fabs(projected[0] - drifting[0]) < 1e-4);  // the crank angle moves as before
+  // a run-time size other than nq + p: wrong_size, x unchanged
+  Eigen::VectorXd three = Eigen::VectorXd::Constant(3, 0.5);
+  CHECK(f.project<fb::loop>(three).status == kane::solve_status::wrong_size);
+  CHECK((three.array() == 0.5).all());
 }

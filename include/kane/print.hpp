@@ -96,10 +96,30 @@ void print_expr(std::ostream& os, const X& x);
 template <class F>
 void print_function(std::ostream& os, const F& f);
 
+// speed_set_one<Sp> * r, as velocity_remainder<Sp> builds it: printed as r
+template <class X>
+constexpr bool bound_product() {
+  if constexpr (is_v<X, mul>)
+    return BoundOne<std::remove_cvref_t<decltype(std::declval<const X&>().l)>>;
+  else if constexpr (is_v<X, scaled>)
+    return BoundOne<std::remove_cvref_t<decltype(std::declval<const X&>().s)>>;
+  else
+    return false;
+}
+template <class X>
+const auto& remainder_factor(const X& x) {
+  if constexpr (is_v<X, mul>)
+    return x.r;
+  else
+    return x.v;
+}
+
 template <class X>
 void print_operand(std::ostream& os, const X& x, int min) {
   if constexpr (is_v<X, velocity_of> || is_v<X, acceleration_of>)
     print_operand(os, x.v, min);
+  else if constexpr (bound_product<X>())  // a velocity remainder: the speed set is not printed
+    print_operand(os, remainder_factor(x), min);
   else if (precedence<X>() < min) {
     os << '(';
     print_expr(os, x);
@@ -110,7 +130,11 @@ void print_operand(std::ostream& os, const X& x, int min) {
 
 template <class X>
 void print_expr(std::ostream& os, const X& x) {
-  if constexpr (coordinate_info<X>::value || speed_info<X>::value)
+  if constexpr (bound_product<X>())
+    print_expr(os, remainder_factor(x));
+  else if constexpr (BoundOne<X>)
+    os << '1';
+  else if constexpr (coordinate_info<X>::value || speed_info<X>::value)
     os << (coordinate_info<X>::value ? 'q' : 'u') << X::index << std::string(X::order, '\'');
   else if constexpr (Parameter<X>) {
     if constexpr (std::is_same_v<X, parameter<X::index>>)

@@ -16,6 +16,8 @@
 // case partial_other_speeds: partial_velocity_of_another_speed_set_build_it_for_the_evaluators<kane::qdot_speeds<2(UL)?>, kane::speeds<
 // case u_without_speed_set: evaluator_without_speed_set_reads_no_u_declare_the_speed_set<kane::speed<1(UL)?, 0(UL)?> ?>
 // case rate_below_level: kane: q' and q'' are solved from the speeds at the velocity and acceleration levels
+// case speed_not_linear: kane: a generalized speed is linear in q'
+// case velocity_remainder_other_speeds: partial_velocity_of_another_speed_set_build_it_for_the_evaluators<kane::speeds<.*>, kane::speeds<
 #include <kane/kane.hpp>
 
 using q1 = kane::coordinate<1>;
@@ -142,5 +144,23 @@ double use() {
 #endif
   evp.update(s);
   x += kane::evaluate(kane::dt(kane::q<1>), evp);
+  // the remainder of sp (zero here, as for any speeds without Z) is read only by an evaluator of sp
+  using sp2 = kane::speeds<kane::dot(w, kane::e<B, 1>), kane::dot(w, kane::e<B, 2>)>;
+  kane::evaluator<St, kane::frames<B>, kane::level::velocity, sp2> ev2;
+  ev2.update(s);
+#ifdef KANE_CASE_velocity_remainder_other_speeds
+  x += kane::express<B>(kane::velocity_remainder<sp>(w), ev2)[0];
+#else
+  x += kane::express<B>(kane::velocity_remainder<sp>(w), ev)[0] + kane::express<B>(w, ev2)[0];
+#endif
+  // a speed is linear in q': a product of rates is no speed; the fix is the rate itself
+#ifdef KANE_CASE_speed_not_linear
+  using squared = kane::speeds<kane::dt(kane::q<1>) * kane::dt(kane::q<1>), kane::dt(kane::q<2>)>;
+#else
+  using squared = kane::speeds<kane::dt(kane::q<1>), kane::dt(kane::q<2>)>;
+#endif
+  kane::evaluator<St, kane::frames<B>, kane::level::velocity, squared> evs;
+  evs.update(s);
+  x += evs.coordinate_value<1, 1>();
   return x;
 }

@@ -81,9 +81,10 @@ constexpr bool fixed_frames() {
 // A particle of mass Mass at the point P.
 template <Point P, auto Mass>
 struct particle : detail::particle_tag {
-  static_assert(ScalarExpr<decltype(Mass)>, "kane: particle<P, m> takes a scalar expression m");
+  static_assert(detail::ScalarArgument<Mass>,
+                "kane: particle<P, m> takes a scalar expression m (or a number)");
   // the particle keeps its rules (a system admits it only then)
-  static constexpr bool well_formed = ScalarExpr<decltype(Mass)>;
+  static constexpr bool well_formed = detail::ScalarArgument<Mass>;
   // P, where the mass is
   using point = P;
   // the mass, a scalar expression
@@ -94,9 +95,9 @@ struct particle : detail::particle_tag {
 template <Frame F, Point Q, auto I11, auto I22, auto I33, auto I12 = constant<0>{}, auto I23 = constant<0>{},
           auto I31 = constant<0>{}>
 struct inertia : detail::inertia_tag {
-  static_assert((ScalarExpr<decltype(I11)> && ScalarExpr<decltype(I22)> && ScalarExpr<decltype(I33)> &&
-                 ScalarExpr<decltype(I12)> && ScalarExpr<decltype(I23)> && ScalarExpr<decltype(I31)>),
-                "kane: inertia<F, Q, I11, I22, I33, I12, I23, I31> takes scalar expressions");
+  static_assert((detail::ScalarArgument<I11> && detail::ScalarArgument<I22> && detail::ScalarArgument<I33> &&
+                 detail::ScalarArgument<I12> && detail::ScalarArgument<I23> && detail::ScalarArgument<I31>),
+                "kane: inertia<F, Q, I11, I22, I33, I12, I23, I31> takes scalar expressions or numbers");
   // F, the frame of the components
   using frame = F;
   // Q, the point the inertia is about
@@ -192,7 +193,8 @@ constexpr bool body_rules() {
 // A rigid body fixed in B, mass centre Bo, mass Mass, inertia Given (kane::inertia).
 template <Frame B, Point Bo, auto Mass, class Given>
 struct rigid_body : detail::body_tag {
-  static_assert(ScalarExpr<decltype(Mass)>, "kane: rigid_body<B, Bo, m, I> takes a scalar expression m");
+  static_assert(detail::ScalarArgument<Mass>,
+                "kane: rigid_body<B, Bo, m, I> takes a scalar expression m (or a number)");
   static_assert(std::derived_from<Given, detail::inertia_tag>,
                 "kane: rigid_body<B, Bo, m, I> takes I = kane::inertia<F, Bo, ...>");
   // the inertia as given, or in the parent of a frame that spins
@@ -206,7 +208,7 @@ struct rigid_body : detail::body_tag {
           std::is_same_v<typename I::about, Bo>,
           error::inertia_about_another_point_than_the_mass_centre_use_parallel_axis<typename I::about, Bo>>);
   // the body keeps its rules (a system admits it only then)
-  static constexpr bool well_formed = ScalarExpr<decltype(Mass)> && detail::body_rules<B, Bo, Given>();
+  static constexpr bool well_formed = detail::ScalarArgument<Mass> && detail::body_rules<B, Bo, Given>();
   // B, the frame the body is fixed in
   using frame = B;
   // Bo, the mass centre

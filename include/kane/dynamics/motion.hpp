@@ -6,6 +6,7 @@
 //   rhs(x, dxdt, t);                           // Boost.Odeint's signature; x: nq + nu numbers
 //   rhs.inputs() = r;                          // inputs r (kane::r<i> in loads) of the calls from now on
 //   kane::constrained_motion<System, NH, Evaluator>  // nonholonomic: x = (q, u_ind)
+//   rhs.project<H>(x);                         // closes holonomic constraints H between steps
 //
 // Without a speed set the evaluator's speeds are u = q' (x = (q, q'), dx/dt = (q', q'')).
 // x and dxdt are any containers with operator[] and nq + nu entries (motion::size): std::array,
@@ -25,6 +26,7 @@
 #include "kane/dynamics/inverse_dynamics.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
 #include "kane/dynamics/system_rules.hpp"
+#include "kane/evaluation/configuration.hpp"
 #include "kane/evaluation/reads.hpp"
 
 #pragma GCC diagnostic push
@@ -64,15 +66,16 @@ struct every_read {
 // x and dxdt hold Size entries: known at compile time (sizes_checked), or by size() at run time
 // (a container without size() is taken at its word). Otherwise the call reads nothing, writes NaN
 // into as many entries of dxdt as it has, up to Size, and says wrong_size.
+template <std::size_t Size, class X>
+KANE_ALWAYS_INLINE bool fits(const X& x) {
+  if constexpr (fixed_size<X>() == 0 && requires { x.size(); })
+    return std::size_t(x.size()) == Size;
+  else
+    return true;
+}
 template <std::size_t Size, class S, class X, class DX>
 KANE_ALWAYS_INLINE bool size_fits(const X& x, DX& dxdt) {
-  const auto fits = [](const auto& c) {
-    if constexpr (fixed_size<std::remove_cvref_t<decltype(c)>>() == 0 && requires { c.size(); })
-      return std::size_t(c.size()) == Size;
-    else
-      return true;
-  };
-  if (fits(x) && fits(dxdt)) return true;
+  if (fits<Size>(x) && fits<Size>(dxdt)) return true;
   std::size_t n = Size;
   if constexpr (fixed_size<DX>() == 0 && requires { dxdt.size(); })
     n = std::size_t(dxdt.size()) < Size ? std::size_t(dxdt.size()) : Size;
@@ -253,6 +256,23 @@ class constrained_motion {
   }
   // The state of the last call, its dependent speeds solved.
   const state_type& state() const { return s_; }
+  // x's dependent coordinates of the holonomic constraints H closed again by Newton's method from x
+  // (solve_configuration), to call between steps: an integrator keeps only their rates. x's other
+  // entries are kept, and so are all of them unless the status is ok; a run-time size other than
+  // size gives wrong_size.
+  template <Holonomic H, class X>
+  requires(detail::sizes_checked<size, X, X>())
+      newton_result<scalar> project(X& x, newton_options<scalar> options = {}) {
+    if (!detail::fits<size>(x))
+      return {solve_status::wrong_size, 0, std::numeric_limits<scalar>::quiet_NaN()};
+    state_type s = s_;
+    for (std::size_t i = 0; i < nq; ++i) s.q[i] = x[i];
+    Ev ev;
+    const auto closed = solve_configuration<H>(ev, s, options);
+    if (closed.status == solve_status::ok)
+      for (std::size_t i : H::dependents) x[i - 1] = s.q[i - 1];
+    return closed;
+  }
 
  private:
   template <class X, class DX>

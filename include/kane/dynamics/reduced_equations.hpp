@@ -108,14 +108,11 @@ Eigen::Matrix<S, int(NH::n), int(NH::p)> speeds_of_independents(
   for (std::size_t j = 0; j < NH::m; ++j) t.row(Eigen::Index(NH::dependents[j] - 1)) = a.row(Eigen::Index(j));
   return t;
 }
-// b_dep of u_dep' = A u_ind' + b_dep: -C_dep^-1 (C' u + c0'), with the factors of C_dep that
-// solve_constraints found; C' u + c0' = dt(c) - C u' (RestRates: the evaluator's u' are zero).
+// C' u + c0' = dt(c) - C u' of the constraints (RestRates: the evaluator's u' are zero).
 template <class NH, bool RestRates, class Ev, class Sol>
-solve_status dependent_rates_at_rest(const Ev& ev, const Sol& sol,
-                                     std::array<typename Ev::scalar, NH::m>& b_dep) {
+Eigen::Matrix<typename Ev::scalar, int(NH::m), 1> constraint_rates_at_rest(const Ev& ev, const Sol& sol) {
   using S = typename Ev::scalar;
   constexpr std::size_t m = NH::m;
-  static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
   Eigen::Matrix<S, int(m), 1> rest;
   [&]<std::size_t... K>(std::index_sequence<K...>) {
     with_common_subexpressions<decltype(dt(std::get<K>(NH::equations)))...>(ev, [&](const auto& e) {
@@ -127,6 +124,17 @@ solve_status dependent_rates_at_rest(const Ev& ev, const Sol& sol,
   }
   (std::make_index_sequence<m>{});
   if constexpr (!RestRates) rest -= sol.C * detail::speed_rates(ev);
+  return rest;
+}
+// b_dep of u_dep' = A u_ind' + b_dep: -C_dep^-1 (C' u + c0'), with the factors of C_dep that
+// solve_constraints found.
+template <class NH, bool RestRates, class Ev, class Sol>
+solve_status dependent_rates_at_rest(const Ev& ev, const Sol& sol,
+                                     std::array<typename Ev::scalar, NH::m>& b_dep) {
+  using S = typename Ev::scalar;
+  constexpr std::size_t m = NH::m;
+  static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
+  const Eigen::Matrix<S, int(m), 1> rest = constraint_rates_at_rest<NH, RestRates>(ev, sol);
   using Dep = detail::dense_right_side<detail::constraint_system<NH>>;
   detail::table<S, m, 1> right, bd;
   for (std::size_t k = 0; k < m; ++k) right[k][0] = rest(Eigen::Index(k));
@@ -165,8 +173,8 @@ reduced_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
 // The n equations of a nonholonomic system with its constraint rows, M u' = f in speed order (SymPy's
 // KanesMethod.mass_matrix and forcing): the row of an independent speed u_r is Kane's equation along
 // v~_r, (T^T M)_r u' = (T^T f)_r, with M, f the equations of all n speeds (equations.hpp); the row of
-// a dependent speed is its differentiated constraint, u_dep' - A u_ind' = b_dep. status: the
-// equations', the solution's, or that of the solve for b_dep.
+// the j-th dependent speed is the j-th constraint differentiated, C_j u' = -(C' u + c0')_j, with C the
+// constraints' Jacobian by u as written. status: the equations' or the solution's.
 template <class Sys, class NH, class Ev, class Sol>
 requires detail::is_evaluator<Ev>::value equations_of_motion<typename Ev::scalar, NH::n>
 constrained_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
@@ -178,8 +186,7 @@ constrained_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
   } else {
     const auto e = mass_matrix_and_forcing<Sys>(ev);
     const Eigen::Matrix<S, int(n), int(p)> t = detail::speeds_of_independents<NH>(sol.A);
-    std::array<S, NH::m> b_dep;
-    const solve_status solved = detail::dependent_rates_at_rest<NH, false>(ev, sol, b_dep);
+    const Eigen::Matrix<S, int(NH::m), 1> rest = detail::constraint_rates_at_rest<NH, false>(ev, sol);
     equations_of_motion<S, n> out{Eigen::Matrix<S, int(n), int(n)>::Zero(), Eigen::Matrix<S, int(n), 1>(),
                                   e.status};
     for (std::size_t k = 0; k < p; ++k) {
@@ -189,13 +196,10 @@ constrained_mass_matrix_and_forcing(const Ev& ev, const Sol& sol) {
     }
     for (std::size_t j = 0; j < NH::m; ++j) {
       const auto r = Eigen::Index(NH::dependents[j] - 1);
-      out.M(r, r) = S(1);
-      for (std::size_t k = 0; k < p; ++k)
-        out.M(r, Eigen::Index(NH::independents[k] - 1)) = -sol.A(Eigen::Index(j), Eigen::Index(k));
-      out.f(r) = b_dep[j];
+      out.M.row(r) = sol.C.row(Eigen::Index(j));
+      out.f(r) = -rest(Eigen::Index(j));
     }
     if (out.status == solve_status::ok) out.status = sol.status;
-    if (out.status == solve_status::ok) out.status = solved;
     if (out.status == solve_status::ok &&
         !(detail::all_finite_matrix(out.M) && detail::all_finite_matrix(out.f)))
       out.status = solve_status::not_finite;

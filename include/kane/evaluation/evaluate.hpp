@@ -93,7 +93,12 @@ KANE_ALWAYS_INLINE typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
     return ev.state().t;
   else if constexpr (is_constant<X>::value)
     return S(X::num) / S(X::den);
-  else if constexpr (kde_info<X>::value) {
+  else if constexpr (BoundOne<X>) {
+    static_assert(check<std::is_same_v<typename X::speed_set, typename Ev::speed_set>,
+                        error::partial_velocity_of_another_speed_set_build_it_for_the_evaluators<
+                            typename Ev::speed_set, typename X::speed_set>>);
+    return S(1);
+  } else if constexpr (kde_info<X>::value) {
     static_assert(check<std::is_same_v<typename X::speed_set, typename Ev::speed_set>,
                         error::partial_velocity_of_another_speed_set_build_it_for_the_evaluators<
                             typename Ev::speed_set, typename X::speed_set>>);

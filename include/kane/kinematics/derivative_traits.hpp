@@ -45,12 +45,22 @@ constexpr auto rebuild(unary<Fn, X>*, A a) {
   return unary<Fn, A>(a);
 }
 
+// A template argument that is a scalar expression or a plain number (2, 0.5).
+template <auto X>
+concept ScalarArgument = ScalarExpr<std::remove_cv_t<decltype(X)>> || Number<std::remove_cv_t<decltype(X)>>;
+
 // The expression X (a template argument) with every literal moved into its
-// type: nodes become empty, so derivatives of X cost nothing to build.
+// type: nodes become empty, so derivatives of X cost nothing to build. A plain
+// number that is an integer becomes a constant (0.0 a type-level zero), any other a fixed literal.
 template <auto X>
 constexpr auto freeze() {
   using T = std::remove_cv_t<decltype(X)>;
-  if constexpr (std::is_same_v<T, literal>)
+  if constexpr (Number<T>) {
+    if constexpr (X >= T(-1000000) && X <= T(1000000) && X == T(std::intmax_t(X)))
+      return constant<std::intmax_t(X)>{};
+    else
+      return fixed<literal{double(X)}>{};
+  } else if constexpr (std::is_same_v<T, literal>)
     return fixed<X>{};
   else if constexpr (std::is_empty_v<T>)
     return X;
@@ -85,9 +95,15 @@ struct pose_number_tag {};
 template <class X>
 concept PoseNumber = __is_base_of(pose_number_tag, X);
 
+// The number 1 that names a speed set (kane::speed_set_one): a constant that only an evaluator of
+// that speed set reads.
+struct bound_one_tag {};
 template <class X>
-concept LeafConstant =
-    is_constant<X>::value || std::is_same_v<X, literal> || is_fixed<X>::value || Parameter<X> || Input<X>;
+concept BoundOne = __is_base_of(bound_one_tag, X);
+
+template <class X>
+concept LeafConstant = is_constant<X>::value || std::is_same_v<X, literal> || is_fixed<X>::value ||
+    Parameter<X> || Input<X> || BoundOne<X>;
 
 // A frame that the vector V uses (void if none): its root is V's root.
 template <class V>

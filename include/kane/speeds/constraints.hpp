@@ -99,7 +99,7 @@ struct constraint_system {
   }
   template <std::size_t K>
   static constexpr auto rest() {
-    return velocity_remainder<Sp>(std::get<K>(NH::equations));
+    return detail::remainder_u<Sp>(std::get<K>(NH::equations), std::make_index_sequence<Sp::rows>{});
   }
   template <std::size_t K, std::size_t J>  // column J of [M_ind | c0]
   static constexpr auto right() {

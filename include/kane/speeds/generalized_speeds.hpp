@@ -160,6 +160,13 @@ struct kde_offset : detail::scalar_tag, detail::pose_number_tag {
   static constexpr auto time_derivative();
 };
 
+// 1, read only by an evaluator of the speed set Sp: velocity_remainder<Sp> is this times the remainder.
+template <class Sp>
+struct speed_set_one : detail::scalar_tag, detail::bound_one_tag {
+  // Sp, the speed set
+  using speed_set = Sp;
+};
+
 namespace detail {
 template <class X>
 struct kde_info : std::false_type {};
@@ -233,6 +240,14 @@ struct kde_system {
   using y_type = decltype(diff(std::get<R>(Sp::definitions), coordinate<C + 1, 1>{}));
   template <std::size_t R>
   using z_type = decltype(at_rest(std::get<R>(Sp::definitions)));
+  // Y_rs holds no q': each row is linear in q'
+  static constexpr bool linear = []<std::size_t... I>(std::index_sequence<I...>) {
+    return ((leaves_of<std::remove_cv_t<y_type<I / d, I % d>>>.rates == 0) && ... && true);
+  }
+  (std::make_index_sequence<n * n>{});
+  static_assert(linear,
+                "kane: a generalized speed is linear in q': u_r = sum_s Y_rs(q, t) q_s' + Z_r(q, t), "
+                "with no q' in Y_rs; write u_r without products or functions of the rates");
   static constexpr pattern<n, n> m = []<std::size_t... I>(std::index_sequence<I...>) {
     pattern<n, n> p{};
     ((p[I / d][I % d] = entry_of<y_type<I / d, I % d>>()), ...);

@@ -137,10 +137,14 @@ requires(!Speed<Leaf>) constexpr X partial_velocity(X x, Leaf) {
   return x;
 }
 
-// v_t = v - sum_r v_r u_r.
+// v_t = v - sum_r v_r u_r, times kane::speed_set_one<Sp>: only an evaluator of Sp reads it.
 template <SpeedSet Sp, class X>
 requires(ScalarExpr<X> || VectorExpr<X>) constexpr auto velocity_remainder(X x) {
-  return detail::remainder_u<Sp>(x, std::make_index_sequence<Sp::rows>{});
+  const auto r = detail::remainder_u<Sp>(x, std::make_index_sequence<Sp::rows>{});
+  if constexpr (ScalarExpr<decltype(r)>)
+    return mul<speed_set_one<Sp>, decltype(r)>(speed_set_one<Sp>{}, r);
+  else
+    return scaled<speed_set_one<Sp>, decltype(r)>(speed_set_one<Sp>{}, r);
 }
 
 }  // namespace kane
