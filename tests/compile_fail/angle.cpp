@@ -1,7 +1,6 @@
-// Angles of simple rotations: coordinates, parameters and numbers only, all within the state.
+// Angles of simple rotations: coordinates, parameters, numbers and t, all within the state; no speed.
 // Each case is a misuse (#ifdef) and its fix (#else).
 // case angle_speed: kane: simple<Axis, Angle> turns by a coordinate q_i, a parameter, a constant or
-// case angle_time: kane: simple<Axis, Angle> turns by a coordinate q_i, a parameter, a constant or
 // case angle_coordinate: kane: a rotation angle uses a coordinate beyond the state
 // case angle_parameter: kane: a rotation angle uses a parameter beyond the state
 #include <kane/kane.hpp>
@@ -13,11 +12,7 @@ struct A : kane::frame<N, kane::simple<kane::axis::z, kane::angle<kane::q<1> + k
 #else
 struct A : kane::frame<N, kane::simple<kane::axis::z, kane::angle<kane::q<1> + kane::q<2>>>> {};
 #endif
-#ifdef KANE_CASE_angle_time
-struct B : kane::frame<A, kane::simple<kane::axis::x, kane::angle<kane::literal(2.0) * kane::t>>> {};
-#else
 struct B : kane::frame<A, kane::simple<kane::axis::x, kane::angle<kane::literal(2.0) * kane::q<1>>>> {};
-#endif
 struct C : kane::frame<B, kane::simple<kane::axis::y, lam>> {};
 
 double use() {

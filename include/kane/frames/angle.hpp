@@ -1,26 +1,28 @@
 // Angles of simple rotations: a coordinate q_i, a parameter, a constant, or
-// kane::angle<X> for X a rational expression of coordinates, parameters and
-// numbers (q<4> + literal(pi / 2), 2 * q<1> - q<2>, a named parameter).
+// kane::angle<X> for X an expression of coordinates, parameters, numbers and
+// the time t, with elementary functions (q<4> + literal(pi / 2), 2 * q<1> - q<2>,
+// a named parameter; Omega * t + b * sin(c * t) for a frame driven in time).
 //
 //   struct H : kane::frame<B, kane::simple<kane::axis::y, kane::angle<kane::q<4> + kane::literal(0.3)>>> {};
 //   struct lambda : kane::parameter<5> {};
 //   struct T : kane::frame<B, kane::simple<kane::axis::y, lambda>> {};   // head-tube angle
 //
-// An angle depends on no speed and not on t: ^P w^C = theta' k with theta'
-// the total derivative of theta (zero for a constant angle).
+// An angle depends on no speed: ^P w^C = theta' k with theta' the total
+// derivative of theta (zero for a constant angle, dtheta/dt for a prescribed one).
 #pragma once
 
 #include <cstddef>
 #include <type_traits>
 
 #include "kane/expressions/expr.hpp"
+#include "kane/expressions/functions.hpp"
 #include "kane/frames/coordinate.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
-// A rotation angle given by a scalar expression X of coordinates, parameters and numbers.
+// A rotation angle given by a scalar expression X of coordinates, parameters, numbers and t.
 template <auto X>
 struct angle {
   // X, the angle as a scalar expression
@@ -37,9 +39,16 @@ constexpr auto angle_form() {
   using T = std::remove_cv_t<decltype(X)>;
   if constexpr (std::is_same_v<T, literal>)
     return fixed<X>{};
-  else if constexpr (is_coordinate<T>::value || Parameter<T> || is_constant<T>::value || is_fixed<T>::value)
+  else if constexpr (is_coordinate<T>::value || Parameter<T> || is_constant<T>::value || is_fixed<T>::value ||
+                     std::is_same_v<T, time_variable>)
     return X;
-  else if constexpr (is_v<T, neg>) {
+  else if constexpr (is_v<T, unary>) {
+    constexpr auto x = angle_form<X.x>();
+    if constexpr (std::is_same_v<decltype(x), const not_an_angle>)
+      return not_an_angle{};
+    else
+      return unary<typename unary_info<T>::fn, std::remove_cv_t<decltype(x)>>(x);
+  } else if constexpr (is_v<T, neg>) {
     constexpr auto x = angle_form<X.x>();
     if constexpr (std::is_same_v<decltype(x), const not_an_angle>)
       return not_an_angle{};
@@ -79,7 +88,7 @@ inline constexpr std::size_t bare_coordinate = 0;
 template <std::size_t I>
 inline constexpr std::size_t bare_coordinate<coordinate<I, 0>> = I;
 
-// theta at the state st (q and p).
+// theta at the state st (q, p and t).
 template <class S, class X, class St>
 constexpr S angle_value(const X& x, const St& st) {
   if constexpr (is_coordinate<X>::value) {
@@ -96,6 +105,10 @@ constexpr S angle_value(const X& x, const St& st) {
     return S(X::num) / S(X::den);
   else if constexpr (is_fixed<X>::value)
     return S(X::value);
+  else if constexpr (std::is_same_v<X, time_variable>)
+    return S(st.t);
+  else if constexpr (is_v<X, unary>)
+    return unary_info<X>::fn::apply(angle_value<S>(x.x, st));
   else if constexpr (is_v<X, neg>)
     return -angle_value<S>(x.x, st);
   else if constexpr (is_v<X, add>)

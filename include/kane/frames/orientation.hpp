@@ -81,7 +81,7 @@ template <Axis K, class A>
 struct simple {
   static_assert(Angle<A>,
                 "kane: simple<Axis, Angle> turns by a coordinate q_i, a parameter, a constant or "
-                "kane::angle<X> with X an expression of coordinates, parameters and numbers");
+                "kane::angle<X> with X an expression of coordinates, parameters, numbers and t (no speed)");
   // K, fixed in P and C
   using axis = K;
   // the angle as a scalar expression

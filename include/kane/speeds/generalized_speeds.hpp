@@ -175,6 +175,22 @@ struct kde_info<kde_weight<S, R, Sp>> : std::true_type {};
 template <std::size_t S, class Sp>
 struct kde_info<kde_offset<S, Sp>> : std::true_type {};
 
+// The part of ^R w^F without q' and u: dtheta/dt k of the edges above F turned by a prescribed angle.
+template <class F>
+constexpr auto explicit_time_omega() {
+  if constexpr (std::is_void_v<typename F::tree_parent>)
+    return zero_vector{};
+  else if constexpr (matrix_edge<F> || spin_edge<F>)
+    return explicit_time_omega<typename F::tree_parent>();
+  else {
+    constexpr auto d = partial<time_variable>(F::step::angle);
+    if constexpr (is_zero_v<std::remove_cv_t<decltype(d)>>)
+      return explicit_time_omega<typename F::tree_parent>();
+    else
+      return explicit_time_omega<typename F::tree_parent>() + d * axis_vector<F>();
+  }
+}
+
 // Replace q', q'', u, u' by zero (the part of an expression linear in them drops out): x at rest.
 template <class X>
 constexpr auto at_rest(X x) {
@@ -214,8 +230,10 @@ constexpr auto at_rest(X x) {
     return derived_dot(at_rest(x.l), at_rest(x.r));
   else if constexpr (is_unit<X>::value || is_zero_vector_v<X>)
     return x;
-  else if constexpr (is_v<X, omega> || is_v<X, angular_velocity_of>)
-    return zero_vector{};  // linear in q' with no explicit time
+  else if constexpr (is_v<X, omega>)
+    return explicit_time_omega<typename X::frame>();  // linear in q', plus the prescribed rates
+  else if constexpr (is_v<X, angular_velocity_of>)
+    return at_rest(expand(x));
   else if constexpr (is_v<X, alpha> || is_v<X, angular_acceleration_of>)
     static_assert(!sizeof(X), "kane: an angular acceleration is not linear in the speeds");
   else if constexpr (Quantity<X>)
