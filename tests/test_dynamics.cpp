@@ -418,3 +418,30 @@ TEST_CASE("dynamics: plain numbers are accepted where a constant is: a mass of 2
   STATIC_REQUIRE(
       kane::is_zero_v<std::remove_cv_t<std::tuple_element_t<3, decltype(rod_inertia::components)>>>);
 }
+
+TEST_CASE("dynamics: without a speed set u is q', whichever of the two the state holds") {
+  using bare = kane::evaluator<state1, kane::frames<A>, kane::level::acceleration>;
+  state1 by_rates, by_speeds, both, conflict;
+  for (state1* s : {&by_rates, &by_speeds, &both, &conflict}) s->p = {0.7, 2.0, 9.81}, s->q = {0.4};
+  by_rates.qd = {1.3}, by_rates.qdd = {-0.5};
+  by_speeds.u = {1.3}, by_speeds.ud = {-0.5};
+  both.qd = both.u = {1.3}, both.qdd = both.ud = {-0.5};
+  conflict.qd = {1.3}, conflict.u = {0.2};
+  const auto values = [](const state1& s) {
+    bare ev;
+    ev.update(s);
+    const auto eom = kane::mass_matrix_and_forcing<pendulum>(ev);
+    const kane::vec<N> a = kane::express<N>(kane::acceleration<N, P>(), ev);
+    return std::array<double, 5>{eom.f(0), a[1], a[2], kane::kinetic_energy<pendulum>(ev),
+                                 double(int(ev.status()))};
+  };
+  const auto expected = values(by_rates);
+  CHECK(expected[4] == 0.0);
+  CHECK(expected[3] == Approx(0.5 * 2.0 * 0.49 * 1.3 * 1.3).epsilon(1e-15));
+  CHECK(values(by_speeds) == expected);
+  CHECK(values(both) == expected);
+  bare ev;
+  ev.update(conflict);  // q' = 1.3 and u = 0.2: which one was meant is not known
+  CHECK(ev.status() == kane::solve_status::conflicting_rates);
+  CHECK(std::string(kane::to_string(ev.status())) == "conflicting_rates");
+}

@@ -321,3 +321,26 @@ TEST_CASE("speed sets: the rolling disc's speeds in another order give the permu
     CHECK((f2 - f).norm() < 1e-12);
   }
 }
+
+TEST_CASE("speed sets: the linearization follows the speeds") {
+  // x = (q, u) with u = (q1', q1' + q2'): A against central differences of kane::motion
+  using sp = kane::speeds<dt(q<1>), dt(q<1>) + dt(q<2>)>;
+  using Ev = kane::evaluator<pd_state, kane::frames<pd::B>, kane::level::acceleration, sp>;
+  std::mt19937 rng(11);
+  pd_state s = pendulum_state(rng);
+  s.u = {0.4, -0.9};
+  const auto lin = kane::linearize<pd::system, Ev>(s);
+  REQUIRE(lin.status == kane::solve_status::ok);
+  kane::motion<pd::system, Ev> rhs(s);
+  const std::array<double, 4> x{s.q[0], s.q[1], s.u[0], s.u[1]};
+  const double h = 1e-6;
+  for (std::size_t j = 0; j < 4; ++j) {
+    std::array<double, 4> up = x, down = x, dup{}, ddown{};
+    up[j] += h, down[j] -= h;
+    rhs(up, dup, 0.0);
+    rhs(down, ddown, 0.0);
+    for (std::size_t i = 0; i < 4; ++i)
+      CHECK(lin.A(Eigen::Index(i), Eigen::Index(j)) ==
+            Approx((dup[i] - ddown[i]) / (2 * h)).margin(1e-7).epsilon(1e-7));
+  }
+}

@@ -263,9 +263,16 @@ S dynamics(const kane::state<S, 6>& s6) {
   const auto lin = kane::linearize<m::system, decltype(ev), kane::inputs<m::p<19>>>(s);
   const S active =
       kane::evaluate(kane::generalized_active_force<m::N, m::system, kane::qdot_speeds<2>, 1>(), ev);
+  const auto pin = kane::reaction<m::system, kane::cut<m::J, m::B, m::Q>>(ev);
+  // absolute-angle rates: W's numbers and their time derivatives in the partial velocities
+  using absolute = kane::speeds<kane::dt(kane::q<1>), kane::dt(kane::q<1>) + kane::dt(kane::q<2>)>;
+  kane::evaluator<decltype(s), kane::frames<m::B>, kane::level::acceleration, absolute> ea;
+  ea.update(s);
+  const S absolute_f = kane::mass_matrix_and_forcing<m::system>(ea).f.sum();
   return eom.M.sum() + ud.sum() + kane::kinetic_energy<m::system>(ev) +
          kane::potential_energy<m::system>(ev) + kane::linear_momentum<m::system>(ev)[0] +
-         kane::angular_momentum<m::system>(ev)[1] + dx[3] + lin.A.sum() + lin.B.sum() + active;
+         kane::angular_momentum<m::system>(ev)[1] + dx[3] + lin.A.sum() + lin.B.sum() + active +
+         pin.force[0] + pin.moment[1] + absolute_f;
 }
 
 // Printing.

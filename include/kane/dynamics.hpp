@@ -9,6 +9,7 @@
 #include "kane/dynamics/loads.hpp"
 #include "kane/dynamics/momenta.hpp"
 #include "kane/dynamics/motion.hpp"
+#include "kane/dynamics/reaction.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
 #include "kane/dynamics/springs.hpp"
 #include "kane/dynamics/terms.hpp"

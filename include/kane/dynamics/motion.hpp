@@ -136,7 +136,10 @@ class motion {
   static constexpr std::size_t nq = state_type::nq, nu = detail::speeds_of<Ev>::n, size = nq + nu;
 
   // parameters and inputs from s (each call's x gives q and u); u' and q'' set to 0
-  explicit motion(const state_type& s) : s_(s) { s_.ud = {}, s_.qdd = {}; }
+  explicit motion(const state_type& s) : s_(s) {
+    s_.ud = {}, s_.qdd = {};
+    if constexpr (std::is_void_v<typename Ev::speed_set>) s_.u = {};  // x's speeds go to q'
+  }
 
   // Numbers: one function body (the passes, the tables and Eigen's fixed-size loops inlined).
   // A container of a size known at compile time is checked then; others must hold size entries.

@@ -7,6 +7,9 @@
 //   kane::vec<N> v = kane::express<N>(expr, ev);     // ^N components of expr
 //
 // With a speed set, q' and q'' are solved from u and u' (kinematic_equations.hpp).
+// Without one u is q': q' is read from s.qd, or from s.u where s.qd holds 0 (q''
+// from s.qdd or s.ud likewise); different nonzero numbers in both are
+// conflicting_rates.
 // update(s) copies what evaluation reads of s (q, p, t and, with a speed set,
 // u and u', else q' and q''): every result is of the state of the last update,
 // never a mix of two states, and s may be a temporary. An attitude of s that is
@@ -193,15 +196,32 @@ class evaluator<St, frames<Fs...>, Level, Given>
  private:
   static constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
 
-  // 0 if the rates this level reads (q' or u, then q'' or u') are finite, NaN if not.
+  // 0 if the rates this level reads (u and u' of s, or q' and q'' as read into st_) are finite, NaN if not.
   template <bool Rest = false>
-  static scalar rates_residue(const St& s) {
+  scalar rates_residue(const St& s) const {
     scalar residue = scalar(0);
     if constexpr (velocity)
-      residue += solves ? detail::nonfinite_residue(s.u) : detail::nonfinite_residue(s.qd);
+      residue += solves ? detail::nonfinite_residue(s.u) : detail::nonfinite_residue(st_.qd);
     if constexpr (acceleration && !Rest)
-      residue += solves ? detail::nonfinite_residue(s.ud) : detail::nonfinite_residue(s.qdd);
+      residue += solves ? detail::nonfinite_residue(s.ud) : detail::nonfinite_residue(st_.qdd);
     return residue;
+  }
+  // Without a speed set u is q' (nu = nq): out = d, or u where d is 0; true where both hold
+  // different nonzero numbers.
+  static bool merged_rates(std::array<scalar, St::nq>& out, const std::array<scalar, St::nq>& d,
+                           const std::array<scalar, St::nu>& u) {
+    if constexpr (St::nu != St::nq) {
+      out = d;
+      return false;
+    } else {
+      bool conflict = false;
+      for (std::size_t i = 0; i < St::nq; ++i) {
+        const bool given = !(d[i] == scalar(0)), other = !(u[i] == scalar(0));
+        out[i] = given || !other ? d[i] : u[i];  // d where u is 0 (-0 keeps its sign)
+        conflict = conflict | (given & other & !(u[i] == d[i]));
+      }
+      return conflict;
+    }
   }
 
   // Reads::rest: u' = 0, not read from the state (motion.hpp)
@@ -219,11 +239,14 @@ class evaluator<St, frames<Fs...>, Level, Given>
     st_.q = s.q, st_.p = s.p, st_.t = s.t, st_.r = s.r, updated_ = true;
     const scalar norm_residue = detail::normalise(st_, closure{});  // Euler parameters of unit norm
     const bool rotations = detail::attitudes(st_, closure{});       // NaN in st_ where not
-    if constexpr (!solves && rests<Reads>)
-      st_.qd = s.qd, st_.qdd = {};
-    else if constexpr (!solves)
-      st_.qd = s.qd, st_.qdd = s.qdd;
-    else if constexpr (Rates && rests<Reads>)
+    bool conflict = false;  // without a speed set: q' and u (q'' and u') that disagree
+    if constexpr (!solves) {
+      conflict = merged_rates(st_.qd, s.qd, s.u) && velocity;
+      if constexpr (rests<Reads>)
+        st_.qdd = {};
+      else
+        conflict = (merged_rates(st_.qdd, s.qdd, s.ud) && acceleration) || conflict;
+    } else if constexpr (Rates && rests<Reads>)
       st_.u = s.u, st_.ud = {};
     else if constexpr (Rates)
       st_.u = s.u, st_.ud = s.ud;
@@ -232,9 +255,10 @@ class evaluator<St, frames<Fs...>, Level, Given>
         detail::nonfinite_residue(s.q) + detail::nonfinite_residue(s.p) + (s.t - s.t) + norm_residue;
     if constexpr (Rates) residue += rates_residue<rests<Reads>>(s);
     const bool finite = residue == scalar(0);
-    this->status_ = !finite     ? solve_status::not_finite
-                    : rotations ? solve_status::ok
-                                : solve_status::not_a_rotation;
+    this->status_ = !finite      ? solve_status::not_finite
+                    : !rotations ? solve_status::not_a_rotation
+                    : conflict   ? solve_status::conflicting_rates
+                                 : solve_status::ok;
     if constexpr (!solves) {
       this->template pass<true, velocity, acceleration, Reads>(
           tr, *this);  // frame after frame, all levels at once

@@ -2,7 +2,8 @@
 // rank threshold), numbers that are not finite (NaN or inf in or out), an
 // iteration that did not reach its tolerance (configuration.hpp), an
 // attitude read from the state that is not a rotation (kane::attitude), or a
-// container of another size than the call needs (kane::motion).
+// container of another size than the call needs (kane::motion), or q' and u
+// (q'' and u') given as different numbers where u is q' (no speed set).
 // ok promises finite numbers: the promise rests on IEEE comparisons with NaN,
 // which -ffast-math and -ffinite-math-only let the compiler fold away, so
 // those flags are an error here unless KANE_ALLOW_FAST_MATH is defined (then
@@ -26,9 +27,17 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
-// ok, a singular matrix, numbers not finite, no convergence, an attitude not a rotation, or a
-// container of the wrong size
-enum class solve_status { ok, singular, not_finite, not_converged, not_a_rotation, wrong_size };
+// ok, a singular matrix, numbers not finite, no convergence, an attitude not a rotation, a
+// container of the wrong size, or q' and u that disagree where u is q'
+enum class solve_status {
+  ok,
+  singular,
+  not_finite,
+  not_converged,
+  not_a_rotation,
+  wrong_size,
+  conflicting_rates
+};
 // The name of a status ("ok", "singular", ...).
 constexpr const char* to_string(solve_status s) {
   switch (s) {
@@ -44,6 +53,8 @@ constexpr const char* to_string(solve_status s) {
       return "not_a_rotation";
     case solve_status::wrong_size:
       return "wrong_size";
+    case solve_status::conflicting_rates:
+      return "conflicting_rates";
   }
   return "unknown";
 }
