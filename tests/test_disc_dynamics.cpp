@@ -52,15 +52,18 @@ TEST_CASE("dynamics: the rolling disc's reduced equations against SymPy's KanesM
   }
 }
 
-TEST_CASE("dynamics: the disc's n equations with their constraint rows equal SymPy's M and f") {
-  for (const auto& x : sympy_disc_dynamics::disc) {
+namespace {
+// The n equations with their constraint rows (constraints NH) against SymPy's M, f and u' at its cases.
+template <class NH, class Cases>
+void check_constraint_rows(const Cases& cases, const double (&p)[3]) {
+  for (const auto& x : cases) {
     disc_state s;
     for (int i = 0; i < 5; ++i) s.q[i] = x.q[i], s.u[i] = x.u[i];
-    for (int i = 0; i < 3; ++i) s.p[i] = sympy_disc_dynamics::p[i];
+    for (int i = 0; i < 3; ++i) s.p[i] = p[i];
     disc_evaluator ev;
     ev.update(s);
-    const auto sol = kane::solve_constraints<dd::rolling>(ev);
-    const auto eq = kane::constrained_mass_matrix_and_forcing<dd::system, dd::rolling>(ev, sol);
+    const auto sol = kane::solve_constraints<NH>(ev);
+    const auto eq = kane::constrained_mass_matrix_and_forcing<dd::system, NH>(ev, sol);
     REQUIRE(eq.status == kane::solve_status::ok);
     for (int i = 0; i < 5; ++i) {
       CHECK(eq.f(i) == Approx(x.f[i]).epsilon(1e-12).margin(1e-13));
@@ -70,32 +73,22 @@ TEST_CASE("dynamics: the disc's n equations with their constraint rows equal Sym
     for (int i = 0; i < 5; ++i) CHECK(ud(i) == Approx(x.ud[i]).epsilon(1e-12).margin(1e-13));
   }
 }
+}  // namespace
+
+TEST_CASE("dynamics: the disc's n equations with their constraint rows equal SymPy's M and f") {
+  check_constraint_rows<dd::rolling>(sympy_disc_dynamics::disc, sympy_disc_dynamics::p);
+}
 
 TEST_CASE("dynamics: constraint rows whose dependent block is not the identity equal SymPy's M and f") {
-  // c1 = 2 vB.n1 + vB.n2, c2 = vB.n1 - 3 vB.n2: SymPy's rows are C u' = -(C' u + c0'), C the constraints'
-  // Jacobian
+  // c1 = 2 vB.n1 + vB.n2, c2 = vB.n1 - 3 vB.n2: SymPy's rows are C u' = -(C' u + c0'), C the
+  // constraints' Jacobian as written
   using kane::dot;
   using kane::e;
   using mixed =
       kane::nonholonomic<dd::speeds5, kane::dependent<4, 5>,
                          kane::constant<2>{} * dot(dd::v_below, e<dd::N, 1>) + dot(dd::v_below, e<dd::N, 2>),
                          dot(dd::v_below, e<dd::N, 1>) - kane::constant<3>{} * dot(dd::v_below, e<dd::N, 2>)>;
-  for (const auto& x : sympy_disc_mixed::disc) {
-    disc_state s;
-    for (int i = 0; i < 5; ++i) s.q[i] = x.q[i], s.u[i] = x.u[i];
-    for (int i = 0; i < 3; ++i) s.p[i] = sympy_disc_mixed::p[i];
-    disc_evaluator ev;
-    ev.update(s);
-    const auto sol = kane::solve_constraints<mixed>(ev);
-    const auto eq = kane::constrained_mass_matrix_and_forcing<dd::system, mixed>(ev, sol);
-    REQUIRE(eq.status == kane::solve_status::ok);
-    for (int i = 0; i < 5; ++i) {
-      CHECK(eq.f(i) == Approx(x.f[i]).epsilon(1e-12).margin(1e-13));
-      for (int j = 0; j < 5; ++j) CHECK(eq.M(i, j) == Approx(x.M[5 * i + j]).epsilon(1e-12).margin(1e-14));
-    }
-    const Eigen::Matrix<double, 5, 1> ud = eq.M.partialPivLu().solve(eq.f);
-    for (int i = 0; i < 5; ++i) CHECK(ud(i) == Approx(x.ud[i]).epsilon(1e-12).margin(1e-13));
-  }
+  check_constraint_rows<mixed>(sympy_disc_mixed::disc, sympy_disc_mixed::p);
 }
 
 TEST_CASE("dynamics: an axisymmetric inertia given in the frame the disc turns in") {
