@@ -204,3 +204,20 @@ TEST_CASE("dynamics: kane::constrained_motion with vectors of another run-time s
   CHECK(f.status() == kane::solve_status::ok);
   CHECK(dx.allFinite());
 }
+
+TEST_CASE("dynamics: kane::constrained_motion names x's entries and gives the evaluator at a state of x") {
+  disc_state s;
+  for (int i = 0; i < 3; ++i) s.p[i] = sympy_disc_dynamics::p[i];
+  kane::constrained_motion<dd::system, dd::rolling, disc_evaluator> f(s);
+  STATIC_REQUIRE((f.index(kane::q<5>) == 4 && f.index(kane::u<1>) == 5 && f.index(kane::u<3>) == 7));
+  const std::array<double, 8> stage{0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7},
+      x{0.2, 0.35, 0.1, 0.5, -0.3, 0.4, 5.0, 1.1};
+  std::array<double, 8> dx{};
+  f(x, dx, 0.0);
+  const auto at_x = f.state();  // u4, u5 solved at x
+  f(stage, dx, 0.0);
+  const auto ev = f.evaluator(x, 0.0);
+  REQUIRE(ev.status() == kane::solve_status::ok);
+  for (std::size_t i = 0; i < 5; ++i) CHECK(ev.state().u[i] == Approx(at_x.u[i]).epsilon(1e-15));
+  CHECK(f.evaluator(Eigen::VectorXd::Zero(5), 0.0).status() == kane::solve_status::not_finite);
+}

@@ -453,3 +453,22 @@ TEST_CASE("dynamics: without a speed set u is q', whichever of the two the state
   CHECK(ev.status() == kane::solve_status::conflicting_rates);
   CHECK(std::string(kane::to_string(ev.status())) == "conflicting_rates");
 }
+
+TEST_CASE("dynamics: kane::motion names x's entries and gives the evaluator at a state of x") {
+  state1 s;
+  s.p = {0.7, 2.0, 9.81};
+  kane::motion<pendulum, eval1> f(s);
+  using bare = kane::evaluator<state1, kane::frames<A>, kane::level::acceleration>;
+  kane::motion<pendulum, bare> g(s);
+  STATIC_REQUIRE((f.index(kane::q<1>) == 0 && f.index(kane::u<1>) == 1 && g.index(kane::u<1>) == 1));
+  const std::array<double, 2> stage{0.1, -0.2}, x{0.4, 1.3};
+  std::array<double, 2> dx{};
+  f(stage, dx, 0.25);  // the last call, at another state: not the one asked for below
+  g(stage, dx, 0.25);
+  for (const double energy : {kane::kinetic_energy<pendulum>(f.evaluator(x, 0.5)),
+                              kane::kinetic_energy<pendulum>(g.evaluator(x, 0.5))})
+    CHECK(energy == Approx(0.5 * 2.0 * 0.49 * 1.3 * 1.3).epsilon(1e-15));
+  CHECK(f.evaluator(x, 0.5).state().t == 0.5);
+  CHECK(f.evaluator(x, 0.5).state().q[0] == 0.4);
+  CHECK(f.evaluator(Eigen::VectorXd::Zero(3), 0.5).status() == kane::solve_status::not_finite);
+}

@@ -85,3 +85,18 @@ TEST_CASE("print: partial velocities under general speeds print W_sr = dq_s'/du_
   os << kane::velocity_remainder<sp>(v);
   CHECK(os.str() == "X1 a1 + X2 a2");
 }
+
+TEST_CASE("print: parameters and inputs named in one line print by their names") {
+  static constexpr kane::named_parameter<2, "m"> m;
+  static constexpr kane::named_input<1, "T"> T;
+  CHECK(kane::to_string(m * kane::q<1> + T) == "m*q1 + T");
+  kane::state<double, 1, 1, 2, 1> s;
+  s[m] = 3.0;  // p[1]
+  s[T] = 0.5;  // r[0]
+  s.q = {2.0};
+  kane::evaluator<decltype(s), kane::frames<A>, kane::level::pose> ev;
+  ev.update(s);
+  CHECK(kane::evaluate(m * kane::q<1> + T, ev) == 6.5);
+  STATIC_REQUIRE(
+      (kane::Parameter<std::remove_cv_t<decltype(m)>> && kane::Input<std::remove_cv_t<decltype(T)>>));
+}

@@ -136,6 +136,8 @@ void print_expr(std::ostream& os, const X& x) {
     os << '1';
   else if constexpr (coordinate_info<X>::value || speed_info<X>::value)
     os << (coordinate_info<X>::value ? 'q' : 'u') << X::index << std::string(X::order, '\'');
+  else if constexpr ((Parameter<X> || Input<X>)&&requires { X::name; })
+    os << X::name;
   else if constexpr (Parameter<X>) {
     if constexpr (std::is_same_v<X, parameter<X::index>>)
       os << 'p' << X::index;

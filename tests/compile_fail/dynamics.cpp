@@ -15,6 +15,8 @@
 // case spring_stiffness_not_scalar: kane: spring<P, Q, k, L> takes scalar expressions k .stiffness. and L
 // case linear_index_not_in_x: kane: u_r is not a speed of this x
 // case motion_wrong_size: kane: x and dx/dt of kane::motion hold nq \+ nu numbers
+// case motion_index_beyond: kane: u_r is not a speed of this x .u_1 .. u_nu.
+// case constrained_index_dependent: kane: u_r is not an independent speed of this x
 #include <array>
 
 #include <kane/kane.hpp>
@@ -123,7 +125,26 @@ double integrate() {
   std::array<double, 4> x{}, dx{};
 #endif
   f(x, dx, 0.0);
-  return dx[0];
+  // x's entries by name: u_3 is none of the two speeds'
+#ifdef KANE_CASE_motion_index_beyond
+  return dx[f.index(kane::u<3>)];
+#else
+  return dx[f.index(kane::u<2>)];
+#endif
+}
+
+double integrate_tied() {
+  kane::state<double, 2, 2, 9> s;
+  using ev_type = kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, rates>;
+  kane::constrained_motion<sys, tied, ev_type> f(s);
+  std::array<double, 3> x{}, dx{};
+  f(x, dx, 0.0);
+  // x = (q1, q2, u1): the dependent u_2 is not in it
+#ifdef KANE_CASE_constrained_index_dependent
+  return dx[f.index(kane::u<2>)];
+#else
+  return dx[f.index(kane::u<1>)];
+#endif
 }
 
 // A body whose mass centre is known by its velocity: momentum and kinetic energy, no potential.

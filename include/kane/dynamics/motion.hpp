@@ -154,11 +154,45 @@ class motion {
   typename state_type::inputs_type& inputs() { return s_.r; }
   // An evaluator updated at the last call's state (before the first call, s's), u' = 0: energies,
   // positions, ... (each call evaluates in a local one, so that the compiler drops what its
-  // equations do not read).
+  // equations do not read). After a step of several stages that state is the last stage's.
   Ev evaluator() const {
     Ev ev;
     ev.update(s_);
     return ev;
+  }
+  // An evaluator updated at x and the time t (the step's end), u' = 0, parameters and inputs as
+  // now. A run-time size other than size gives NaN coordinates: status not_finite.
+  template <class X>
+  Ev evaluator(const X& x, scalar time) const {
+    state_type s = s_;
+    auto& u = [&]() -> auto& {
+      if constexpr (std::is_void_v<typename Ev::speed_set>)
+        return s.qd;
+      else
+        return s.u;
+    }
+    ();
+    if (detail::fits<size>(x)) {
+      for (std::size_t i = 0; i < nq; ++i) s.q[i] = x[i];
+      for (std::size_t i = 0; i < nu; ++i) u[i] = x[nq + i];
+    } else
+      detail::fill_nan(s.q);
+    s.t = time;
+    Ev ev;
+    ev.update(s);
+    return ev;
+  }
+  // The entry of q_I in x and dx/dt.
+  template <std::size_t I>
+  static constexpr std::size_t index(coordinate<I>) {
+    static_assert(I >= 1 && I <= nq, "kane: q_i is not a coordinate of this x (q_1 .. q_nq)");
+    return I - 1;
+  }
+  // The entry of u_R (u_R') in x (dx/dt).
+  template <std::size_t R>
+  static constexpr std::size_t index(speed<R>) {
+    static_assert(R >= 1 && R <= nu, "kane: u_r is not a speed of this x (u_1 .. u_nu)");
+    return nq + R - 1;
   }
 
  private:
@@ -256,6 +290,39 @@ class constrained_motion {
     Ev ev;
     ev.update(s_);
     return ev;
+  }
+  // An evaluator updated at x and the time t (the step's end), the dependent speeds solved, u' = 0.
+  // A run-time size other than size gives NaN coordinates: status not_finite.
+  template <class X>
+  Ev evaluator(const X& x, scalar time) const {
+    state_type s = s_;
+    s.t = time;
+    Ev ev;
+    if (detail::fits<size>(x)) {
+      for (std::size_t i = 0; i < nq; ++i) s.q[i] = x[i];
+      detail::update_at_independent_speeds<NH>(ev, s, x);
+    } else {
+      detail::fill_nan(s.q);
+      ev.update(s);
+    }
+    return ev;
+  }
+  // The entry of q_I in x and dx/dt.
+  template <std::size_t I>
+  static constexpr std::size_t index(coordinate<I>) {
+    static_assert(I >= 1 && I <= nq, "kane: q_i is not a coordinate of this x (q_1 .. q_nq)");
+    return I - 1;
+  }
+  // The entry of the independent speed u_R (u_R') in x (dx/dt).
+  template <std::size_t R>
+  static constexpr std::size_t index(speed<R>) {
+    constexpr std::size_t k = [] {
+      std::size_t i = 0;
+      while (i < p && NH::independents[i] != R) ++i;
+      return i;
+    }();
+    static_assert(k < p, "kane: u_r is not an independent speed of this x (a dependent speed?)");
+    return nq + k;
   }
   // The state of the last call, its dependent speeds solved.
   const state_type& state() const { return s_; }

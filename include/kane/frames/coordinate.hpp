@@ -52,6 +52,31 @@ struct input : detail::scalar_tag {
   static constexpr std::size_t index = I;
 };
 
+namespace detail {
+// A name as a template argument ("m" in kane::named_parameter<1, "m">).
+template <std::size_t N>
+struct fixed_name {
+  char text[N]{};
+  // the characters of s, its terminating zero included
+  constexpr fixed_name(const char (&s)[N]) {
+    for (std::size_t i = 0; i < N; ++i) text[i] = s[i];
+  }
+};
+}  // namespace detail
+
+// p_I named in one line and printed by its name: inline constexpr kane::named_parameter<1, "m"> m;
+template <std::size_t I, detail::fixed_name Name>
+struct named_parameter : parameter<I> {
+  // the name printed
+  static constexpr const char* name = Name.text;
+};
+// r_I named in one line and printed by its name: inline constexpr kane::named_input<1, "T"> T;
+template <std::size_t I, detail::fixed_name Name>
+struct named_input : input<I> {
+  // the name printed
+  static constexpr const char* name = Name.text;
+};
+
 struct time_variable : detail::scalar_tag {};
 
 // Tag objects: q<1> is q_1, u<2> is u_2, t is time.
@@ -91,7 +116,7 @@ template <class T>
 concept Input = requires {
   T::index;
 }
-&&std::is_same_v<T, input<T::index>>;
+&&__is_base_of(input<T::index>, T);
 
 }  // namespace kane
 #pragma GCC diagnostic pop
