@@ -5,3 +5,4 @@
 #include "kane/linearization/jet.hpp"
 #include "kane/linearization/linear_model.hpp"
 #include "kane/linearization/linearize.hpp"
+#include "kane/linearization/tangent.hpp"
