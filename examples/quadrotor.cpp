@@ -13,7 +13,6 @@
 #include "rk4.hpp"
 
 namespace quad {
-using kane::dot;
 using kane::e;
 template <std::size_t I>
 using q = kane::coordinate<I>;
@@ -31,15 +30,13 @@ inline constexpr kane::named_input<4, "T4"> T4;
 struct N : kane::root_frame {};
 struct B : kane::frame<N, kane::euler_parameters<q<1>, q<2>, q<3>, q<4>>> {};
 struct O : kane::origin<N> {};
-struct Bo : kane::point<O, kane::q<5> * e<N, 1> + kane::q<6> * e<N, 2> + kane::q<7> * e<N, 3>> {};
+struct Bo : kane::point<O, kane::position_coordinates<N, 5>> {};  // q5 n1 + q6 n2 + q7 n3
 struct R1 : kane::point<Bo, l * e<B, 1>> {};
 struct R2 : kane::point<Bo, l * e<B, 2>> {};
 struct R3 : kane::point<Bo, -l * e<B, 1>> {};
 struct R4 : kane::point<Bo, -l * e<B, 2>> {};
 
-inline constexpr auto w = kane::angular_velocity<N, B>();
-using speeds = kane::speeds<dot(w, e<B, 1>), dot(w, e<B, 2>), dot(w, e<B, 3>), kane::dt(kane::q<5>),
-                            kane::dt(kane::q<6>), kane::dt(kane::q<7>), kane::unit_norm<B>>;
+using speeds = kane::free_body_speeds<N, B, 5>;  // body rates, then q5', q6', q7'; unit_norm<B>
 using quadrotor =
     kane::system<kane::rigid_body<B, Bo, m, kane::inertia<B, Bo, I, I, Iz>>, kane::gravity<-g * e<N, 3>>,
                  kane::force<R1, T1 * e<B, 3>>, kane::force<R2, T2 * e<B, 3>>, kane::force<R3, T3 * e<B, 3>>,

@@ -31,6 +31,9 @@ double max_diff(const Eigen::MatrixXd& m, const double* x) {  // x row-major
 struct B321 : kane::frame<N, kane::body_fixed<3, 2, 1, q<1>, q<2>, q<3>>> {};
 struct Bo3 : kane::point<O, kane::q<4> * e<N, 1> + kane::q<5> * e<N, 2> + kane::q<6> * e<N, 3>> {};
 struct P3 : kane::point<Bo3, a * e<B321, 1> + b * e<B321, 2> + c * e<B321, 3>> {};
+// The free-body helpers spell the recipe of examples/models/free_body.hpp.
+static_assert(std::is_same_v<kane::free_body_speeds<N, B, 5>, models::free_body::speeds>);
+static_assert(std::is_same_v<decltype(kane::position_coordinates<N, 5>), decltype(Bo::position)>);
 using speeds321 = kane::angular_velocity_speeds<N, B321, B321, kane::dt(kane::q<4>), kane::dt(kane::q<5>),
                                                 kane::dt(kane::q<6>)>;
 using state321 = kane::state<double, 6, 6, 3>;

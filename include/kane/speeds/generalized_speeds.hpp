@@ -4,6 +4,7 @@
 //   kane::speeds<dot(w, e<L, 1>), ...>         any n expressions linear in q'
 //   kane::angular_velocity_speeds<N, R, L>     u_i = ^N w^R . l_i
 //   kane::speeds<dt(q<1>), kane::free_speed>   u_1 = q_1', u_2 free (a spin rate)
+//   kane::free_body_speeds<N, B, 5>            body rates of B, then q_5', q_6', q_7', unit_norm<B>
 //
 // Y_rs = du_r/dq_s' and Z_r = u_r at q' = 0 are built at compile time; the evaluator solves the kinematic
 // differential equations at each state: q' = W u + X, W = Y^-1, X = -Y^-1 Z, and q'' = W (u' - Y' q' - Z').
@@ -138,6 +139,18 @@ template <class A, class B, class F, auto... Extra>
 using angular_velocity_speeds =
     speeds<dot(angular_velocity<A, B>(), e<F, 1>), dot(angular_velocity<A, B>(), e<F, 2>),
            dot(angular_velocity<A, B>(), e<F, 3>), Extra...>;
+
+// A free body B on Euler parameters, its mass centre at q_P n1 + q_P+1 n2 + q_P+2 n3 of N: the body
+// rates u_1..u_3 = ^N w^B . b_i, then u_4..u_6 = q_P', q_P+1', q_P+2', and unit_norm<B>.
+template <class N, class B, std::size_t P>
+using free_body_speeds =
+    speeds<dot(angular_velocity<N, B>(), e<B, 1>), dot(angular_velocity<N, B>(), e<B, 2>),
+           dot(angular_velocity<N, B>(), e<B, 3>), dt(coordinate<P>{}), dt(coordinate<P + 1>{}),
+           dt(coordinate<P + 2>{}), unit_norm<B>>;
+// q_P n1 + q_P+1 n2 + q_P+2 n3: a position by three coordinates along N's axes.
+template <class N, std::size_t P>
+inline constexpr auto position_coordinates =
+    coordinate<P>{} * e<N, 1> + coordinate<P + 1>{} * e<N, 2> + coordinate<P + 2>{} * e<N, 3>;
 
 // W_SR = dq_S'/du_R and X_S = q_S' at u = 0 of the speed set Sp: numbers the evaluator solves for.
 template <std::size_t S, std::size_t R, class Sp>
