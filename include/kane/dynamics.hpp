@@ -3,6 +3,7 @@
 #pragma once
 
 #include "kane/dynamics/bodies.hpp"
+#include "kane/dynamics/constrained_motion.hpp"
 #include "kane/dynamics/equations.hpp"
 #include "kane/dynamics/generalized_forces.hpp"
 #include "kane/dynamics/inverse_dynamics.hpp"

@@ -6,4 +6,5 @@
 #include "kane/speeds/constraints.hpp"
 #include "kane/speeds/generalized_speeds.hpp"
 #include "kane/speeds/holonomic.hpp"
+#include "kane/speeds/kinematic_weights.hpp"
 #include "kane/speeds/partial_velocity.hpp"

@@ -22,7 +22,7 @@
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/edges.hpp"
 #include "kane/kinematics/point.hpp"
-#include "kane/speeds/generalized_speeds.hpp"
+#include "kane/speeds/kinematic_weights.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

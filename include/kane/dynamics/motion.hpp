@@ -5,8 +5,6 @@
 //   kane::motion<System, Evaluator> rhs(s);   // parameters (and all else) from the state s
 //   rhs(x, dxdt, t);                           // Boost.Odeint's signature; x: nq + nu numbers
 //   rhs.inputs() = r;                          // inputs r (kane::r<i> in loads) of the calls from now on
-//   kane::constrained_motion<System, NH, Evaluator>  // nonholonomic: x = (q, u_ind)
-//   rhs.project<H>(x);                         // closes holonomic constraints H between steps
 //
 // Without a speed set the evaluator's speeds are u = q' (x = (q, q'), dx/dt = (q', q'')).
 // x and dxdt are any containers with operator[] and nq + nu entries (motion::size): std::array,
@@ -26,7 +24,6 @@
 #include "kane/dynamics/inverse_dynamics.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
 #include "kane/dynamics/system_rules.hpp"
-#include "kane/evaluation/configuration.hpp"
 #include "kane/evaluation/reads.hpp"
 
 #pragma GCC diagnostic push
@@ -232,137 +229,6 @@ class motion {
     static constexpr auto qdd = reads.qdd;
     static constexpr bool rest = true;  // u' = 0
   };
-  state_type s_;
-  solve_status status_ = solve_status::ok;
-};
-
-namespace detail {
-// s at the independent speeds x[nq + k]: u_dep = A u_ind + B from the constraints NH at s's q and t,
-// and ev updated to s (pose, then speeds); the constraints' solution.
-template <class NH, class Reads = void, class Ev, class St, class X>
-auto update_at_independent_speeds(Ev& ev, St& s, const X& x) {
-  constexpr std::size_t nq = St::nq;
-  for (std::size_t k = 0; k < NH::p; ++k) s.u[NH::independents[k] - 1] = x[nq + k];
-  ev.update_pose(s);  // A and B depend on q and t alone
-  const auto sol = solve_constraints<NH>(ev);
-  for (std::size_t j = 0; j < NH::m; ++j) {
-    typename St::scalar u = sol.B(Eigen::Index(j));
-    for (std::size_t k = 0; k < NH::p; ++k) u += sol.A(Eigen::Index(j), Eigen::Index(k)) * x[nq + k];
-    s.u[NH::dependents[j] - 1] = u;
-  }
-  if constexpr (std::is_void_v<Reads>)
-    ev.update_speeds(s);
-  else
-    ev.template update_speeds_for<Reads>(s);
-  return sol;
-}
-}  // namespace detail
-
-// A nonholonomic system (constraints NH): x = (q, u_ind), p independent speeds;
-// at each call u_dep = A u_ind + B, then u_ind' from Kane's reduced equations.
-template <class Sys, class NH, class Ev>
-class constrained_motion {
- public:
-  // the evaluator's state type
-  using state_type = typename Ev::state_type;
-  // the evaluator's scalar type
-  using scalar = typename Ev::scalar;
-  // nq, p: the numbers of coordinates and independent speeds; size = nq + p, the entries of x
-  static constexpr std::size_t nq = state_type::nq, p = NH::p, size = nq + p;
-
-  // parameters and inputs from s (each call's x gives q and u_ind); u' set to 0
-  explicit constrained_motion(const state_type& s) : s_(s) { s_.ud = {}; }
-
-  // Numbers: one function body (the passes, the tables and Eigen's fixed-size loops inlined).
-  // A container of a size known at compile time is checked then; others must hold size entries.
-  template <class X, class DX>
-  requires(detail::sizes_checked<size, X, DX>()) void operator()(const X& x, DX& dxdt, scalar time) {
-    detail::flat<scalar>([&] { step(x, dxdt, time); });
-  }
-
-  // the status of the last call: ok, or why dxdt is NaN
-  solve_status status() const { return status_; }
-  // the inputs r of the calls from now on, kept between calls
-  typename state_type::inputs_type& inputs() { return s_.r; }
-  // An evaluator updated at the last call's state (before the first call, s's), u' = 0 (each call
-  // evaluates in a local one).
-  Ev evaluator() const {
-    Ev ev;
-    ev.update(s_);
-    return ev;
-  }
-  // An evaluator updated at x and the time t (the step's end), the dependent speeds solved, u' = 0.
-  // A run-time size other than size gives NaN coordinates: status not_finite.
-  template <class X>
-  Ev evaluator(const X& x, scalar time) const {
-    state_type s = s_;
-    s.t = time;
-    Ev ev;
-    if (detail::fits<size>(x)) {
-      for (std::size_t i = 0; i < nq; ++i) s.q[i] = x[i];
-      detail::update_at_independent_speeds<NH>(ev, s, x);
-    } else {
-      detail::fill_nan(s.q);
-      ev.update(s);
-    }
-    return ev;
-  }
-  // The entry of q_I in x and dx/dt.
-  template <std::size_t I>
-  static constexpr std::size_t index(coordinate<I>) {
-    static_assert(I >= 1 && I <= nq, "kane: q_i is not a coordinate of this x (q_1 .. q_nq)");
-    return I - 1;
-  }
-  // The entry of the independent speed u_R (u_R') in x (dx/dt).
-  template <std::size_t R>
-  static constexpr std::size_t index(speed<R>) {
-    constexpr std::size_t k = [] {
-      std::size_t i = 0;
-      while (i < p && NH::independents[i] != R) ++i;
-      return i;
-    }();
-    static_assert(k < p, "kane: u_r is not an independent speed of this x (a dependent speed?)");
-    return nq + k;
-  }
-  // The state of the last call, its dependent speeds solved.
-  const state_type& state() const { return s_; }
-  // x's dependent coordinates of the holonomic constraints H closed again by Newton's method from x
-  // (solve_configuration), to call between steps: an integrator keeps only their rates. x's other
-  // entries are kept, and so are all of them unless the status is ok; a run-time size other than
-  // size gives wrong_size.
-  template <Holonomic H, class X>
-  requires(detail::sizes_checked<size, X, X>())
-      newton_result<scalar> project(X& x, newton_options<scalar> options = {}) {
-    if (!detail::fits<size>(x))
-      return {solve_status::wrong_size, 0, std::numeric_limits<scalar>::quiet_NaN()};
-    state_type s = s_;
-    for (std::size_t i = 0; i < nq; ++i) s.q[i] = x[i];
-    Ev ev;
-    const auto closed = solve_configuration<H>(ev, s, options);
-    if (closed.status == solve_status::ok)
-      for (std::size_t i : H::dependents) x[i - 1] = s.q[i - 1];
-    return closed;
-  }
-
- private:
-  template <class X, class DX>
-  void step(const X& x, DX& dxdt, scalar time) {
-    if (!detail::size_fits<size, scalar>(x, dxdt)) {
-      status_ = solve_status::wrong_size;
-      return;
-    }
-    for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
-    s_.t = time;
-    Ev ev;
-    const auto sol = detail::update_at_independent_speeds<NH, detail::every_read<Ev>>(
-        ev, s_, x);  // the constraints' derivatives read every alpha and q''
-    const auto [ud, status] = detail::speed_derivatives_at(
-        detail::reduced_mass_matrix_and_forcing_at<Sys, NH, true>(ev, sol).reduced);
-    status_ = status;
-    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status == solve_status::ok);
-    for (std::size_t k = 0; k < p; ++k) dxdt[nq + k] = ud(Eigen::Index(k));
-  }
-
   state_type s_;
   solve_status status_ = solve_status::ok;
 };

@@ -230,18 +230,9 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
       static_for_inline<n>([&](auto d) KANE_ALWAYS_INLINE_LAMBDA {
         if constexpr (Sys::form.block[d] != b && Sys::m[row][d] != entry::zero &&
                       Sys::x[d][j] != entry::zero) {
-          // x_dj as solved: an exact one of X is read from the pattern (WriteConstants false keeps it
-          // unwritten)
-          const auto xd = [&] {
-            if constexpr (Sys::x[d][j] == entry::one)
-              return S(1);
-            else
-              return x[d][j];
-          }();
-          if constexpr (Sys::m[row][d] == entry::one)
-            t -= xd;
-          else
-            t -= m[row][d] * xd;
+          // x_dj: an exact one from the pattern (WriteConstants false leaves it unwritten)
+          const S xd = Sys::x[d][j] == entry::one ? S(1) : x[d][j];
+          t -= Sys::m[row][d] == entry::one ? xd : S(m[row][d] * xd);
         }
       });
       return t;

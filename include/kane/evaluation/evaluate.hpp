@@ -15,7 +15,7 @@
 #include "kane/expressions/vector.hpp"
 #include "kane/frames/vec.hpp"
 #include "kane/kinematics/derivative.hpp"
-#include "kane/speeds/generalized_speeds.hpp"
+#include "kane/speeds/kinematic_weights.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

@@ -206,23 +206,6 @@ class evaluator<St, frames<Fs...>, Level, Given>
       residue += solves ? detail::nonfinite_residue(s.ud) : detail::nonfinite_residue(st_.qdd);
     return residue;
   }
-  // Without a speed set u is q' (nu = nq): out = d, or u where d is 0; true where both hold
-  // different nonzero numbers.
-  static bool merged_rates(std::array<scalar, St::nq>& out, const std::array<scalar, St::nq>& d,
-                           const std::array<scalar, St::nu>& u) {
-    if constexpr (St::nu != St::nq) {
-      out = d;
-      return false;
-    } else {
-      bool conflict = false;
-      for (std::size_t i = 0; i < St::nq; ++i) {
-        const bool given = !(d[i] == scalar(0)), other = !(u[i] == scalar(0));
-        out[i] = given || !other ? d[i] : u[i];  // d where u is 0 (-0 keeps its sign)
-        conflict = conflict | (given & other & !(u[i] == d[i]));
-      }
-      return conflict;
-    }
-  }
 
   // Reads::rest: u' = 0, not read from the state (motion.hpp)
   template <class Reads>
@@ -241,11 +224,11 @@ class evaluator<St, frames<Fs...>, Level, Given>
     const bool rotations = detail::attitudes(st_, closure{});       // NaN in st_ where not
     bool conflict = false;  // without a speed set: q' and u (q'' and u') that disagree
     if constexpr (!solves) {
-      conflict = merged_rates(st_.qd, s.qd, s.u) && velocity;
+      conflict = detail::merged_rates(st_.qd, s.qd, s.u) && velocity;
       if constexpr (rests<Reads>)
         st_.qdd = {};
       else
-        conflict = (merged_rates(st_.qdd, s.qdd, s.ud) && acceleration) || conflict;
+        conflict = (detail::merged_rates(st_.qdd, s.qdd, s.ud) && acceleration) || conflict;
     } else if constexpr (Rates && rests<Reads>)
       st_.u = s.u, st_.ud = {};
     else if constexpr (Rates)

@@ -1,7 +1,7 @@
 // The kinematic differential equations (seed eq. 17) at a state: with
 // u = Y q' + Z, q' = W u + X with W = Y^-1 and X = -W Z (both depend on q
 // alone), and q'' = W (u' - Y' q' - Z'). Y's zero pattern is known at compile
-// time (speeds/generalized_speeds.hpp): W is found block by block
+// time (speeds/kinematic_weights.hpp): W is found block by block
 // (evaluation/block_solve.hpp) and only its numbers are stored.
 #pragma once
 
@@ -18,11 +18,29 @@
 #include "kane/evaluation/orthogonal_solve.hpp"
 #include "kane/evaluation/status.hpp"
 #include "kane/frames/state.hpp"
-#include "kane/speeds/generalized_speeds.hpp"
+#include "kane/speeds/kinematic_weights.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
+
+// Without a speed set u is q' (NU = NQ): out = d, or u where d is 0; true where both hold
+// different nonzero numbers.
+template <class S, std::size_t NQ, std::size_t NU>
+bool merged_rates(std::array<S, NQ>& out, const std::array<S, NQ>& d, const std::array<S, NU>& u) {
+  if constexpr (NU != NQ) {
+    out = d;
+    return false;
+  } else {
+    bool conflict = false;
+    for (std::size_t i = 0; i < NQ; ++i) {
+      const bool given = !(d[i] == S(0)), other = !(u[i] == S(0));
+      out[i] = given || !other ? d[i] : u[i];  // d where u is 0 (-0 keeps its sign)
+      conflict = conflict | (given & other & !(u[i] == d[i]));
+    }
+    return conflict;
+  }
+}
 
 // Speeds: void to read q' and q'' from the state; a speed set to solve them from u and u'.
 template <class St, class Speeds>

@@ -26,7 +26,7 @@
 #include "kane/evaluation/status.hpp"
 #include "kane/frames/frame.hpp"
 #include "kane/frames/orientation.hpp"
-#include "kane/speeds/generalized_speeds.hpp"
+#include "kane/speeds/kinematic_weights.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

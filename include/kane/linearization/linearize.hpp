@@ -24,6 +24,7 @@
 
 #include <Eigen/Core>
 
+#include "kane/dynamics/constrained_motion.hpp"
 #include "kane/dynamics/motion.hpp"
 #include "kane/evaluation/configuration.hpp"
 #include "kane/linearization/held_coordinates.hpp"

@@ -16,7 +16,7 @@
 
 #include "kane/detail/structure.hpp"
 #include "kane/kinematics/derivative.hpp"
-#include "kane/speeds/generalized_speeds.hpp"
+#include "kane/speeds/kinematic_weights.hpp"
 #include "kane/speeds/partial_velocity.hpp"
 
 #pragma GCC diagnostic push

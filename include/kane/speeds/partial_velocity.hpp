@@ -19,7 +19,7 @@
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/edges.hpp"
-#include "kane/speeds/generalized_speeds.hpp"
+#include "kane/speeds/kinematic_weights.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
