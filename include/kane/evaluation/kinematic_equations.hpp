@@ -27,7 +27,8 @@ namespace kane::detail {
 // Without a speed set u is q' (NU = NQ): out = d, or u where d is 0; true where both hold
 // different nonzero numbers.
 template <class S, std::size_t NQ, std::size_t NU>
-bool merged_rates(std::array<S, NQ>& out, const std::array<S, NQ>& d, const std::array<S, NU>& u) {
+KANE_ALWAYS_INLINE bool merged_rates(std::array<S, NQ>& out, const std::array<S, NQ>& d,
+                                     const std::array<S, NU>& u) {
   if constexpr (NU != NQ) {
     out = d;
     return false;
