@@ -1,5 +1,5 @@
 // Expressions: scalars in q, q', u, t and parameters; vectors as sums of
-// scalars times unit vectors of frames, with cross and dot products (seed eq. 2).
+// scalars times unit vectors of frames, with cross and dot products.
 #pragma once
 
 #include "kane/expressions/derived_products.hpp"

@@ -1,4 +1,4 @@
-// Frames, coordinates and components (seed eq. 1-5): frame trees as types,
+// Frames, coordinates and components: frame trees as types,
 // states, components of vectors in a frame and direction cosines between frames.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Kinematics (seed eq. 6-15): derivatives in a frame, angular velocities and
+// Kinematics: derivatives in a frame, angular velocities and
 // accelerations with the addition theorem, points, velocities and accelerations.
 #pragma once
 

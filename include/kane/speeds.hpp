@@ -1,4 +1,4 @@
-// Generalized speeds and constraints (seed eq. 16-22): speed sets and their
+// Generalized speeds and constraints: speed sets and their
 // kinematic differential equations, partial velocities, holonomic and
 // nonholonomic constraints, all as types.
 #pragma once

@@ -58,9 +58,8 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> inverse_at(const Ev& ev) {
 }
 
 // Above this many speeds u' of numbers comes from articulated bodies (aba.hpp), below (and for
-// jets) from M and a Cholesky factorization: on a spatial chain with full inertias
-// (benchmarks/chain_dynamics) the two take the same time at 24 speeds; at 12 M costs 0.7x, at 48
-// articulated bodies 0.6x.
+// jets) from M and a Cholesky factorization: the crossing of the two on a spatial chain with full
+// inertias (benchmarks/chain_dynamics; the performance page gives the figures).
 inline constexpr std::size_t articulated_above = 20;
 // M of Kane's sums is a table of numbers (known_mass_matrix.hpp)
 template <class Sys, class Ev>

@@ -1,4 +1,4 @@
-// Kane's equations of a nonholonomic system (seed eq. 22) for its p independent
+// Kane's equations of a nonholonomic system for its p independent
 // speeds, summed along the nonholonomic partial velocities v~ = v T
 // (equations.hpp's sums with the columns of T): no n x n M is formed. Also the n
 // equations with their constraint rows, and F~, F~* along v~.
@@ -24,7 +24,7 @@
 namespace kane {
 
 namespace detail {
-// The independent speeds of the constraints NH along v~ = v T (seed eq. 22):
+// The independent speeds of the constraints NH along v~ = v T:
 // v~_k = v_ind_k + sum_j v_dep_j A_jk, and v b = sum_j v_dep_j b_j adds to the
 // bias acceleration (u' = T u_ind' + b).
 template <class NH, class S>
@@ -84,7 +84,7 @@ struct independent_speeds {
 };
 }  // namespace detail
 
-// Kane's equations of a nonholonomic system (seed eq. 22) for its p independent
+// Kane's equations of a nonholonomic system for its p independent
 // speeds: with u_dep = A u_ind + B (sol, of the constraints NH at ev's state),
 // u' = T u_ind' + b, T = [1; A] (rows in speed order) and b = u_dep' at u_ind' = 0
 // from the differentiated constraints, C u' + (C' u + c0') = 0; then

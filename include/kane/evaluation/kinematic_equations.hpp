@@ -1,4 +1,4 @@
-// The kinematic differential equations (seed eq. 17) at a state: with
+// The kinematic differential equations at a state: with
 // u = Y q' + Z, q' = W u + X with W = Y^-1 and X = -W Z (both depend on q
 // alone), and q'' = W (u' - Y' q' - Z'). Y's zero pattern is known at compile
 // time (speeds/kinematic_weights.hpp): W is found block by block

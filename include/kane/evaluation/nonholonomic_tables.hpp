@@ -1,4 +1,4 @@
-// Kane's tables of nonholonomic constraints at an evaluator's state (seed eq. 20-22): the
+// Kane's tables of nonholonomic constraints at an evaluator's state: the
 // dependent speeds u_dep = A u_ind + B, the nonholonomic partial velocities v~_s = v_s + sum_r v_r A_rs
 // and the remainder v~_t = v_t + sum_r v_r B_r.
 #pragma once

@@ -1,4 +1,4 @@
-// The outward pass over a frame tree (seed eq. 5, 8-10, 13): for each frame F
+// The outward pass over a frame tree: for each frame F
 // of the closure (ancestors first) and its root R, the columns e_F1, e_F2,
 // e_F3, ^R w^F and ^R alpha^F in R's components. For an edge P -> F that
 // turns about k by q: e_Fi = R(k, q) e_Pi, ^R w^F = ^R w^P + q' k,

@@ -1,4 +1,4 @@
-// Numbers of Kane's tables at an evaluator's state (seed eq. 16-19):
+// Numbers of Kane's tables at an evaluator's state:
 // partial velocities and remainders (v = sum_r v_r u_r + v_t) and residuals of
 // holonomic constraints (nonholonomic_tables.hpp: eq. 20-22). Each column is one
 // expression whose zeros are known at compile time (speeds/).

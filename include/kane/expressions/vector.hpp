@@ -1,5 +1,5 @@
 // Geometric vectors: sums of scalar x unit vector of some frame, cross and dot
-// products (seed eq. 2). A vector is one object whatever frames its terms use;
+// products. A vector is one object whatever frames its terms use;
 // it becomes numbers only through express<A>(v, evaluator).
 //
 // Storage rule as for scalars (expr.hpp): operands by value, leaves empty.

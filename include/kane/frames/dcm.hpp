@@ -1,4 +1,4 @@
-// ^A P^B: direction cosines from A to B (seed eq. 4-5).
+// ^A P^B: direction cosines from A to B.
 //
 //   ^B p = ^A P^B . ^A p,   (^A P^B)_ij = e_Bi . e_Aj.
 //

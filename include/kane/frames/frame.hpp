@@ -1,4 +1,4 @@
-// Reference frames as types (seed eq. 1).
+// Reference frames as types.
 //
 //   struct N : kane::root_frame {};                                      // {N}
 //   struct A : kane::frame<N, kane::simple<kane::axis::z, q1>> {};       // A from N

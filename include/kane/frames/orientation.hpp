@@ -1,6 +1,6 @@
 // Orientations of a child frame C relative to its parent P, as ^P P^C.
 //
-// Convention (seed eq. 5): ^C p = ^P P^C . ^P p, (^P P^C)_ij = e_Ci . e_Pj.
+// Convention: ^C p = ^P P^C . ^P p, (^P P^C)_ij = e_Ci . e_Pj.
 // A simple rotation about the unit axis k (fixed in P and C) by the angle q
 // turns P into C in the right-handed sense: ^P P^C = R(k, q)^T with R the
 // Rodrigues matrix cos q I + sin q [k]x + (1 - cos q) k k^T. The angle may

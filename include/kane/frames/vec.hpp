@@ -1,4 +1,4 @@
-// ^F p: the components of a vector p expressed in frame F (seed eq. 2-3).
+// ^F p: the components of a vector p expressed in frame F.
 #pragma once
 
 #include <cmath>

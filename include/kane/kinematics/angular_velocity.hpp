@@ -1,4 +1,4 @@
-// ^A w^B and ^A alpha^B between any two frames of a tree (seed eq. 8-10, 13-14).
+// ^A w^B and ^A alpha^B between any two frames of a tree.
 //
 // Both are atomic: the evaluator's outward pass gives each frame F its
 // ^R w^F and ^R alpha^F relative to the root R, and

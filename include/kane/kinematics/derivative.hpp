@@ -1,4 +1,4 @@
-// Derivatives, built at compile time (seed eq. 6, 7, 12).
+// Derivatives, built at compile time.
 //
 //   dt(s)            total time derivative of a scalar (eq. 7)
 //   diff(s, x)       partial derivative of a scalar by x = q_i, dt(q_i), u_i, t

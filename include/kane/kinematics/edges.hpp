@@ -1,5 +1,5 @@
 // The edge kinds of a frame tree and what each contributes to angular
-// velocities (seed eq. 8-10): a simple rotation by an angle theta about k
+// velocities: a simple rotation by an angle theta about k
 // (^P w^C = theta' k), Euler parameters, a spin at a free speed (u k), an
 // attitude read from the state (three free speeds along C's or P's axes);
 // and the partial angular velocities d(^A w^B)/dq_r' and d(^A w^B)/du_r.

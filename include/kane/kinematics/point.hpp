@@ -1,4 +1,4 @@
-// Points, their velocities and accelerations (seed eq. 11, 15).
+// Points, their velocities and accelerations.
 //
 //   struct O : kane::origin<N> {};                           // fixed in N
 //   struct P : kane::point<O, L1 * kane::e<A, 1>> {};         // r^OP = L1 a1

@@ -44,7 +44,7 @@ struct jet {
                                chunks = (N + width - 1) / width;
   // A vector type of GCC and Clang: arithmetic works chunk by chunk, so no jet is a constant expression
   // (Clang does not evaluate vector types there). Chunks keep their natural alignment (their size), so
-  // none straddles a cache line (the bicycle's A with 8-byte alignment: 14-16 % slower).
+  // none straddles a cache line (8-byte alignment made the bicycle's A slower).
   typedef S chunk __attribute__((vector_size(sizeof(S) * width)));
   // the value v
   S v;

@@ -1,4 +1,4 @@
-// Holonomic constraints (seed eq. 16) and nonholonomic constraints (eq. 20-22).
+// Holonomic constraints and nonholonomic constraints (eq. 20-22).
 //
 //   kane::configuration<Particles, RigidBodies, f1, ..., fM>
 //       f_k(q, t) = 0; n = 3 Particles + 6 RigidBodies - M at compile time.
@@ -23,7 +23,7 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
-// The configuration constraints f(q, t) = 0 of particles and rigid bodies (seed eq. 16).
+// The configuration constraints f(q, t) = 0 of particles and rigid bodies.
 template <std::size_t Particles, std::size_t RigidBodies, auto... F>
 struct configuration {
   static_assert((ScalarExpr<decltype(F)> && ...),

@@ -1,4 +1,4 @@
-// Generalized speeds u_r = sum_s Y_rs(q, t) q_s' + Z_r(q, t) (seed eq. 17).
+// Generalized speeds u_r = sum_s Y_rs(q, t) q_s' + Z_r(q, t).
 //
 //   kane::qdot_speeds<6>                       u_r = q_r'
 //   kane::speeds<dot(w, e<L, 1>), ...>         any n expressions linear in q'

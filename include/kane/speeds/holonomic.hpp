@@ -1,4 +1,4 @@
-// Holonomic constraints f_k(q, t) = 0 with named dependent coordinates (seed eq. 16):
+// Holonomic constraints f_k(q, t) = 0 with named dependent coordinates:
 //
 //   using loop = kane::holonomic<kane::dependent_coordinates<2, 3>, f1, f2>;
 //

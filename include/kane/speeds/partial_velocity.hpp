@@ -1,4 +1,4 @@
-// Partial velocities and partial angular velocities (seed eq. 18-19).
+// Partial velocities and partial angular velocities.
 //
 // A velocity v (or angular velocity w) is linear in the speeds:
 //   v = sum_r v_r u_r + v_t,   v_r = dv/du_r.
