@@ -17,6 +17,8 @@
 // case motion_wrong_size: kane: x and dx/dt of kane::motion hold nq \+ nu numbers
 // case motion_index_beyond: kane: u_r is not a speed of this x .u_1 .. u_nu.
 // case constrained_index_dependent: kane: u_r is not an independent speed of this x
+// case cut_names_no_mass: kane: cut<P, Items...> names no body .by its frame. or particle .by its point. of the system
+// case cut_of_a_vector: kane: cut<P, Items...> takes the frames of the part's bodies and the points of its particles
 #include <array>
 
 #include <kane/kane.hpp>
@@ -112,6 +114,21 @@ double use_tied() {
   ev.update(s);
   return kane::reduced_mass_matrix_and_forcing<sys, tied>(ev, kane::solve_constraints<tied>(ev))
       .reduced.M(0, 0);
+}
+
+// The pin's reaction on the body fixed in B: a cut names bodies by their frames, particles by their points.
+double pin() {
+  kane::state<double, 2, 2, 9> s;
+  kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, kane::qdot_speeds<2>> ev;
+  ev.update(s);
+#if defined(KANE_CASE_cut_names_no_mass)
+  using part = kane::cut<J, A>;  // no body is fixed in A
+#elif defined(KANE_CASE_cut_of_a_vector)
+  using part = kane::cut<J, decltype(e<B, 1>)>;
+#else
+  using part = kane::cut<J, B>;
+#endif
+  return kane::reaction<sys, part>(ev).force[0];
 }
 
 double integrate() {
