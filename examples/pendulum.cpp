@@ -17,13 +17,12 @@ struct g : kane::parameter<3> {};  // gravity
 struct O : kane::origin<N> {};
 struct P : kane::point<O, -L{} * kane::e<A, 2>> {};
 using pendulum = kane::system<kane::particle<P, m{}>, kane::gravity<-g{} * kane::e<N, 2>>>;
-using state = kane::state<double, 1, 1, 3>;  // q1, u1 = q1', three parameters
-using evaluator = kane::evaluator<state, kane::frames<A>, kane::level::acceleration>;
+using state = kane::state_of<pendulum>;  // q1, u1 = q1', three parameters
 
 int main() {
   state s;
   s[L{}] = 0.8, s[m{}] = 1.5, s[g{}] = 9.81;
-  kane::motion<pendulum, evaluator> f(s);
+  kane::motion<pendulum> f(s);
   std::array<double, 2> x = {1.0, 0.0}, dx;  // q1 = 1 rad, at rest
   f(x, dx, 0.0);
   std::printf("u1' = %.6f (closed form -g/L sin q1 = %.6f)\n", dx[1], -9.81 / 0.8 * std::sin(1.0));

@@ -11,7 +11,7 @@
 #include "rk4.hpp"
 
 namespace m = models::pendulum3d;
-using rhs = kane::motion<m::system, m::evaluator>;
+using rhs = kane::motion<m::system, kane::qdot_speeds<2>>;  // the system's own evaluator, u = q'
 using vector = std::array<double, rhs::size>;
 
 // T + V: V of gravity (zero at the pivot's height), and the spring's k q2^2 / 2

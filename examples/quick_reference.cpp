@@ -29,8 +29,8 @@ using links =
     kane::system<kane::rigid_body<A, Ao, m, kane::inertia<A, Ao, 0, rod, rod>>,
                  kane::rigid_body<B, Bo, m, kane::inertia<B, Bo, 0, rod, rod>>, kane::gravity<g * e<N, 1>>,
                  kane::torque<B, T * e<N, 3>>, kane::torque<A, -T * e<N, 3>>>;
-using state = kane::state<double, 2, 2, 3, 1>;  // nq, nu, np, nr
-using evaluator = kane::evaluator<state, kane::frames<B>, kane::level::acceleration, kane::qdot_speeds<2>>;
+using state = kane::state_of<links>;              // kane::state<double, 2, 2, 3, 1>: nq, nu, np, nr
+using evaluator = kane::system_evaluator<links>;  // the frames the items read, level::acceleration
 }  // namespace dp
 
 int main() {
@@ -80,7 +80,7 @@ int main() {
   expect(std::isfinite(energy), "energy");
 
   // x' = f(x, t) for an integrator: x = (q, u), entries by name.
-  kane::motion<links, evaluator> rhs(s);
+  kane::motion<links> rhs(s);
   std::array<double, 4> x{s.q[0], s.q[1], s.u[0], s.u[1]}, dx{};
   rhs.inputs() = {0.2};
   rhs(x, dx, 0.0);

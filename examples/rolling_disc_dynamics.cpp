@@ -11,9 +11,8 @@
 #include "rk4.hpp"
 
 namespace d = models::disc;
-using state = kane::state<double, 5, 5, 3>;
-using evaluator = kane::evaluator<state, kane::frames<d::R>, kane::level::acceleration, d::speeds5>;
-using rhs = kane::constrained_motion<d::system, d::rolling, evaluator>;
+using state = kane::state_of<d::system, d::speeds5>;  // q1..q5, u1..u5, r, m, g
+using rhs = kane::constrained_motion<d::system, d::rolling>;
 using vector = std::array<double, rhs::size>;
 
 int main(int argc, char** argv) {

@@ -13,4 +13,5 @@
 #include "kane/dynamics/reaction.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
 #include "kane/dynamics/springs.hpp"
+#include "kane/dynamics/system_evaluator.hpp"
 #include "kane/dynamics/terms.hpp"

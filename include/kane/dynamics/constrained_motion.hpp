@@ -2,7 +2,8 @@
 // x = (q, u_ind), dx/dt = (q', u_ind') with u_dep = A u_ind + B at every call and u_ind' from Kane's
 // reduced equations.
 //
-//   kane::constrained_motion<System, NH, Evaluator> rhs(s);
+//   kane::constrained_motion<System, NH> rhs(s);  // s: kane::state_of<System, NH::speed_set>
+//   kane::constrained_motion<System, NH, Evaluator> rhs2(s2);  // an evaluator of one's own
 //   rhs(x, dxdt, t);                           // x: nq + p numbers
 //   rhs.project<H>(x);                         // closes holonomic constraints H between steps
 #pragma once
@@ -39,11 +40,20 @@ auto update_at_independent_speeds(Ev& ev, St& s, const X& x) {
     ev.template update_speeds_for<Reads>(s);
   return sol;
 }
+
+template <class... C>
+list<C...> listed(const std::tuple<C...>&);
+// the constraints' expressions
+template <class NH>
+using constraint_terms = decltype(listed(NH::equations));
 }  // namespace detail
 
 // A nonholonomic system (constraints NH): x = (q, u_ind), p independent speeds;
-// at each call u_dep = A u_ind + B, then u_ind' from Kane's reduced equations.
-template <class Sys, class NH, class Ev>
+// at each call u_dep = A u_ind + B, then u_ind' from Kane's reduced equations. Ev: the system's
+// own evaluator with NH's speed set and the frames of its constraints, or one's own.
+template <class Sys, class NH,
+          class Ev = detail::evaluator_or_own_t<Sys, typename NH::speed_set, level::acceleration,
+                                                detail::constraint_terms<NH>>>
 class constrained_motion {
  public:
   // the evaluator's state type

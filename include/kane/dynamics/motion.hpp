@@ -2,11 +2,14 @@
 // dx/dt = (q', u') with q' = W u + X (the kinematic equations of the speeds,
 // nq != nu where orientations need it) and u' = M^-1 f.
 //
-//   kane::motion<System, Evaluator> rhs(s);   // parameters (and all else) from the state s
-//   rhs(x, dxdt, t);                           // Boost.Odeint's signature; x: nq + nu numbers
-//   rhs.inputs() = r;                          // inputs r (kane::r<i> in loads) of the calls from now on
+//   kane::motion<System> rhs(s);              // s: a kane::state_of<System>, its parameters
+//   kane::motion<System, Speeds> rhs2(s2);    // with a speed set: kane::state_of<System, Speeds>
+//   kane::motion<System, Evaluator> rhs3(s3); // an evaluator of one's own (float, more frames)
+//   rhs(x, dxdt, t);                          // Boost.Odeint's signature; x: nq + nu numbers
+//   rhs.inputs() = r;                         // inputs r (kane::r<i> in loads) of the calls from now on
 //
-// Without a speed set the evaluator's speeds are u = q' (x = (q, q'), dx/dt = (q', q'')).
+// The system's own evaluator (kane::system_evaluator) holds the frames its items read.
+// Without a speed set the speeds are u = q' (x = (q, q'), dx/dt = (q', q'')).
 // x and dxdt are any containers with operator[] and nq + nu entries (motion::size): std::array,
 // Eigen vectors or maps, plain arrays; no allocation. A size known at compile time is checked
 // then, one known at run time (size()) at each call: wrong_size, nothing read, dxdt NaN. status()
@@ -23,6 +26,7 @@
 
 #include "kane/dynamics/inverse_dynamics.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
+#include "kane/dynamics/system_evaluator.hpp"
 #include "kane/dynamics/system_rules.hpp"
 #include "kane/evaluation/reads.hpp"
 
@@ -121,9 +125,12 @@ KANE_ALWAYS_INLINE void write_rates(DX& dxdt, const Q& qd, bool ok) {
 }
 }  // namespace detail
 
-// x' = (q', u') of the system Sys for any integrator: f(x, dxdt, t).
-template <class Sys, class Ev>
+// x' = (q', u') of the system Sys for any integrator: f(x, dxdt, t). EvOrSpeeds: the evaluator, or
+// the speed set (none: u = q') of the system's own evaluator.
+template <class Sys, class EvOrSpeeds = void>
 class motion {
+  using Ev = detail::evaluator_or_own_t<Sys, EvOrSpeeds>;
+
  public:
   // the evaluator's state type
   using state_type = typename Ev::state_type;
@@ -136,6 +143,13 @@ class motion {
   explicit motion(const state_type& s) : s_(s) {
     s_.ud = {}, s_.qdd = {};
     if constexpr (std::is_void_v<typename Ev::speed_set>) s_.u = {};  // x's speeds go to q'
+  }
+  // A state of another type: refused with the type to use.
+  template <class St>
+  requires(!std::is_same_v<St, state_type>) explicit motion(const St&) {
+    static_assert(std::is_same_v<St, state_type>,
+                  "kane: motion takes the state of its evaluator; for kane::motion<System> declare it "
+                  "kane::state_of<System> (with a speed set kane::state_of<System, Speeds>)");
   }
 
   // Numbers: one function body (the passes, the tables and Eigen's fixed-size loops inlined).

@@ -1,0 +1,248 @@
+// The state and the evaluator a system implies: its coordinates, speeds, parameters and inputs
+// counted from the types of its items, and the frames its bodies, points and loads read.
+//
+//   using state = kane::state_of<System>;                   // state<double, nq, nu, np, nr>
+//   using state2 = kane::state_of<System, Speeds, float>;   // with a speed set, in float
+//   kane::system_evaluator<System, Speeds> ev;              // level::acceleration
+//   ev.update(s);
+//
+// With a speed set nq is the number of its kinematic equations and nu its number of speeds;
+// without one nq is the highest q_i read, and u = q'. np and nr are the highest p_i and r_i read.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <tuple>
+#include <type_traits>
+
+#include "kane/detail/list.hpp"
+#include "kane/detail/tree.hpp"
+#include "kane/dynamics/system_rules.hpp"
+#include "kane/dynamics/terms.hpp"
+#include "kane/evaluation/evaluator.hpp"
+#include "kane/evaluation/evaluator_for.hpp"
+#include "kane/frames/state.hpp"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
+namespace kane {
+
+namespace detail {
+// The highest q_i, u_i, p_i and r_i an expression reads (0: none).
+struct highest {
+  std::size_t q = 0, u = 0, p = 0, r = 0;
+  constexpr void take(const highest& o) {
+    q = std::max(q, o.q), u = std::max(u, o.u), p = std::max(p, o.p), r = std::max(r, o.r);
+  }
+};
+template <class X>
+constexpr highest highest_in() {
+  using C = const X&;
+  highest h;
+  if constexpr (coordinate_info<X>::value)
+    h.q = X::index;
+  else if constexpr (speed_info<X>::value)
+    h.u = X::index;
+  else if constexpr (Parameter<X>)
+    h.p = X::index;
+  else if constexpr (Input<X>)
+    h.r = X::index;
+  else if constexpr (is_v<X, angular_velocity_of> || is_v<X, angular_acceleration_of>)
+    h = highest_in<decltype(expand(std::declval<C>()))>();
+  else if constexpr (requires(C x) {
+                       x.l;
+                       x.r;
+                     }) {
+    h = highest_in<std::remove_cvref_t<decltype(std::declval<C>().l)>>();
+    h.take(highest_in<std::remove_cvref_t<decltype(std::declval<C>().r)>>());
+  } else if constexpr (requires(C x) {
+                         x.s;
+                         x.v;
+                       }) {
+    h = highest_in<std::remove_cvref_t<decltype(std::declval<C>().s)>>();
+    h.take(highest_in<std::remove_cvref_t<decltype(std::declval<C>().v)>>());
+  } else if constexpr (requires(C x) { x.v; })
+    h = highest_in<std::remove_cvref_t<decltype(std::declval<C>().v)>>();
+  else if constexpr (requires(C x) { x.x; })
+    h = highest_in<std::remove_cvref_t<decltype(std::declval<C>().x)>>();
+  return h;
+}
+template <class T>
+constexpr highest highest_in_tuple() {
+  highest h;
+  [&]<std::size_t... K>(std::index_sequence<K...>) {
+    (h.take(highest_in<std::remove_cvref_t<std::tuple_element_t<K, T>>>()), ...);
+  }
+  (std::make_index_sequence<std::tuple_size_v<T>>{});
+  return h;
+}
+// What the edge above F reads: an angle, four Euler parameters, a spin's speed, an attitude's
+// parameters and speeds.
+template <class F>
+constexpr highest highest_of_edge() {
+  highest h;
+  if constexpr (std::is_void_v<typename F::tree_parent>)
+    return h;
+  else if constexpr (spin_edge<F>)
+    h.u = F::step::speed_index;
+  else if constexpr (attitude_edge<F>) {
+    h.p = F::step::source::first + F::step::source::count - 1;
+    for (std::size_t r : F::step::rate_speeds) h.u = std::max(h.u, r);
+  } else if constexpr (euler_edge<F>) {
+    for (std::size_t i : F::step::coordinates) h.q = std::max(h.q, i);
+  } else if constexpr (requires { F::step::angle; })
+    h = highest_in<std::remove_cvref_t<decltype(F::step::angle)>>();
+  return h;
+}
+template <class... F>
+constexpr highest highest_of_edges(list<F...>) {
+  highest h;
+  (h.take(highest_of_edge<F>()), ...);
+  return h;
+}
+// What an item reads beyond its terms (terms.hpp): the inertia's components.
+template <class X>
+constexpr highest highest_of_item() {
+  if constexpr (is_body<X>)
+    return highest_in_tuple<std::remove_cvref_t<decltype(X::inertia_type::components)>>();
+  else
+    return {};
+}
+template <class... X>
+constexpr highest highest_of_items(list<X...>) {
+  highest h;
+  (h.take(highest_of_item<X>()), ...);
+  return h;
+}
+template <class... X>
+constexpr highest highest_of_terms(list<X...>) {
+  highest h;
+  (h.take(highest_in<std::remove_cvref_t<X>>()), ...);
+  return h;
+}
+
+// A frame of the tree an item lives in (void: none): a body's or torque's frame, the frame of
+// the origin (or of the velocity) of a point's chain, a frame of gravity's vector.
+template <class P>
+constexpr auto chain_frame() {
+  using O = typename at<typename point_chain<P>::type, size<typename point_chain<P>::type>::value - 1>::type;
+  if constexpr (requires { typename O::velocity_frame; })
+    return std::type_identity<typename O::velocity_frame>{};
+  else
+    return std::type_identity<typename O::fixed_frame>{};
+}
+template <class X>
+constexpr auto tree_frame_of() {
+  if constexpr (is_body<X> || is_torque<X>)
+    return std::type_identity<typename X::frame>{};
+  else if constexpr (is_particle<X> || is_force<X>)
+    return chain_frame<typename X::point>();
+  else if constexpr (requires { X::vector; }) {
+    using L = decltype(frames_read<std::remove_cvref_t<decltype(X::vector)>>());
+    if constexpr (size<L>::value > 0)
+      return std::type_identity<typename at<L, 0>::type>{};
+    else
+      return std::type_identity<void>{};
+  } else
+    return std::type_identity<void>{};
+}
+template <class... X>
+constexpr auto system_root(list<X...>) {
+  using G =
+      typename concat<std::conditional_t<std::is_void_v<typename decltype(tree_frame_of<X>())::type>, list<>,
+                                         list<typename decltype(tree_frame_of<X>())::type>>...>::type;
+  static_assert(size<G>::value > 0, "kane: a system without a body, a point or a load has no frame tree");
+  return std::type_identity<root_of<typename at<G, 0>::type>>{};
+}
+
+// Each type once, in the order first met: a flat fold, however long the list.
+template <class... A, class T>
+constexpr auto operator|(list<A...>, std::type_identity<T>) {
+  if constexpr ((std::is_same_v<A, T> || ...))
+    return list<A...>{};
+  else
+    return list<A..., T>{};
+}
+template <class... T>
+constexpr auto each_once(list<T...>) {
+  return (list<>{} | ... | std::type_identity<T>{});
+}
+
+// The frames the items of a system read (the bodies' and torques' frames, the inertias' frames,
+// the frames of the terms of Kane's sums), ancestors first, no root.
+template <class Sys, class Sp, class More = list<>>
+struct system_frames {
+  using root = typename decltype(system_root(typename Sys::items{}))::type;
+  template <class... X>
+  static auto turning(list<X...>) -> typename concat<typename turning_frames<X>::type...>::type;
+  template <class... T>
+  static auto read(list<T...>) -> typename concat<decltype(frames_read<std::remove_cvref_t<T>>())...>::type;
+  template <class... F>
+  static auto all(list<F...>) -> typename closure<F...>::type;
+  template <class... F>
+  static auto held(list<F...>) -> typename concat<held_frames<F>...>::type;
+
+  // without a speed set, no partial velocities: the velocities read all they read
+  using terms = decltype(system_terms<root, std::conditional_t<std::is_void_v<Sp>, qdot_speeds<0>, Sp>>(
+      typename Sys::items{}));
+  using closed =
+      decltype(all(each_once(typename concat<decltype(turning(typename Sys::items{})),
+                                             decltype(read(terms{})), decltype(read(More{}))>::type{})));
+  using type = decltype(held(closed{}));
+};
+
+// The numbers of a system's state.
+template <class Sys, class Sp, class More = list<>>
+constexpr highest system_sizes() {
+  using F = system_frames<Sys, Sp, More>;
+  highest h = highest_of_terms(typename F::terms{});
+  h.take(highest_of_terms(More{}));
+  h.take(highest_of_items(typename Sys::items{}));
+  h.take(highest_of_edges(typename F::closed{}));
+  if constexpr (std::is_void_v<Sp>)
+    h.u = h.q;
+  else {
+    if constexpr (requires { Sp::definitions; })
+      h.take(highest_in_tuple<std::remove_cvref_t<decltype(Sp::definitions)>>());
+    h.q = Sp::rows, h.u = Sp::n;
+  }
+  return h;
+}
+template <class Sys, class Sp, class S, class More = list<>>
+using state_reading = state<S, system_sizes<Sys, Sp, More>().q, system_sizes<Sys, Sp, More>().u,
+                            system_sizes<Sys, Sp, More>().p, system_sizes<Sys, Sp, More>().r>;
+
+// The evaluator of Sys with the frames that the expressions More also read.
+template <class Sys, class Sp, level L, class St, class More = list<>>
+using evaluator_reading =
+    evaluator<St, typename as_frames<typename system_frames<Sys, Sp, More>::type>::type, L, Sp>;
+}  // namespace detail
+
+// The state of a system: state<S, nq, nu, np, nr>, the numbers read by its items (and Speeds).
+template <class Sys, class Speeds = void, class S = double>
+using state_of = detail::state_reading<Sys, Speeds, S>;
+
+// The evaluator of a system: the frames its items read, at level L, with Speeds, of a state St.
+template <class Sys, class Speeds = void, level L = level::acceleration, State St = state_of<Sys, Speeds>>
+using system_evaluator = detail::evaluator_reading<Sys, Speeds, L, St>;
+
+namespace detail {
+// X itself where it is an evaluator, else the system's evaluator with the speed set X (or none).
+template <class Sys, class X, level L = level::acceleration, class More = list<>>
+constexpr auto evaluator_or_own() {
+  if constexpr (is_evaluator<X>::value)
+    return std::type_identity<X>{};
+  else {
+    static_assert(std::is_void_v<X> || SpeedSet<X>,
+                  "kane: the second argument is an evaluator (kane::evaluator<...>) or a speed set "
+                  "(kane::speeds<...>), or none");
+    using Sp = std::conditional_t<SpeedSet<X>, X, void>;
+    return std::type_identity<evaluator_reading<Sys, Sp, L, state_reading<Sys, Sp, double, More>, More>>{};
+  }
+}
+template <class Sys, class X, level L = level::acceleration, class More = list<>>
+using evaluator_or_own_t = typename decltype(evaluator_or_own<Sys, X, L, More>())::type;
+}  // namespace detail
+
+}  // namespace kane
+#pragma GCC diagnostic pop
