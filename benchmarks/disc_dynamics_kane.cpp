@@ -11,7 +11,7 @@ namespace {
 namespace d = models::disc;
 using state = kane::state<double, 5, 5, 3>;
 using evaluator = kane::evaluator<state, kane::frames<d::R>, kane::level::acceleration, d::speeds5>;
-using rhs = kane::constrained_motion<d::system, d::rolling, evaluator>;
+using rhs = kane::constrained_motion<d::system, d::rolling>;
 
 state parameters() {
   state s;

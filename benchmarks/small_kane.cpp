@@ -1,5 +1,5 @@
-// kane's small models (small_models.hpp), written as the README teaches: the system, an
-// evaluator over the bodies' frames with the speed set, and kane::motion called per state.
+// kane's small models (small_models.hpp), written as the README teaches: the system, its speed
+// set, and kane::motion<System, Speeds> (the system's own evaluator) called per state.
 #include "../examples/models/gyrostat.hpp"
 #include "../examples/models/heavy_top.hpp"
 #include "small_models.hpp"
@@ -13,12 +13,12 @@ using q = kane::coordinate<I>;
 
 namespace top {
 namespace m = models::heavy_top;
-kane::motion<m::system, m::evaluator> motion{m::state{}};
+kane::motion<m::system, m::speeds> motion{m::state{}};
 }  // namespace top
 
 namespace spacecraft {
 namespace m = models::gyrostat;
-kane::motion<m::system, m::evaluator> motion{m::state{}};
+kane::motion<m::system, m::speeds> motion{m::state{}};
 }  // namespace spacecraft
 
 namespace pendulum {
@@ -30,9 +30,7 @@ struct P1 : kane::point<O, literal(1.2) * e<A, 1>> {};
 struct P2 : kane::point<P1, literal(0.8) * e<B, 1>> {};
 using system = kane::system<kane::particle<P1, literal(1.0)>, kane::particle<P2, literal(0.7)>,
                             kane::gravity<literal(9.81) * e<N, 1>>>;
-using state = kane::state<double, 2, 2>;
-using evaluator = kane::evaluator<state, kane::frames<B>, kane::level::acceleration, kane::qdot_speeds<2>>;
-kane::motion<system, evaluator> motion{state{}};
+kane::motion<system> motion{kane::state_of<system>{}};
 }  // namespace pendulum
 }  // namespace
 

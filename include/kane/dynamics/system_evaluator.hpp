@@ -17,8 +17,9 @@
 
 #include "kane/detail/list.hpp"
 #include "kane/detail/tree.hpp"
+#include "kane/dynamics/bodies.hpp"
+#include "kane/dynamics/loads.hpp"
 #include "kane/dynamics/system_rules.hpp"
-#include "kane/dynamics/terms.hpp"
 #include "kane/evaluation/evaluator.hpp"
 #include "kane/evaluation/evaluator_for.hpp"
 #include "kane/frames/state.hpp"
@@ -100,7 +101,7 @@ constexpr highest highest_of_edges(list<F...>) {
   (h.take(highest_of_edge<F>()), ...);
   return h;
 }
-// What an item reads beyond its terms (terms.hpp): the inertia's components.
+// What an item reads beyond its expressions: the inertia's components.
 template <class X>
 constexpr highest highest_of_item() {
   if constexpr (is_body<X>)
@@ -115,44 +116,10 @@ constexpr highest highest_of_items(list<X...>) {
   return h;
 }
 template <class... X>
-constexpr highest highest_of_terms(list<X...>) {
+constexpr highest highest_of_list(list<X...>) {
   highest h;
   (h.take(highest_in<std::remove_cvref_t<X>>()), ...);
   return h;
-}
-
-// A frame of the tree an item lives in (void: none): a body's or torque's frame, the frame of
-// the origin (or of the velocity) of a point's chain, a frame of gravity's vector.
-template <class P>
-constexpr auto chain_frame() {
-  using O = typename at<typename point_chain<P>::type, size<typename point_chain<P>::type>::value - 1>::type;
-  if constexpr (requires { typename O::velocity_frame; })
-    return std::type_identity<typename O::velocity_frame>{};
-  else
-    return std::type_identity<typename O::fixed_frame>{};
-}
-template <class X>
-constexpr auto tree_frame_of() {
-  if constexpr (is_body<X> || is_torque<X>)
-    return std::type_identity<typename X::frame>{};
-  else if constexpr (is_particle<X> || is_force<X>)
-    return chain_frame<typename X::point>();
-  else if constexpr (requires { X::vector; }) {
-    using L = decltype(frames_read<std::remove_cvref_t<decltype(X::vector)>>());
-    if constexpr (size<L>::value > 0)
-      return std::type_identity<typename at<L, 0>::type>{};
-    else
-      return std::type_identity<void>{};
-  } else
-    return std::type_identity<void>{};
-}
-template <class... X>
-constexpr auto system_root(list<X...>) {
-  using G =
-      typename concat<std::conditional_t<std::is_void_v<typename decltype(tree_frame_of<X>())::type>, list<>,
-                                         list<typename decltype(tree_frame_of<X>())::type>>...>::type;
-  static_assert(size<G>::value > 0, "kane: a system without a body, a point or a load has no frame tree");
-  return std::type_identity<root_of<typename at<G, 0>::type>>{};
 }
 
 // Each type once, in the order first met: a flat fold, however long the list.
@@ -168,13 +135,43 @@ constexpr auto each_once(list<T...>) {
   return (list<>{} | ... | std::type_identity<T>{});
 }
 
+// The expressions an item is made of: the positions along its point's chain (a point known by
+// its velocity: that velocity), its mass, its load's vector. Velocities, accelerations and partial
+// velocities derive from them and the frames' edges, and read no other frame or number.
+template <class Q>
+constexpr auto point_expression() {
+  if constexpr (requires { Q::known_velocity; })
+    return Q::known_velocity;
+  else
+    return Q::position;
+}
+template <class... Q>
+constexpr auto chain_expressions(list<Q...>) {
+  return list<decltype(point_expression<Q>())...>{};
+}
+template <class X>
+constexpr auto item_expressions() {
+  if constexpr (is_particle<X> || is_body<X>)
+    return typename concat<decltype(chain_expressions(
+                               typename point_chain<typename point_of_mass<X>::type>::type{})),
+                           list<std::remove_cvref_t<decltype(X::mass)>>>::type{};
+  else if constexpr (is_force<X>)
+    return typename concat<decltype(chain_expressions(typename point_chain<typename X::point>::type{})),
+                           list<std::remove_cvref_t<decltype(X::vector)>>>::type{};
+  else if constexpr (is_torque<X> || is_gravity<X>)
+    return list<std::remove_cvref_t<decltype(X::vector)>>{};
+  else
+    return list<>{};
+}
+
 // The frames the items of a system read (the bodies' and torques' frames, the inertias' frames,
-// the frames of the terms of Kane's sums), ancestors first, no root.
-template <class Sys, class Sp, class More = list<>>
+// the frames of their expressions and of the expressions More), ancestors first, no root.
+template <class Sys, class More = list<>>
 struct system_frames {
-  using root = typename decltype(system_root(typename Sys::items{}))::type;
   template <class... X>
   static auto turning(list<X...>) -> typename concat<typename turning_frames<X>::type...>::type;
+  template <class... X>
+  static auto made_of(list<X...>) -> typename concat<decltype(item_expressions<X>())...>::type;
   template <class... T>
   static auto read(list<T...>) -> typename concat<decltype(frames_read<std::remove_cvref_t<T>>())...>::type;
   template <class... F>
@@ -182,21 +179,17 @@ struct system_frames {
   template <class... F>
   static auto held(list<F...>) -> typename concat<held_frames<F>...>::type;
 
-  // without a speed set, no partial velocities: the velocities read all they read
-  using terms = decltype(system_terms<root, std::conditional_t<std::is_void_v<Sp>, qdot_speeds<0>, Sp>>(
-      typename Sys::items{}));
-  using closed =
-      decltype(all(each_once(typename concat<decltype(turning(typename Sys::items{})),
-                                             decltype(read(terms{})), decltype(read(More{}))>::type{})));
+  using expressions = typename concat<decltype(made_of(typename Sys::items{})), More>::type;
+  using closed = decltype(all(each_once(
+      typename concat<decltype(turning(typename Sys::items{})), decltype(read(expressions{}))>::type{})));
   using type = decltype(held(closed{}));
 };
 
 // The numbers of a system's state.
 template <class Sys, class Sp, class More = list<>>
 constexpr highest system_sizes() {
-  using F = system_frames<Sys, Sp, More>;
-  highest h = highest_of_terms(typename F::terms{});
-  h.take(highest_of_terms(More{}));
+  using F = system_frames<Sys, More>;
+  highest h = highest_of_list(typename F::expressions{});
   h.take(highest_of_items(typename Sys::items{}));
   h.take(highest_of_edges(typename F::closed{}));
   if constexpr (std::is_void_v<Sp>)
@@ -215,7 +208,7 @@ using state_reading = state<S, system_sizes<Sys, Sp, More>().q, system_sizes<Sys
 // The evaluator of Sys with the frames that the expressions More also read.
 template <class Sys, class Sp, level L, class St, class More = list<>>
 using evaluator_reading =
-    evaluator<St, typename as_frames<typename system_frames<Sys, Sp, More>::type>::type, L, Sp>;
+    evaluator<St, typename as_frames<typename system_frames<Sys, More>::type>::type, L, Sp>;
 }  // namespace detail
 
 // The state of a system: state<S, nq, nu, np, nr>, the numbers read by its items (and Speeds).
@@ -227,7 +220,7 @@ template <class Sys, class Speeds = void, level L = level::acceleration, State S
 using system_evaluator = detail::evaluator_reading<Sys, Speeds, L, St>;
 
 namespace detail {
-// X itself where it is an evaluator, else the system's evaluator with the speed set X (or none).
+// X itself where it is an evaluator, else the system's evaluator with the speed set X (none: u = q').
 template <class Sys, class X, level L = level::acceleration, class More = list<>>
 constexpr auto evaluator_or_own() {
   if constexpr (is_evaluator<X>::value)
@@ -236,7 +229,8 @@ constexpr auto evaluator_or_own() {
     static_assert(std::is_void_v<X> || SpeedSet<X>,
                   "kane: the second argument is an evaluator (kane::evaluator<...>) or a speed set "
                   "(kane::speeds<...>), or none");
-    using Sp = std::conditional_t<SpeedSet<X>, X, void>;
+    // x holds u = q' in full: the speed set of q' reads it without asking s.qd (evaluator.hpp)
+    using Sp = std::conditional_t<SpeedSet<X>, X, qdot_speeds<system_sizes<Sys, void, More>().q>>;
     return std::type_identity<evaluator_reading<Sys, Sp, L, state_reading<Sys, Sp, double, More>, More>>{};
   }
 }
