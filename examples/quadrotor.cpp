@@ -41,8 +41,8 @@ using quadrotor =
     kane::system<kane::rigid_body<B, Bo, m, kane::inertia<B, Bo, I, I, Iz>>, kane::gravity<-g * e<N, 3>>,
                  kane::force<R1, T1 * e<B, 3>>, kane::force<R2, T2 * e<B, 3>>, kane::force<R3, T3 * e<B, 3>>,
                  kane::force<R4, T4 * e<B, 3>>, kane::torque<B, k*(T1 - T2 + T3 - T4) * e<B, 3>>>;
-using state = kane::state<double, 7, 6, 6, 4>;
-using evaluator = kane::evaluator<state, kane::frames<B>, kane::level::acceleration, speeds>;
+using state = kane::state_of<quadrotor, speeds>;  // kane::state<double, 7, 6, 6, 4>
+using evaluator = kane::system_evaluator<quadrotor, speeds>;
 using inputs = kane::inputs<T1, T2, T3, T4>;
 using vector12 = Eigen::Matrix<double, 12, 1>;
 }  // namespace quad
@@ -73,7 +73,7 @@ int main() {
 
   // The 12-state model at hover, against central differences of the nonlinear right-hand side.
   const auto lin = kane::linearize_tangent<quadrotor, evaluator, inputs>(s);
-  kane::motion<quadrotor, evaluator> rhs(s);
+  kane::motion<quadrotor, speeds> rhs(s);
   const auto rates = [&](const vector12& d, const Eigen::Vector4d& thrust) {
     std::array<double, 13> x = at(d), dx{};
     rhs.inputs() = {thrust(0), thrust(1), thrust(2), thrust(3)};

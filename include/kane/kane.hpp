@@ -3,6 +3,7 @@
 #pragma once
 
 // frames, coordinates, components, direction cosines
+#include "kane/detail/frame_check.hpp"  // first: a broken rule's error names it in its first lines
 #include "kane/frames.hpp"
 
 // scalar and vector expressions

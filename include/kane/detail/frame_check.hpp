@@ -4,8 +4,13 @@
 //   static_assert(detail::check<false, error::rule<A, B>>)
 // and sizeof of the undefined class is the first error of g++ and clang:
 //   error: invalid application of 'sizeof' to incomplete type 'kane::error::rule<N, A>'
+// A rule whose fix is a call names it in a second argument, kane::fix::...:
+//   In instantiation of 'kane::detail::check<false, kane::error::rule<N, A>,
+//   kane::fix::call_kane_express<N>>'
+// kane.hpp includes this header first, so that g++ and clang name both in the first lines.
 #pragma once
 
+#include <cstddef>
 #include <type_traits>
 
 #pragma GCC diagnostic push
@@ -99,6 +104,9 @@ struct inertia_in_a_spinning_frame_is_symmetric_about_its_spin_axis;
 // The inertia of a rigid body is given in a frame fixed in the body (constant rotations from it).
 template <class InertiaFrame, class Body>
 struct inertia_given_in_a_frame_that_turns_relative_to_the_body;
+// The frames of an evaluator turn by q_1 .. q_NQ of its state.
+template <class Coordinate, class State>
+struct a_frame_turns_by_a_coordinate_beyond_the_state;
 // The inertia of a rigid body is about its mass centre; kane::parallel_axis moves it there.
 template <class About, class MassCentre>
 struct inertia_about_another_point_than_the_mass_centre_use_parallel_axis;
@@ -107,12 +115,34 @@ template <class Point>
 struct force_at_a_point_of_no_mass_apply_it_at_a_particle_or_a_point_fixed_in_a_body;
 }  // namespace error
 
+// The fixes that are calls or declarations, named beside their rule.
+namespace fix {
+// kane::express<F>(v, s) writes v's components in F.
+template <class F>
+struct call_kane_express;
+// kane::inertia<B, Bo, ...>: components in the body's frame (or one fixed in it).
+template <class Body>
+struct give_the_inertia_in_the_body_frame;
+// kane::state<S, NQ, ...> with NQ >= I, or kane::state_of<System>.
+template <std::size_t I>
+struct declare_kane_state_with_nq_at_least;
+}  // namespace fix
+
 namespace detail {
-// true, or the first error names Rule (sizeof of an undefined class).
-template <bool Ok, class Rule>
+template <class Rule, class Fix>
+struct broken;
+// true, or the first error names Rule (sizeof of an undefined class), and Fix where given.
+template <bool Ok, class Rule, class Fix = void>
 inline constexpr bool check = true;
 template <class Rule>
-inline constexpr bool check<false, Rule> = sizeof(Rule) > 0;
+inline constexpr bool check<false, Rule, void> = sizeof(Rule) > 0;
+template <class Rule, class Fix>
+inline constexpr bool check<false, Rule, Fix> = sizeof(broken<Rule, Fix>) > 0;
+// A base that is empty, or names Rule and Fix in the one error of the class deriving from it.
+template <bool Ok, class Rule, class Fix>
+struct holds {};
+template <class Rule, class Fix>
+struct holds<false, Rule, Fix> : broken<Rule, Fix> {};
 }  // namespace detail
 
 }  // namespace kane

@@ -192,7 +192,13 @@ constexpr bool body_rules() {
 
 // A rigid body fixed in B, mass centre Bo, mass Mass, inertia Given (kane::inertia).
 template <Frame B, Point Bo, auto Mass, class Given>
-struct rigid_body : detail::body_tag {
+struct rigid_body
+    : detail::body_tag,
+      detail::holds<detail::fixed_frames<B, typename detail::inertia_for<Given>::type::frame>() ||
+                        detail::spins_symmetric<B, typename detail::inertia_for<Given>::type>(),
+                    error::inertia_given_in_a_frame_that_turns_relative_to_the_body<
+                        typename detail::inertia_for<Given>::type::frame, B>,
+                    fix::give_the_inertia_in_the_body_frame<B>> {
   static_assert(detail::ScalarArgument<Mass>,
                 "kane: rigid_body<B, Bo, m, I> takes a scalar expression m (or a number)");
   static_assert(std::derived_from<Given, detail::inertia_tag>,
@@ -200,9 +206,7 @@ struct rigid_body : detail::body_tag {
   // the inertia as given, or in the parent of a frame that spins
   using I = typename detail::inertia_for<Given>::type;
   static_assert(detail::joined_frames<B, typename I::frame>::joined);
-  static_assert(detail::check < detail::fixed_frames<B, typename I::frame>() ||
-                    detail::spins_symmetric<B, I>(),
-                error::inertia_given_in_a_frame_that_turns_relative_to_the_body < typename I::frame, B >>);
+
   static_assert(
       detail::check<
           std::is_same_v<typename I::about, Bo>,
@@ -221,9 +225,9 @@ struct rigid_body : detail::body_tag {
 
 namespace detail {
 template <class T>
-inline constexpr bool is_particle = std::derived_from<T, particle_tag>;
+inline constexpr bool is_particle = __is_base_of(particle_tag, T);  // a builtin: a short error context
 template <class T>
-inline constexpr bool is_body = std::derived_from<T, body_tag>;
+inline constexpr bool is_body = __is_base_of(body_tag, T);
 
 // P is a particle's point, or its position from a mass centre is constant in that body.
 template <class P, class X>

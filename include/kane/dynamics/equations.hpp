@@ -72,19 +72,19 @@ Out recursive_equations(const Ev& ev) {
   return out;
 }
 template <class Sys, bool RestRates, class Ev>
-equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n> mass_matrix_and_forcing_at(const Ev& ev) {
+equations_of_motion<typename Ev::scalar, Ev::nu> mass_matrix_and_forcing_at(const Ev& ev) {
   if constexpr (!admitted<Sys, speeds_of<Ev>>())
     return {};
   else if constexpr (recursive_form<Sys, Ev>)
-    return recursive_equations<Sys, equations_of_motion<typename Ev::scalar, speeds_of<Ev>::n>>(ev);
+    return recursive_equations<Sys, equations_of_motion<typename Ev::scalar, Ev::nu>>(ev);
   else
-    return equations_along<Sys, RestRates, true>(ev, all_speeds<speeds_of<Ev>::n>{});
+    return equations_along<Sys, RestRates, true>(ev, all_speeds<Ev::nu>{});
 }
 }  // namespace detail
 
 // M and f of the system Sys at the evaluator's state (level::acceleration).
 template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value equations_of_motion<typename Ev::scalar, detail::speeds_of<Ev>::n>
+requires detail::is_evaluator<Ev>::value equations_of_motion<typename Ev::scalar, Ev::nu>
 mass_matrix_and_forcing(const Ev& ev) {
   return detail::flat<typename Ev::scalar>(
       [&] { return detail::mass_matrix_and_forcing_at<Sys, false>(ev); });
@@ -92,18 +92,17 @@ mass_matrix_and_forcing(const Ev& ev) {
 
 // M alone of the system Sys at the evaluator's state (any level)
 template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value mass_matrix_only<typename Ev::scalar, detail::speeds_of<Ev>::n>
-mass_matrix(const Ev& ev) {
+requires detail::is_evaluator<Ev>::value mass_matrix_only<typename Ev::scalar, Ev::nu> mass_matrix(
+    const Ev& ev) {
   using S = typename Ev::scalar;
-  using out = mass_matrix_only<S, detail::speeds_of<Ev>::n>;
+  using out = mass_matrix_only<S, Ev::nu>;
   return detail::flat<S>([&]() -> out {
     if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
       return {};
     else if constexpr (detail::recursive_form<Sys, Ev>)
       return detail::recursive_equations<Sys, out>(ev);
     else {
-      const auto e =
-          detail::equations_along<Sys, true, false>(ev, detail::all_speeds<detail::speeds_of<Ev>::n>{});
+      const auto e = detail::equations_along<Sys, true, false>(ev, detail::all_speeds<Ev::nu>{});
       return {e.M, e.status};
     }
   });

@@ -33,9 +33,9 @@ using speed_values = std::pair<Eigen::Matrix<S, int(N), 1>, solve_status>;
 
 // tau at the state's u' (Rest false) or at u' = 0 (Rest true); -tau with Negated.
 template <class Sys, bool Rest, bool Negated, class Ev>
-speed_values<typename Ev::scalar, speeds_of<Ev>::n> inverse_at(const Ev& ev) {
+speed_values<typename Ev::scalar, Ev::nu> inverse_at(const Ev& ev) {
   using S = typename Ev::scalar;
-  constexpr std::size_t n = speeds_of<Ev>::n;
+  constexpr std::size_t n = Ev::nu;
   Eigen::Matrix<S, int(n), 1> tau;
   if constexpr (recursive_form<Sys, Ev>) {
     static_assert(system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
@@ -71,9 +71,9 @@ constexpr bool known_masses() {
 }
 // u' = M^-1 f; RestRates: the state's u' is 0 (as in motion.hpp).
 template <class Sys, bool RestRates, class Ev>
-speed_values<typename Ev::scalar, speeds_of<Ev>::n> forward_at(const Ev& ev) {
+speed_values<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
   using S = typename Ev::scalar;
-  constexpr std::size_t n = speeds_of<Ev>::n;
+  constexpr std::size_t n = Ev::nu;
   if constexpr (recursive_form<Sys, Ev> && (n > articulated_above) && std::is_floating_point_v<S>) {
     static_assert(system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
     using JF = joint_form_of<Sys, Ev>;
@@ -105,22 +105,22 @@ speed_values<typename Ev::scalar, speeds_of<Ev>::n> forward_at(const Ev& ev) {
 
 // tau = M u' - f at the evaluator's state, with its status
 template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, detail::speeds_of<Ev>::n>
-inverse_dynamics(const Ev& ev) {
+requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, Ev::nu> inverse_dynamics(
+    const Ev& ev) {
   return detail::flat<typename Ev::scalar>([&] { return detail::inverse_at<Sys, false, false>(ev); });
 }
 
 // f alone (tau at u' = 0 is -f), with its status
 template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, detail::speeds_of<Ev>::n>
-forcing(const Ev& ev) {
+requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, Ev::nu> forcing(
+    const Ev& ev) {
   return detail::flat<typename Ev::scalar>([&] { return detail::inverse_at<Sys, true, true>(ev); });
 }
 
 // u' = M^-1 f at the evaluator's state, with its status
 template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, detail::speeds_of<Ev>::n>
-forward_dynamics(const Ev& ev) {
+requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, Ev::nu> forward_dynamics(
+    const Ev& ev) {
   return detail::flat<typename Ev::scalar>([&] { return detail::forward_at<Sys, false>(ev); });
 }
 

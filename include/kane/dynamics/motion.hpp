@@ -137,7 +137,7 @@ class motion {
   // the evaluator's scalar type
   using scalar = typename Ev::scalar;
   // nq, nu: the numbers of coordinates and speeds; size = nq + nu, the entries of x
-  static constexpr std::size_t nq = state_type::nq, nu = detail::speeds_of<Ev>::n, size = nq + nu;
+  static constexpr std::size_t nq = state_type::nq, nu = Ev::nu, size = nq + nu;
 
   // parameters and inputs from s (each call's x gives q and u); u' and q'' set to 0
   explicit motion(const state_type& s) : s_(s) {

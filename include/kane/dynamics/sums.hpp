@@ -85,7 +85,7 @@ KANE_ALWAYS_INLINE void add_upper(Eigen::Matrix<S, N, N>& m, const Eigen::Matrix
 template <class Ev>
 auto speed_rates(const Ev& ev) {  // u' of the evaluator's state
   using S = typename Ev::scalar;
-  constexpr std::size_t n = speeds_of<Ev>::n;
+  constexpr std::size_t n = Ev::nu;
   Eigen::Matrix<S, int(n), 1> ud;
   for (std::size_t r = 0; r < n; ++r)
     ud(Eigen::Index(r)) = std::is_void_v<typename Ev::speed_set> ? ev.state().qdd[r] : ev.state().ud[r];

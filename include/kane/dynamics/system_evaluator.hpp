@@ -22,6 +22,7 @@
 #include "kane/dynamics/system_rules.hpp"
 #include "kane/evaluation/evaluator.hpp"
 #include "kane/evaluation/evaluator_for.hpp"
+#include "kane/evaluation/state_indices.hpp"
 #include "kane/frames/state.hpp"
 
 #pragma GCC diagnostic push
@@ -29,78 +30,6 @@
 namespace kane {
 
 namespace detail {
-// The highest q_i, u_i, p_i and r_i an expression reads (0: none).
-struct highest {
-  std::size_t q = 0, u = 0, p = 0, r = 0;
-  constexpr void take(const highest& o) {
-    q = std::max(q, o.q), u = std::max(u, o.u), p = std::max(p, o.p), r = std::max(r, o.r);
-  }
-};
-template <class X>
-constexpr highest highest_in() {
-  using C = const X&;
-  highest h;
-  if constexpr (coordinate_info<X>::value)
-    h.q = X::index;
-  else if constexpr (speed_info<X>::value)
-    h.u = X::index;
-  else if constexpr (Parameter<X>)
-    h.p = X::index;
-  else if constexpr (Input<X>)
-    h.r = X::index;
-  else if constexpr (is_v<X, angular_velocity_of> || is_v<X, angular_acceleration_of>)
-    h = highest_in<decltype(expand(std::declval<C>()))>();
-  else if constexpr (requires(C x) {
-                       x.l;
-                       x.r;
-                     }) {
-    h = highest_in<std::remove_cvref_t<decltype(std::declval<C>().l)>>();
-    h.take(highest_in<std::remove_cvref_t<decltype(std::declval<C>().r)>>());
-  } else if constexpr (requires(C x) {
-                         x.s;
-                         x.v;
-                       }) {
-    h = highest_in<std::remove_cvref_t<decltype(std::declval<C>().s)>>();
-    h.take(highest_in<std::remove_cvref_t<decltype(std::declval<C>().v)>>());
-  } else if constexpr (requires(C x) { x.v; })
-    h = highest_in<std::remove_cvref_t<decltype(std::declval<C>().v)>>();
-  else if constexpr (requires(C x) { x.x; })
-    h = highest_in<std::remove_cvref_t<decltype(std::declval<C>().x)>>();
-  return h;
-}
-template <class T>
-constexpr highest highest_in_tuple() {
-  highest h;
-  [&]<std::size_t... K>(std::index_sequence<K...>) {
-    (h.take(highest_in<std::remove_cvref_t<std::tuple_element_t<K, T>>>()), ...);
-  }
-  (std::make_index_sequence<std::tuple_size_v<T>>{});
-  return h;
-}
-// What the edge above F reads: an angle, four Euler parameters, a spin's speed, an attitude's
-// parameters and speeds.
-template <class F>
-constexpr highest highest_of_edge() {
-  highest h;
-  if constexpr (std::is_void_v<typename F::tree_parent>)
-    return h;
-  else if constexpr (spin_edge<F>)
-    h.u = F::step::speed_index;
-  else if constexpr (attitude_edge<F>) {
-    h.p = F::step::source::first + F::step::source::count - 1;
-    for (std::size_t r : F::step::rate_speeds) h.u = std::max(h.u, r);
-  } else if constexpr (euler_edge<F>) {
-    for (std::size_t i : F::step::coordinates) h.q = std::max(h.q, i);
-  } else if constexpr (requires { F::step::angle; })
-    h = highest_in<std::remove_cvref_t<decltype(F::step::angle)>>();
-  return h;
-}
-template <class... F>
-constexpr highest highest_of_edges(list<F...>) {
-  highest h;
-  (h.take(highest_of_edge<F>()), ...);
-  return h;
-}
 // What an item reads beyond its expressions: the inertia's components.
 template <class X>
 constexpr highest highest_of_item() {
@@ -201,10 +130,6 @@ constexpr highest system_sizes() {
   }
   return h;
 }
-template <class Sys, class Sp, class S, class More = list<>>
-using state_reading = state<S, system_sizes<Sys, Sp, More>().q, system_sizes<Sys, Sp, More>().u,
-                            system_sizes<Sys, Sp, More>().p, system_sizes<Sys, Sp, More>().r>;
-
 // The evaluator of Sys with the frames that the expressions More also read.
 template <class Sys, class Sp, level L, class St, class More = list<>>
 using evaluator_reading =
@@ -212,8 +137,11 @@ using evaluator_reading =
 }  // namespace detail
 
 // The state of a system: state<S, nq, nu, np, nr>, the numbers read by its items (and Speeds).
-template <class Sys, class Speeds = void, class S = double>
-using state_of = detail::state_reading<Sys, Speeds, S>;
+// (More: expressions read beside the items', such as constraints; internal.)
+template <class Sys, class Speeds = void, class S = double, class More = detail::list<>>
+using state_of =
+    state<S, detail::system_sizes<Sys, Speeds, More>().q, detail::system_sizes<Sys, Speeds, More>().u,
+          detail::system_sizes<Sys, Speeds, More>().p, detail::system_sizes<Sys, Speeds, More>().r>;
 
 // The evaluator of a system: the frames its items read, at level L, with Speeds, of a state St.
 template <class Sys, class Speeds = void, level L = level::acceleration, State St = state_of<Sys, Speeds>>
@@ -231,7 +159,7 @@ constexpr auto evaluator_or_own() {
                   "(kane::speeds<...>), or none");
     // x holds u = q' in full: the speed set of q' reads it without asking s.qd (evaluator.hpp)
     using Sp = std::conditional_t<SpeedSet<X>, X, qdot_speeds<system_sizes<Sys, void, More>().q>>;
-    return std::type_identity<evaluator_reading<Sys, Sp, L, state_reading<Sys, Sp, double, More>, More>>{};
+    return std::type_identity<evaluator_reading<Sys, Sp, L, state_of<Sys, Sp, double, More>, More>>{};
   }
 }
 template <class Sys, class X, level L = level::acceleration, class More = list<>>

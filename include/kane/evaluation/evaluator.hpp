@@ -35,6 +35,7 @@
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/kinematic_equations.hpp"
 #include "kane/evaluation/outward_pass.hpp"
+#include "kane/evaluation/state_indices.hpp"
 #include "kane/evaluation/status.hpp"
 #include "kane/frames/state.hpp"
 #include "kane/kinematics/edges.hpp"
@@ -65,6 +66,11 @@ class evaluator<St, frames<Fs...>, Level, Given>
   static_assert((detail::one_tree_v<detail::join_trees_t<detail::root_of<Fs>, typename pass_type::root>> &&
                  ...));
   static_assert(detail::free_speeds_checked<Speeds>(typename pass_type::closure{}));
+  static constexpr std::size_t frames_q_ = detail::highest_of_edges(typename pass_type::closure{}).q;
+  static_assert(
+      detail::check<frames_q_ <= St::nq,
+                    error::a_frame_turns_by_a_coordinate_beyond_the_state<coordinate<frames_q_>, St>,
+                    fix::declare_kane_state_with_nq_at_least<frames_q_>>);
   using equations = detail::kinematic_equations<St, Speeds>;
   using equations::direct;
   using equations::solves;
@@ -77,6 +83,9 @@ class evaluator<St, frames<Fs...>, Level, Given>
   using scalar = typename St::scalar;
   // Speeds, or void (u = q')
   using speed_set = Speeds;
+  // the number of speeds: the speed set's, or nq (u = q')
+  static constexpr std::size_t nu =
+      std::conditional_t<std::is_void_v<Speeds>, qdot_speeds<St::nq>, Speeds>::n;
   using typename pass_type::closure;
 
   KANE_ALWAYS_INLINE evaluator() {  // NaN until the first update

@@ -159,7 +159,8 @@ bool is_approx(const vec<F, S>& a, const vec<F, S>& b, S tol) {
 template <class LeftFrame, class RightFrame>
 inline constexpr bool same_frame_v =
     detail::check<std::is_same_v<LeftFrame, RightFrame>,
-                  error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame>>;
+                  error::frames_differ_express_one_in_the_others_frame_first<LeftFrame, RightFrame>,
+                  fix::call_kane_express<LeftFrame>>;
 // p + q with p, q in different frames: an error
 template <class LeftFrame, class RightFrame, class S>
 requires DifferentFrames<LeftFrame, RightFrame> vec<LeftFrame, S>

@@ -177,8 +177,8 @@ auto constrained_point(const typename Ev::state_type& s, solve_status& status) {
 }
 // The results' types, declared so that a call does not instantiate the model to learn them.
 template <class Ev, class In>
-using model_of = linear_model<typename Ev::scalar, Ev::state_type::nq + speeds_of<Ev>::n, In::n,
-                              state_order<one_to<Ev::state_type::nq>(), one_to<speeds_of<Ev>::n>()>>;
+using model_of = linear_model<typename Ev::scalar, Ev::state_type::nq + Ev::nu, In::n,
+                              state_order<one_to<Ev::state_type::nq>(), one_to<Ev::nu>()>>;
 template <class NH, class Ev, class H, class In>
 using constrained_model_of =
     linear_model<typename Ev::scalar, independent_coordinates<H, Ev::state_type::nq>().size() + NH::p, In::n,
@@ -193,7 +193,7 @@ using equations_of =
 template <class Sys, class Ev, class In = inputs<>>
 detail::model_of<Ev, In> linearize(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
-  constexpr std::size_t nq = Ev::state_type::nq, nu = detail::speeds_of<Ev>::n, nx = nq + nu, n = nx + In::n;
+  constexpr std::size_t nq = Ev::state_type::nq, nu = Ev::nu, nx = nq + nu, n = nx + In::n;
   using J = jet<S, n>;
   auto js = detail::lift<n>(s);
   detail::seed_inputs<In, J>(js, nx);

@@ -73,7 +73,7 @@ struct tangent_model {
 template <class Sys, class Ev, class In = inputs<>>
 auto linearize_tangent(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
-  constexpr std::size_t nq = Ev::state_type::nq, nu = detail::speeds_of<Ev>::n, nx = nq + nu;
+  constexpr std::size_t nq = Ev::state_type::nq, nu = Ev::nu, nx = nq + nu;
   constexpr auto layout = detail::tangent_layout_of<nq>(typename Ev::closure{});
   constexpr std::size_t n = layout.n + nu;
   const auto lin = linearize<Sys, Ev, In>(s);
