@@ -60,6 +60,6 @@ void chain_dynamics::kane_forward(const input& in, output& out) {
   for (std::size_t i = 0; i < N; ++i) s.q[i] = in.q[i], s.u[i] = in.qd[i];
   evaluator ev;
   ev.update(s);
-  Eigen::Map<Eigen::Matrix<double, int(N), 1>>(out.qdd) = kane::forward_dynamics<system>(ev).first;
+  Eigen::Map<Eigen::Matrix<double, int(N), 1>>(out.qdd) = kane::forward_dynamics<system>(ev).ud;
 }
 template void chain_dynamics::kane_forward<KANE_CHAIN_N>(const input&, output&);

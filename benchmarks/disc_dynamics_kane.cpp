@@ -36,7 +36,7 @@ void disc_dynamics::kane_reduced_rates(const input& in, output& out) {
   evaluator ev;
   ev.update(s);
   const auto eq = kane::reduced_mass_matrix_and_forcing<d::system, d::rolling>(ev, sol);
-  const auto ud = kane::speed_derivatives(eq.reduced).first;
+  const auto ud = kane::speed_derivatives(eq.reduced).ud;
   const auto qd = ev.coordinate_rates();
   for (int i = 0; i < 5; ++i) out.xd[i] = qd[i];
   for (int i = 0; i < 3; ++i) out.xd[5 + i] = ud(i);

@@ -11,15 +11,15 @@ void disc_dynamics::sympy_rates(const input& in, output& out) {
   const double q1 = in.x[0], q2 = in.x[1], u1 = in.x[5], u2 = in.x[6], u3 = in.x[7];
   const double r = p.r, g = p.g;
   const double x0 = std::tan(q2);
-  const double x1 = -u3*x0;
+  const double x1 = -u3 * x0;
   const double x2 = u2 + x1;
-  const double x3 = r*x2;
-  out.xd[0] = u3/std::cos(q2);
+  const double x3 = r * x2;
+  out.xd[0] = u3 / std::cos(q2);
   out.xd[1] = u1;
   out.xd[2] = x2;
-  out.xd[3] = x3*std::cos(q1);
-  out.xd[4] = x3*std::sin(q1);
-  out.xd[5] = (1.0/5.0)*(4*g*std::sin(q2) + 6*r*u2*u3 - r*std::pow(u3, 2)*x0)/r;
-  out.xd[6] = -2.0/3.0*u1*u3;
-  out.xd[7] = u1*(-2*u2 - x1);
+  out.xd[3] = x3 * std::cos(q1);
+  out.xd[4] = x3 * std::sin(q1);
+  out.xd[5] = (1.0 / 5.0) * (4 * g * std::sin(q2) + 6 * r * u2 * u3 - r * std::pow(u3, 2) * x0) / r;
+  out.xd[6] = -2.0 / 3.0 * u1 * u3;
+  out.xd[7] = u1 * (-2 * u2 - x1);
 }

@@ -7,23 +7,23 @@
 
 void disc::sympy_partials(const input& in, output& out) {
   const double q1 = in.q[0], q2 = in.q[1], r = in.r;
-  const double x0 = r*std::cos(q1);
+  const double x0 = r * std::cos(q1);
   const double x1 = std::tan(q2);
-  const double x2 = r*std::sin(q1);
+  const double x2 = r * std::sin(q1);
   const double x3 = std::cos(q2);
   out.A[0] = 0;
   out.A[1] = x0;
-  out.A[2] = -x0*x1;
+  out.A[2] = -x0 * x1;
   out.A[3] = 0;
   out.A[4] = x2;
-  out.A[5] = -x1*x2;
-  out.V[0] = x2*x3;
+  out.A[5] = -x1 * x2;
+  out.V[0] = x2 * x3;
   out.V[1] = x0;
   out.V[2] = 0;
-  out.V[3] = -x0*x3;
+  out.V[3] = -x0 * x3;
   out.V[4] = x2;
   out.V[5] = 0;
-  out.V[6] = -r*std::sin(q2);
+  out.V[6] = -r * std::sin(q2);
   out.V[7] = 0;
   out.V[8] = 0;
 }

@@ -34,7 +34,7 @@ void mass_and_bias(const dynamics6::input& in, dynamics6::output& out) {
 void forward(const dynamics6::input& in, dynamics6::output& out) {
   evaluator ev;
   ev.update(at(in));
-  vector(out.qdd) = kane::forward_dynamics<system>(ev).first;
+  vector(out.qdd) = kane::forward_dynamics<system>(ev).ud;
 }
 // tau = M q''_in - f
 void inverse(const dynamics6::input& in, dynamics6::output& out) {
@@ -42,7 +42,7 @@ void inverse(const dynamics6::input& in, dynamics6::output& out) {
   s.ud = in.qdd_in;
   evaluator ev;
   ev.update(s);
-  vector(out.tau) = kane::inverse_dynamics<system>(ev).first;
+  vector(out.tau) = kane::inverse_dynamics<system>(ev).tau;
 }
 }  // namespace
 

@@ -77,7 +77,7 @@ extern "C" int pendulum_step(const real* x, const real* p, real* dxdt) {
   const auto f = kane::forcing<m::system>(ev);
   const auto ud = kane::forward_dynamics<m::system>(ev);
   const bool ok = rhs.status() == kane::solve_status::ok && mass.status == kane::solve_status::ok &&
-                  tau.second == kane::solve_status::ok && f.second == kane::solve_status::ok &&
-                  ud.second == kane::solve_status::ok;
+                  tau.status == kane::solve_status::ok && f.status == kane::solve_status::ok &&
+                  ud.status == kane::solve_status::ok;
   return ok ? 0 : 1;
 }

@@ -63,7 +63,7 @@ int main() {
   const auto [ud, solved] = kane::speed_derivatives(eom);
   expect(eom.status == kane::solve_status::ok && solved == kane::solve_status::ok, "equations");
 
-  // Inverse and forward dynamics: {value, status}.
+  // Inverse and forward dynamics: {tau, status}, {ud, status}.
   const auto [ud2, forward_status] = kane::forward_dynamics<links>(ev);
   expect(forward_status == kane::solve_status::ok && (ud2 - ud).norm() < 1e-12, "forward dynamics");
   s.ud = {ud(0), ud(1)};

@@ -173,14 +173,14 @@ TEST_CASE("the 6R arm: inverse dynamics by inward sums is Newton-Euler by hand a
     CHECK((eom.M * ud - eom.f - tau).cwiseAbs().maxCoeff() < 1e-12);
     const std::array<double, 6> rest{};
     const auto bias = arm::newton_euler(s.q.data(), s.u.data(), rest.data());
-    CHECK((kane::forcing<arm::system>(ev).first + bias).cwiseAbs().maxCoeff() < 1e-12);
+    CHECK((kane::forcing<arm::system>(ev).f + bias).cwiseAbs().maxCoeff() < 1e-12);
     // u' of forward dynamics gives tau = 0
     auto s2 = s;
     const auto [ud2, status2] = kane::forward_dynamics<arm::system>(ev);
     REQUIRE(status2 == kane::solve_status::ok);
     for (std::size_t i = 0; i < 6; ++i) s2.ud[i] = ud2(Eigen::Index(i));
     ev.update(s2);
-    CHECK(kane::inverse_dynamics<arm::system>(ev).first.cwiseAbs().maxCoeff() < 1e-11);
+    CHECK(kane::inverse_dynamics<arm::system>(ev).tau.cwiseAbs().maxCoeff() < 1e-11);
   }
 }
 
@@ -191,14 +191,13 @@ TEST_CASE("joint torques as inputs per call: inverse dynamics, then the torques 
     const auto s = random_state<arm::state>(rng);
     arm::evaluator ev;
     ev.update(s);
-    const auto tau = kane::inverse_dynamics<arm::system>(ev).first;
+    const auto tau = kane::inverse_dynamics<arm::system>(ev).tau;
     arm::driven_state d;
     d.q = s.q, d.u = s.u;
     arm::driven_evaluator dev;
     dev.update(d);  // r = 0: the torque-free arm
-    CHECK(
-        (kane::forcing<arm::driven>(dev).first - kane::forcing<arm::system>(ev).first).cwiseAbs().maxCoeff() <
-        1e-13);
+    CHECK((kane::forcing<arm::driven>(dev).f - kane::forcing<arm::system>(ev).f).cwiseAbs().maxCoeff() <
+          1e-13);
     std::array<double, 6> r;
     for (std::size_t i = 0; i < 6; ++i) r[i] = tau(Eigen::Index(i));
     dev.set_inputs(r);  // no new pass
@@ -226,7 +225,7 @@ TEST_CASE("kane::motion reads x from a std::array, an Eigen vector and a strided
   REQUIRE(rhs.status() == kane::solve_status::ok);
   arm::evaluator ev;
   ev.update(s);
-  const auto ud = kane::forward_dynamics<arm::system>(ev).first;
+  const auto ud = kane::forward_dynamics<arm::system>(ev).ud;
   for (std::size_t i = 0; i < 6; ++i) {
     CHECK(dx[i] == s.u[i]);
     CHECK(std::abs(dx[6 + i] - ud(Eigen::Index(i))) < 1e-12);
@@ -263,7 +262,7 @@ TEST_CASE(
     CHECK((fast.M - sums.M).cwiseAbs().maxCoeff() < 1e-13);
     CHECK((fast.f - sums.f).cwiseAbs().maxCoeff() < 1e-12);
     const Eigen::Map<const Eigen::Matrix<double, 4, 1>> ud(s.ud.data());
-    CHECK((kane::inverse_dynamics<tree::system>(ev).first - (sums.M * ud - sums.f)).cwiseAbs().maxCoeff() <
+    CHECK((kane::inverse_dynamics<tree::system>(ev).tau - (sums.M * ud - sums.f)).cwiseAbs().maxCoeff() <
           1e-12);
     CHECK((kane::mass_matrix<tree::system>(ev).M - sums.M).cwiseAbs().maxCoeff() < 1e-13);
   }
@@ -296,8 +295,8 @@ TEST_CASE("the recursive entry points report a state that is not finite", "[recu
   const auto [tau, status] = kane::inverse_dynamics<arm::system>(ev);
   CHECK(status == kane::solve_status::not_finite);
   CHECK(std::isnan(tau(0)));
-  CHECK(kane::forcing<arm::system>(ev).second == kane::solve_status::not_finite);
-  CHECK(kane::forward_dynamics<arm::system>(ev).second == kane::solve_status::not_finite);
+  CHECK(kane::forcing<arm::system>(ev).status == kane::solve_status::not_finite);
+  CHECK(kane::forward_dynamics<arm::system>(ev).status == kane::solve_status::not_finite);
   auto c = random_state<chain::state>(rng);
   c.u[4] = std::numeric_limits<double>::infinity();
   chain::evaluator cev;

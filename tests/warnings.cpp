@@ -256,7 +256,7 @@ S dynamics(const kane::state<S, 6>& s6) {
   kane::evaluator<decltype(s), kane::frames<m::B>, kane::level::acceleration, kane::qdot_speeds<2>> ev;
   ev.update(s);
   const auto eom = kane::mass_matrix_and_forcing<m::system>(ev);
-  const auto ud = kane::speed_derivatives(eom).first;
+  const auto ud = kane::speed_derivatives(eom).ud;
   kane::motion<m::system, decltype(ev)> rhs(s);
   std::array<S, 4> x{}, dx{};
   rhs(x, dx, S(0));

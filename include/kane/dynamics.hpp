@@ -12,6 +12,7 @@
 #include "kane/dynamics/motion.hpp"
 #include "kane/dynamics/reaction.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
+#include "kane/dynamics/results.hpp"
 #include "kane/dynamics/springs.hpp"
 #include "kane/dynamics/system_evaluator.hpp"
 #include "kane/dynamics/terms.hpp"

@@ -33,15 +33,7 @@
 namespace kane {
 
 // M alone, M_rs = sum m v_r . v_s + w_r . I . w_s: the partial velocities need the pose only,
-// so an evaluator of any level will do (level::pose computes least). status: the evaluator's,
-// or not_finite.
-template <class S, std::size_t N>
-struct mass_matrix_only {
-  // the mass matrix, N x N
-  Eigen::Matrix<S, int(N), int(N)> M;
-  // the evaluator's, or not_finite
-  solve_status status;
-};
+// so an evaluator of any level will do (level::pose computes least).
 
 namespace detail {
 template <class Sys, class Ev>
@@ -83,17 +75,15 @@ equations_of_motion<typename Ev::scalar, Ev::nu> mass_matrix_and_forcing_at(cons
 }  // namespace detail
 
 // M and f of the system Sys at the evaluator's state (level::acceleration).
-template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value equations_of_motion<typename Ev::scalar, Ev::nu>
-mass_matrix_and_forcing(const Ev& ev) {
+template <class Sys, Evaluator Ev>
+equations_of_motion<typename Ev::scalar, Ev::nu> mass_matrix_and_forcing(const Ev& ev) {
   return detail::flat<typename Ev::scalar>(
       [&] { return detail::mass_matrix_and_forcing_at<Sys, false>(ev); });
 }
 
 // M alone of the system Sys at the evaluator's state (any level)
-template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value mass_matrix_only<typename Ev::scalar, Ev::nu> mass_matrix(
-    const Ev& ev) {
+template <class Sys, Evaluator Ev>
+mass_matrix_only<typename Ev::scalar, Ev::nu> mass_matrix(const Ev& ev) {
   using S = typename Ev::scalar;
   using out = mass_matrix_only<S, Ev::nu>;
   return detail::flat<S>([&]() -> out {
@@ -112,8 +102,7 @@ namespace detail {
 // speed_derivatives in the caller's body, with no branch around a store (after it, motion's local
 // evaluator's unread stores stay dead: motion.hpp)
 template <class S, std::size_t N>
-std::pair<Eigen::Matrix<S, int(N), 1>, solve_status> speed_derivatives_at(
-    const equations_of_motion<S, N>& e) {
+forward_result<S, N> speed_derivatives_at(const equations_of_motion<S, N>& e) {
   Eigen::Matrix<S, int(N), 1> ud = Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN());
   using detail::solve_positive_definite;  // jets: theirs (argument-dependent lookup)
   const bool positive = solve_positive_definite(e.M, e.f, ud);
@@ -130,7 +119,7 @@ std::pair<Eigen::Matrix<S, int(N), 1>, solve_status> speed_derivatives_at(
 // u' = M^-1 f by a Cholesky factorization of fixed size; singular if M is not
 // positive definite (a speed that moves no mass), with NaN.
 template <class S, std::size_t N>
-std::pair<Eigen::Matrix<S, int(N), 1>, solve_status> speed_derivatives(const equations_of_motion<S, N>& e) {
+forward_result<S, N> speed_derivatives(const equations_of_motion<S, N>& e) {
   return detail::flat<S>([&] { return detail::speed_derivatives_at(e); });
 }
 

@@ -8,13 +8,12 @@
 //
 // For a system of joint form (joint_form.hpp) tau and f come from one outward and
 // one inward pass (rnea.hpp) and M from composite bodies (crba.hpp); otherwise
-// from Kane's sums (equations.hpp). Each returns {value, status}; when the status
-// is not ok the value is NaN.
+// from Kane's sums (equations.hpp). Each returns a named result (results.hpp): {tau,
+// status}, {f, status}, {ud, status}; when the status is not ok the numbers are NaN.
 #pragma once
 
 #include <cstddef>
 #include <limits>
-#include <utility>
 
 #include <Eigen/Core>
 
@@ -28,12 +27,9 @@
 namespace kane {
 
 namespace detail {
-template <class S, std::size_t N>
-using speed_values = std::pair<Eigen::Matrix<S, int(N), 1>, solve_status>;
-
-// tau at the state's u' (Rest false) or at u' = 0 (Rest true); -tau with Negated.
-template <class Sys, bool Rest, bool Negated, class Ev>
-speed_values<typename Ev::scalar, Ev::nu> inverse_at(const Ev& ev) {
+// tau at the state's u' (Rest false) or at u' = 0 (Rest true); -tau with Negated; as Out.
+template <class Sys, bool Rest, bool Negated, class Out, class Ev>
+Out inverse_at(const Ev& ev) {
   using S = typename Ev::scalar;
   constexpr std::size_t n = Ev::nu;
   Eigen::Matrix<S, int(n), 1> tau;
@@ -71,7 +67,7 @@ constexpr bool known_masses() {
 }
 // u' = M^-1 f; RestRates: the state's u' is 0 (as in motion.hpp).
 template <class Sys, bool RestRates, class Ev>
-speed_values<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
+forward_result<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
   using S = typename Ev::scalar;
   constexpr std::size_t n = Ev::nu;
   if constexpr (recursive_form<Sys, Ev> && (n > articulated_above) && std::is_floating_point_v<S>) {
@@ -104,23 +100,22 @@ speed_values<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
 }  // namespace detail
 
 // tau = M u' - f at the evaluator's state, with its status
-template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, Ev::nu> inverse_dynamics(
-    const Ev& ev) {
-  return detail::flat<typename Ev::scalar>([&] { return detail::inverse_at<Sys, false, false>(ev); });
+template <class Sys, Evaluator Ev>
+inverse_result<typename Ev::scalar, Ev::nu> inverse_dynamics(const Ev& ev) {
+  return detail::flat<typename Ev::scalar>(
+      [&] { return detail::inverse_at<Sys, false, false, inverse_result<typename Ev::scalar, Ev::nu>>(ev); });
 }
 
 // f alone (tau at u' = 0 is -f), with its status
-template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, Ev::nu> forcing(
-    const Ev& ev) {
-  return detail::flat<typename Ev::scalar>([&] { return detail::inverse_at<Sys, true, true>(ev); });
+template <class Sys, Evaluator Ev>
+forcing_result<typename Ev::scalar, Ev::nu> forcing(const Ev& ev) {
+  return detail::flat<typename Ev::scalar>(
+      [&] { return detail::inverse_at<Sys, true, true, forcing_result<typename Ev::scalar, Ev::nu>>(ev); });
 }
 
 // u' = M^-1 f at the evaluator's state, with its status
-template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value detail::speed_values<typename Ev::scalar, Ev::nu> forward_dynamics(
-    const Ev& ev) {
+template <class Sys, Evaluator Ev>
+forward_result<typename Ev::scalar, Ev::nu> forward_dynamics(const Ev& ev) {
   return detail::flat<typename Ev::scalar>([&] { return detail::forward_at<Sys, false>(ev); });
 }
 

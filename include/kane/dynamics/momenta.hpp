@@ -87,9 +87,8 @@ void for_each_mass(const Ev& ev, F&& f) {
 }  // namespace detail
 
 // ^R p = sum m ^R v^P, as vec<R>
-template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value vec<typename Ev::root, typename Ev::scalar> linear_momentum(
-    const Ev& ev) {
+template <class Sys, Evaluator Ev>
+vec<typename Ev::root, typename Ev::scalar> linear_momentum(const Ev& ev) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   Eigen::Matrix<S, 3, 1> p = Eigen::Matrix<S, 3, 1>::Zero();
@@ -101,10 +100,9 @@ requires detail::is_evaluator<Ev>::value vec<typename Ev::root, typename Ev::sca
 }
 
 // ^R H^O = sum r^OP x m ^R v^P + I . ^R w^B, as vec<R>; O the system's mass centre by default
-template <class Sys, class O = mass_centre, class Ev>
-requires detail::is_evaluator<Ev>::value &&
-    (std::is_same_v<O, mass_centre> ||
-     Point<O>)vec<typename Ev::root, typename Ev::scalar> angular_momentum(const Ev& ev) {
+template <class Sys, class O = mass_centre, Evaluator Ev>
+requires(std::is_same_v<O, mass_centre> ||
+         Point<O>) vec<typename Ev::root, typename Ev::scalar> angular_momentum(const Ev& ev) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using V = Eigen::Matrix<S, 3, 1>;
@@ -132,8 +130,8 @@ requires detail::is_evaluator<Ev>::value &&
 }
 
 // T = sum m v . v / 2 + w . I . w / 2
-template <class Sys, class Ev>
-requires detail::is_evaluator<Ev>::value typename Ev::scalar kinetic_energy(const Ev& ev) {
+template <class Sys, Evaluator Ev>
+typename Ev::scalar kinetic_energy(const Ev& ev) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   S energy = S(0);
@@ -150,9 +148,8 @@ requires detail::is_evaluator<Ev>::value typename Ev::scalar kinetic_energy(cons
 }
 
 // V = -sum m g . r^OP + sum k s^2 / 2, zero at O
-template <class Sys, class O = void, class Ev>
-requires detail::is_evaluator<Ev>::value &&(std::is_void_v<O> || Point<O>)typename Ev::scalar
-    potential_energy(const Ev& ev) {
+template <class Sys, class O = void, Evaluator Ev>
+requires(std::is_void_v<O> || Point<O>) typename Ev::scalar potential_energy(const Ev& ev) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using V = Eigen::Matrix<S, 3, 1>;

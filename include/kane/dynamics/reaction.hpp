@@ -95,9 +95,8 @@ constexpr auto masses_of(list<X...>) {
 
 // The force and moment about Cut's point that the rest of Sys exerts on Cut's part, at ev's state
 // (its q, u and u'; ev at the acceleration level).
-template <class Sys, class Cut, class Ev>
-requires detail::is_evaluator<Ev>::value reaction_load<typename Ev::root, typename Ev::scalar> reaction(
-    const Ev& ev) {
+template <class Sys, class Cut, Evaluator Ev>
+reaction_load<typename Ev::root, typename Ev::scalar> reaction(const Ev& ev) {
   using R = typename Ev::root;
   using S = typename Ev::scalar;
   using P = typename Cut::point;

@@ -24,6 +24,7 @@
 #include "kane/dynamics/bodies.hpp"
 #include "kane/dynamics/columns.hpp"
 #include "kane/dynamics/known_mass_matrix.hpp"
+#include "kane/dynamics/results.hpp"
 #include "kane/dynamics/system_rules.hpp"
 #include "kane/dynamics/terms.hpp"
 #include "kane/evaluation/evaluate.hpp"
@@ -36,17 +37,6 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
-
-// M u' = f of N speeds at a state, and its status.
-template <class S, std::size_t N>
-struct equations_of_motion {
-  // the mass matrix, N x N
-  Eigen::Matrix<S, int(N), int(N)> M;  // symmetric, positive definite for a system with mass in every speed
-  // the forcing, N x 1
-  Eigen::Matrix<S, int(N), 1> f;
-  // ok, or why M and f are NaN
-  solve_status status;  // the evaluator's, or not_finite
-};
 
 namespace detail {
 // f alone, where M is known at compile time (known_mass_matrix.hpp)

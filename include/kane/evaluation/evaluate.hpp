@@ -26,6 +26,13 @@ namespace detail {
 // Specialised by evaluator.hpp.
 template <class X>
 struct is_evaluator : std::false_type {};
+}  // namespace detail
+
+// A kane::evaluator<State, frames<F...>, Level, Speeds>: what every entry point computes from.
+template <class T>
+concept Evaluator = detail::is_evaluator<T>::value;
+
+namespace detail {
 
 template <bool Recall = true, class Ev, class V>
 KANE_ALWAYS_INLINE v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev);
@@ -203,9 +210,8 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> in_frame(const v3<typename Ev::scalar
 }  // namespace detail
 
 // The value of a scalar expression.
-template <ScalarExpr X, class Ev>
-requires detail::is_evaluator<Ev>::value KANE_INLINE_FLATTEN typename Ev::scalar evaluate(const X& x,
-                                                                                          const Ev& ev) {
+template <ScalarExpr X, Evaluator Ev>
+KANE_INLINE_FLATTEN typename Ev::scalar evaluate(const X& x, const Ev& ev) {
   return detail::eval_scalar(x, ev);
 }
 
@@ -231,13 +237,13 @@ KANE_ALWAYS_INLINE vec<A, typename Ev::scalar> express_in(const V& v, const Ev& 
 
 // ^A v: the components of the vector expression v in A.
 template <Frame A, VectorExpr V, class Ev>
-requires(detail::is_evaluator<Ev>::value&& detail::inlined_entry<Ev>)
+requires(Evaluator<Ev>&& detail::inlined_entry<Ev>)
     KANE_INLINE_FLATTEN vec<A, typename Ev::scalar> express(const V& v, const Ev& ev) {
   return detail::express_in<A>(v, ev);
 }
 // ^A v, for an evaluator of more than 8 frames (one flattened function)
 template <Frame A, VectorExpr V, class Ev>
-requires(detail::is_evaluator<Ev>::value &&
+requires(Evaluator<Ev> &&
          !detail::inlined_entry<Ev>) KANE_FLATTEN vec<A, typename Ev::scalar> express(const V& v,
                                                                                       const Ev& ev) {
   return detail::express_in<A>(v, ev);

@@ -112,22 +112,20 @@ requires(!inlined_entry<Ev>) KANE_FLATTEN auto linear_parts(const X& x, const Ev
 
 // The pair (T, t) of x = T u + t in A.
 template <Frame A, class X, class Ev>
-requires(detail::is_evaluator<Ev>::value &&
-         (ScalarExpr<X> || VectorExpr<X>)) auto linear_in_speeds(const X& x, const Ev& ev) {
+requires(Evaluator<Ev> && (ScalarExpr<X> || VectorExpr<X>)) auto linear_in_speeds(const X& x, const Ev& ev) {
   return detail::linear_parts<A, true, true>(x, ev);
 }
 
 // The table [v_1 ... v_n] in A.
 template <Frame A, class X, class Ev>
-requires(detail::is_evaluator<Ev>::value &&
-         (ScalarExpr<X> || VectorExpr<X>)) auto partial_velocities(const X& x, const Ev& ev) {
+requires(Evaluator<Ev> && (ScalarExpr<X> || VectorExpr<X>)) auto partial_velocities(const X& x,
+                                                                                    const Ev& ev) {
   return detail::linear_parts<A, true, false>(x, ev);
 }
 
 // v_t in A.
 template <Frame A, class X, class Ev>
-requires(detail::is_evaluator<Ev>::value && (ScalarExpr<X> || VectorExpr<X>)) auto remainder(const X& x,
-                                                                                             const Ev& ev) {
+requires(Evaluator<Ev> && (ScalarExpr<X> || VectorExpr<X>)) auto remainder(const X& x, const Ev& ev) {
   return detail::linear_parts<A, false, true>(x, ev);
 }
 
