@@ -4,10 +4,11 @@
 
 #include "kane/dynamics/bodies.hpp"
 #include "kane/dynamics/constrained_motion.hpp"
-#include "kane/dynamics/equations.hpp"
+#include "kane/dynamics/forward_dynamics.hpp"
 #include "kane/dynamics/generalized_forces.hpp"
 #include "kane/dynamics/inverse_dynamics.hpp"
 #include "kane/dynamics/loads.hpp"
+#include "kane/dynamics/mass_matrix_and_forcing.hpp"
 #include "kane/dynamics/momenta.hpp"
 #include "kane/dynamics/motion.hpp"
 #include "kane/dynamics/reaction.hpp"
@@ -15,4 +16,3 @@
 #include "kane/dynamics/results.hpp"
 #include "kane/dynamics/springs.hpp"
 #include "kane/dynamics/system_evaluator.hpp"
-#include "kane/dynamics/terms.hpp"

@@ -54,36 +54,29 @@ using constraint_terms = decltype(listed(NH::equations));
 template <class Sys, class NH,
           class Ev = detail::evaluator_or_own_t<Sys, typename NH::speed_set, level::acceleration,
                                                 detail::constraint_terms<NH>>>
-class constrained_motion {
+class constrained_motion
+    : public detail::rates_function<constrained_motion<Sys, NH, Ev>, Ev, Ev::state_type::nq + NH::p> {
+  using base = detail::rates_function<constrained_motion, Ev, Ev::state_type::nq + NH::p>;
+  friend base;
+  using base::s_;
+  using base::status_;
+
  public:
-  // the evaluator's state type
-  using state_type = typename Ev::state_type;
-  // the evaluator's scalar type
-  using scalar = typename Ev::scalar;
-  // nq, p: the numbers of coordinates and independent speeds; size = nq + p, the entries of x
-  static constexpr std::size_t nq = state_type::nq, p = NH::p, size = nq + p;
+  using base::index;
+  using base::nq;
+  using base::size;
+  using typename base::scalar;
+  using typename base::state_type;
+  // p: the number of independent speeds
+  static constexpr std::size_t p = NH::p;
 
   // parameters and inputs from s (each call's x gives q and u_ind); u' set to 0
-  explicit constrained_motion(const state_type& s) : s_(s) { s_.ud = {}; }
+  explicit constrained_motion(const state_type& s) : base(s) { s_.ud = {}; }
+  // A state of another type: refused with the type to use.
+  template <class St>
+  requires(!std::is_same_v<St, state_type>) explicit constrained_motion(const St& s) : base(s) {}
 
-  // Numbers: one function body (the passes, the tables and Eigen's fixed-size loops inlined).
-  // A container of a size known at compile time is checked then; others must hold size entries.
-  template <class X, class DX>
-  requires(detail::sizes_checked<size, X, DX>()) void operator()(const X& x, DX& dxdt, scalar time) {
-    detail::flat<scalar>([&] { step(x, dxdt, time); });
-  }
-
-  // the status of the last call: ok, or why dxdt is NaN
-  solve_status status() const { return status_; }
-  // the inputs r of the calls from now on, kept between calls
-  typename state_type::inputs_type& inputs() { return s_.r; }
-  // An evaluator updated at the last call's state (before the first call, s's), u' = 0 (each call
-  // evaluates in a local one).
-  Ev evaluator() const {
-    Ev ev;
-    ev.update(s_);
-    return ev;
-  }
+  using base::evaluator;
   // An evaluator updated at x and the time t (the step's end), the dependent speeds solved, u' = 0.
   // A run-time size other than size gives NaN coordinates: status not_finite.
   template <class X>
@@ -99,12 +92,6 @@ class constrained_motion {
       ev.update(s);
     }
     return ev;
-  }
-  // The entry of q_I in x and dx/dt.
-  template <std::size_t I>
-  static constexpr std::size_t index(coordinate<I>) {
-    static_assert(I >= 1 && I <= nq, "kane: q_i is not a coordinate of this x (q_1 .. q_nq)");
-    return I - 1;
   }
   // The entry of the independent speed u_R (u_R') in x (dx/dt).
   template <std::size_t R>
@@ -155,9 +142,6 @@ class constrained_motion {
     detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status == solve_status::ok);
     for (std::size_t k = 0; k < p; ++k) dxdt[nq + k] = ud(Eigen::Index(k));
   }
-
-  state_type s_;
-  solve_status status_ = solve_status::ok;
 };
 
 }  // namespace kane

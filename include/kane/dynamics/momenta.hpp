@@ -18,10 +18,10 @@
 #include <Eigen/Core>
 
 #include "kane/dynamics/bodies.hpp"
+#include "kane/dynamics/detail/sums/sums.hpp"
+#include "kane/dynamics/detail/sums/terms.hpp"
+#include "kane/dynamics/detail/system_rules.hpp"
 #include "kane/dynamics/springs.hpp"
-#include "kane/dynamics/sums.hpp"
-#include "kane/dynamics/system_rules.hpp"
-#include "kane/dynamics/terms.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/frames/vec.hpp"
 #include "kane/kinematics/point.hpp"

@@ -11,9 +11,9 @@
 #include <Eigen/Core>
 
 #include "kane/detail/inline.hpp"
-#include "kane/dynamics/equations.hpp"
+#include "kane/dynamics/detail/system_rules.hpp"
 #include "kane/dynamics/generalized_forces.hpp"
-#include "kane/dynamics/system_rules.hpp"
+#include "kane/dynamics/mass_matrix_and_forcing.hpp"
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/memo.hpp"
 #include "kane/evaluation/nonholonomic_tables.hpp"

@@ -95,6 +95,13 @@ template <class M>
 bool all_finite_matrix(const M& m) {
   return (m.array() - m.array()).sum() == typename M::Scalar(0);
 }
+// The status of a result x computed at status: not_finite where x is not, and x NaN unless ok.
+template <class M>
+solve_status finished(M& x, solve_status status) {
+  if (status == solve_status::ok && !all_finite_matrix(x)) status = solve_status::not_finite;
+  if (status != solve_status::ok) x.setConstant(std::numeric_limits<typename M::Scalar>::quiet_NaN());
+  return status;
+}
 // The diagonal of a mass matrix M finite: so is all of M, |M_rs| <= (M_rr M_ss)^1/2 (M positive
 // semidefinite).
 template <class M>

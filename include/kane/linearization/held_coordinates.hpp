@@ -13,7 +13,7 @@
 #include <utility>
 
 #include "kane/detail/list.hpp"
-#include "kane/dynamics/equations.hpp"
+#include "kane/dynamics/mass_matrix_and_forcing.hpp"
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/memo.hpp"
 #include "kane/kinematics/derivative.hpp"

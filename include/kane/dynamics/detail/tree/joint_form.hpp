@@ -18,7 +18,7 @@
 #include "kane/detail/list.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/dynamics/bodies.hpp"
-#include "kane/dynamics/fixed_vectors.hpp"
+#include "kane/dynamics/detail/tree/fixed_vectors.hpp"
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/edges.hpp"
 #include "kane/kinematics/point.hpp"

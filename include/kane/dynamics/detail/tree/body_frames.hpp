@@ -21,9 +21,9 @@
 #include "kane/detail/list.hpp"
 #include "kane/detail/patterned.hpp"
 #include "kane/detail/v3.hpp"
-#include "kane/dynamics/fixed_vectors.hpp"
-#include "kane/dynamics/joint_form.hpp"
-#include "kane/dynamics/turns.hpp"
+#include "kane/dynamics/detail/tree/fixed_vectors.hpp"
+#include "kane/dynamics/detail/tree/joint_form.hpp"
+#include "kane/dynamics/detail/tree/turns.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/frames/axis.hpp"
 

@@ -19,8 +19,8 @@
 
 #include "kane/detail/inline.hpp"
 #include "kane/detail/v3.hpp"
-#include "kane/dynamics/body_frames.hpp"
-#include "kane/dynamics/crba.hpp"
+#include "kane/dynamics/detail/tree/body_frames.hpp"
+#include "kane/dynamics/detail/tree/crba.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -72,6 +72,18 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> base_acceleration(const Ev& ev) {
         ...);
   }(typename Sys::items{});
   return a;
+}
+
+// The applied load X at c (pattern C, components in F) subtracted from (f, n): f -= R and
+// n -= c x R for a force R, n -= T for a torque T.
+template <class X, class F, auto C, class Ev, class V>
+KANE_ALWAYS_INLINE void subtract_load(V& f, V& n, const V& c, const Ev& ev) {
+  if constexpr (is_force<X>) {
+    const V r = in_frame<F>(eval_vector<false>(X::vector, ev), ev);
+    f = f - r;
+    if constexpr (!all_zero(C)) n = n - cross_from<C>(c, r);
+  } else if constexpr (is_torque<X>)
+    n = n - in_frame<F>(eval_vector<false>(X::vector, ev), ev);
 }
 
 // tau = M u' - f of the joint-form system Sys (u' of the state, or 0 with Rest); -tau with Negated.
@@ -165,13 +177,8 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
                 const sym3<S> ic = body_inertia<X>(ev);
                 ng = ng + sym_times(ic, ag) + cross3(wg, sym_times(ic, wg));
               }
-            } else if constexpr (is_force<X>) {
-              const vec r = in_frame<F>(eval_vector<false>(X::vector, ev), ev);
-              fg = fg - r;
-              if constexpr (!all_zero(C)) ng = ng - cross_from<C>(c, r);
-            } else if constexpr (is_torque<X>) {
-              ng = ng - in_frame<F>(eval_vector<false>(X::vector, ev), ev);
-            }
+            } else
+              subtract_load<X, F, C>(fg, ng, c, ev);
           }
         }(),
         ...);

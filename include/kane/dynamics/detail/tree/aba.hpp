@@ -22,9 +22,9 @@
 
 #include "kane/detail/inline.hpp"
 #include "kane/detail/v3.hpp"
-#include "kane/dynamics/body_frames.hpp"
-#include "kane/dynamics/crba.hpp"
-#include "kane/dynamics/rnea.hpp"
+#include "kane/dynamics/detail/tree/body_frames.hpp"
+#include "kane/dynamics/detail/tree/crba.hpp"
+#include "kane/dynamics/detail/tree/rnea.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -119,17 +119,10 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
             constexpr int ip = t.item_point[I];
             constexpr auto C = BF::local_pattern(ip, g);
             const vec c = bf.template local<ip, g>();
-            if constexpr (is_body<X>)
-              rigid[std::size_t(g)].template add_mass<C, true>(S(eval_scalar(X::mass, ev)), c,
-                                                               body_inertia<X>(ev));
-            else if constexpr (is_particle<X>)
-              rigid[std::size_t(g)].template add_mass<C, false>(S(eval_scalar(X::mass, ev)), c, {});
-            else if constexpr (is_force<X>) {  // -f_ext
-              const vec r = in_frame<F>(eval_vector<false>(X::vector, ev), ev);
-              x[std::size_t(g)].f = x[std::size_t(g)].f - r;
-              if constexpr (!all_zero(C)) x[std::size_t(g)].n = x[std::size_t(g)].n - cross_from<C>(c, r);
-            } else if constexpr (is_torque<X>)
-              x[std::size_t(g)].n = x[std::size_t(g)].n - in_frame<F>(eval_vector<false>(X::vector, ev), ev);
+            if constexpr (is_body<X> || is_particle<X>)
+              add_item_mass<X, C>(rigid[std::size_t(g)], c, ev);
+            else  // -f_ext
+              subtract_load<X, F, C>(x[std::size_t(g)].f, x[std::size_t(g)].n, c, ev);
           }
         }(),
         ...);
@@ -180,15 +173,8 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
       }
     }
   });
-  std::array<vec, nf> aw, av;  // spatial accelerations
-  aw[0] = zero, av[0] = zero;
-  [&]<class... X>(list<X...>) {
-    (
-        [&] {
-          if constexpr (is_gravity<X>) av[0] = av[0] - eval_vector<false>(X::vector, ev);
-        }(),
-        ...);
-  }(typename Sys::items{});
+  std::array<vec, nf> aw, av;                                         // spatial accelerations
+  aw[0] = zero, av[0] = base_acceleration<Sys, frame_at<JF, 0>>(ev);  // -g
   static_for<nf - 1>([&](auto i) {
     constexpr std::size_t g = i + 1, p = std::size_t(t.parent[g]);
     constexpr int r = t.speed[g];

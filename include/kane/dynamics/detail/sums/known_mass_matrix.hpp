@@ -17,9 +17,9 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
 #include "kane/dynamics/bodies.hpp"
-#include "kane/dynamics/columns.hpp"
-#include "kane/dynamics/fixed_vectors.hpp"
-#include "kane/dynamics/terms.hpp"
+#include "kane/dynamics/detail/sums/columns.hpp"
+#include "kane/dynamics/detail/sums/terms.hpp"
+#include "kane/dynamics/detail/tree/fixed_vectors.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

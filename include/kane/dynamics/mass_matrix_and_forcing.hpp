@@ -16,12 +16,13 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/invert.hpp"
 #include "kane/dynamics/bodies.hpp"
-#include "kane/dynamics/crba.hpp"
-#include "kane/dynamics/joint_form.hpp"
-#include "kane/dynamics/rnea.hpp"
-#include "kane/dynamics/sums.hpp"
-#include "kane/dynamics/system_rules.hpp"
-#include "kane/dynamics/terms.hpp"
+#include "kane/dynamics/detail/method.hpp"
+#include "kane/dynamics/detail/sums/sums.hpp"
+#include "kane/dynamics/detail/sums/terms.hpp"
+#include "kane/dynamics/detail/system_rules.hpp"
+#include "kane/dynamics/detail/tree/crba.hpp"
+#include "kane/dynamics/detail/tree/joint_form.hpp"
+#include "kane/dynamics/detail/tree/rnea.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/memo.hpp"
 #include "kane/evaluation/status.hpp"
@@ -36,15 +37,6 @@ namespace kane {
 // so an evaluator of any level will do (level::pose computes least).
 
 namespace detail {
-template <class Sys, class Ev>
-using joint_form_of = joint_form<Sys, typename Ev::root, speeds_of<Ev>>;
-template <class Sys, class Ev>
-inline constexpr bool recursive_form = [] {
-  if constexpr (admitted<Sys, speeds_of<Ev>>())
-    return joint_form_of<Sys, Ev>::table.local;
-  else
-    return false;
-}();
 // M by composite bodies and f by inward sums (crba.hpp, rnea.hpp), written in place into Out:
 // equations_of_motion, or mass_matrix_only (M alone).
 template <class Sys, class Out, class Ev>

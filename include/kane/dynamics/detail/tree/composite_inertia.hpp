@@ -14,8 +14,8 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/patterned.hpp"
 #include "kane/detail/v3.hpp"
-#include "kane/dynamics/body_frames.hpp"
-#include "kane/dynamics/terms.hpp"
+#include "kane/dynamics/detail/sums/terms.hpp"
+#include "kane/dynamics/detail/tree/body_frames.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -186,6 +186,15 @@ KANE_ALWAYS_INLINE sym3<typename Ev::scalar> body_inertia(const Ev& ev) {
     o = {r(0, 0), r(1, 1), r(2, 2), r(0, 1), r(1, 2), r(2, 0)};
   }
   return o;
+}
+
+// The mass of item X (a particle or a body) at c, of pattern C, added to the composite inertia k.
+template <class X, auto C, class S, class Ev>
+KANE_ALWAYS_INLINE void add_item_mass(composite_inertia<S>& k, const v3<S>& c, const Ev& ev) {
+  if constexpr (is_body<X>)
+    k.template add_mass<C, true>(S(eval_scalar(X::mass, ev)), c, body_inertia<X>(ev));
+  else
+    k.template add_mass<C, false>(S(eval_scalar(X::mass, ev)), c, {});
 }
 
 template <class JF, std::size_t F>

@@ -20,9 +20,9 @@
 
 #include "kane/detail/inline.hpp"
 #include "kane/detail/v3.hpp"
-#include "kane/dynamics/body_frames.hpp"
-#include "kane/dynamics/composite_inertia.hpp"
-#include "kane/dynamics/terms.hpp"
+#include "kane/dynamics/detail/sums/terms.hpp"
+#include "kane/dynamics/detail/tree/body_frames.hpp"
+#include "kane/dynamics/detail/tree/composite_inertia.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -143,11 +143,7 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
               constexpr int p = t.item_point[I];
               const vec at = bf.template local<p, f>();
               constexpr auto C = body_frames<JF, Ev>::local_pattern(p, f);
-              if constexpr (is_body<X>)
-                c[std::size_t(f)].template add_mass<C, true>(S(eval_scalar(X::mass, ev)), at,
-                                                             body_inertia<X>(ev));
-              else
-                c[std::size_t(f)].template add_mass<C, false>(S(eval_scalar(X::mass, ev)), at, {});
+              add_item_mass<X, C>(c[std::size_t(f)], at, ev);
             }
           }(),
           ...);

@@ -1,0 +1,39 @@
+// The method of the dynamics for a system and an evaluator, chosen in one place: the recursive
+// passes for a system of joint form (tree/joint_form.hpp), Kane's sums otherwise; M as a table of
+// numbers where the sums know it at compile time (sums/known_mass_matrix.hpp); articulated bodies
+// (tree/aba.hpp) for u' above articulated_above speeds.
+#pragma once
+
+#include <cstddef>
+
+#include "kane/dynamics/detail/sums/known_mass_matrix.hpp"
+#include "kane/dynamics/detail/system_rules.hpp"
+#include "kane/dynamics/detail/tree/joint_form.hpp"
+#include "kane/evaluation/tables.hpp"
+
+namespace kane::detail {
+
+template <class Sys, class Ev>
+using joint_form_of = joint_form<Sys, typename Ev::root, speeds_of<Ev>>;
+// Sys is of joint form with the evaluator's speeds: the recursive passes
+template <class Sys, class Ev>
+inline constexpr bool recursive_form = [] {
+  if constexpr (admitted<Sys, speeds_of<Ev>>())
+    return joint_form_of<Sys, Ev>::table.local;
+  else
+    return false;
+}();
+// Above this many speeds u' of numbers comes from articulated bodies (aba.hpp), below (and for
+// jets) from M and a Cholesky factorization: the crossing of the two on a spatial chain with full
+// inertias (benchmarks/chain_dynamics; the performance page gives the figures).
+inline constexpr std::size_t articulated_above = 20;
+// M of Kane's sums is a table of numbers (known_mass_matrix.hpp)
+template <class Sys, class Ev>
+constexpr bool known_masses() {
+  if constexpr (!admitted<Sys, speeds_of<Ev>>() || recursive_form<Sys, Ev>)
+    return false;
+  else
+    return known_mass_matrix<Sys, typename Ev::root, speeds_of<Ev>>.known;
+}
+
+}  // namespace kane::detail

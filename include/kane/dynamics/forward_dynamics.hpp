@@ -1,0 +1,67 @@
+// Forward dynamics at the evaluator's state: u' = M^-1 f with the status of the evaluator, or
+// singular (M not positive definite), or not_finite.
+//
+//   kane::forward_dynamics<Sys>(ev)  {ud, status}
+//
+// Above articulated_above speeds of a system of joint form, u' comes from articulated bodies
+// (tree/aba.hpp); where Kane's sums know M at compile time, from M^-1 as a table of numbers;
+// otherwise from M and f and a fixed-size Cholesky factorization. When the status is not ok, u'
+// is NaN.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+
+#include <Eigen/Core>
+
+#include "kane/detail/inline.hpp"
+#include "kane/dynamics/detail/method.hpp"
+#include "kane/dynamics/detail/tree/aba.hpp"
+#include "kane/dynamics/mass_matrix_and_forcing.hpp"
+#include "kane/dynamics/results.hpp"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
+namespace kane {
+
+namespace detail {
+// u' = M^-1 f; RestRates: the state's u' is 0 (as in motion.hpp).
+template <class Sys, bool RestRates, class Ev>
+forward_result<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
+  using S = typename Ev::scalar;
+  constexpr std::size_t n = Ev::nu;
+  if constexpr (recursive_form<Sys, Ev> && (n > articulated_above) && std::is_floating_point_v<S>) {
+    static_assert(system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
+    using JF = joint_form_of<Sys, Ev>;
+    Eigen::Matrix<S, int(n), 1> ud;
+    const body_frames<JF, Ev> bf(ev);
+    solve_status status = ev.status();
+    if (!articulated_accelerations<JF, Sys>(bf, ev, ud) && status == solve_status::ok)
+      status = solve_status::singular;
+    status = finished(ud, status);
+    return {ud, status};
+  } else if constexpr (known_masses<Sys, Ev>()) {
+    constexpr auto inverse =
+        known_inverse<Sys, typename Ev::root, speeds_of<Ev>>;  // M^-1, a table of numbers
+    if constexpr (!inverse.known)
+      return speed_derivatives_at(mass_matrix_and_forcing_at<Sys, RestRates>(ev));  // singular
+    else {
+      const auto e = equations_along<Sys, RestRates, true, false>(ev, all_speeds<n>{});
+      Eigen::Matrix<S, int(n), 1> ud = times_known<inverse>(e.f);
+      const solve_status status = finished(ud, e.status);
+      return {ud, status};
+    }
+  } else
+    return speed_derivatives_at(mass_matrix_and_forcing_at<Sys, RestRates>(ev));
+}
+}  // namespace detail
+
+// u' = M^-1 f at the evaluator's state, with its status
+template <class Sys, Evaluator Ev>
+forward_result<typename Ev::scalar, Ev::nu> forward_dynamics(const Ev& ev) {
+  return detail::flat<typename Ev::scalar>([&] { return detail::forward_at<Sys, false>(ev); });
+}
+
+}  // namespace kane
+#pragma GCC diagnostic pop
