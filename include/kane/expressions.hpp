@@ -4,6 +4,5 @@
 
 #include "kane/expressions/derived_products.hpp"
 #include "kane/expressions/direction_cosines.hpp"
-#include "kane/expressions/expr.hpp"
-#include "kane/expressions/functions.hpp"
 #include "kane/expressions/vector.hpp"
+#include "kane/scalars.hpp"  // scalar expressions

@@ -2,11 +2,15 @@
 // each including only the ones above it:
 #pragma once
 
-// frames, coordinates, components, direction cosines
 #include "kane/detail/frame_check.hpp"  // first: a broken rule's error names it in its first lines
+
+// coordinates, speeds, parameters, inputs and their scalar expressions
+#include "kane/scalars.hpp"
+
+// frames, components, direction cosines
 #include "kane/frames.hpp"
 
-// scalar and vector expressions
+// vector expressions
 #include "kane/expressions.hpp"
 
 // derivatives, angular velocities, points

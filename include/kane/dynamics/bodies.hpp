@@ -21,11 +21,11 @@
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/dynamics/loads.hpp"
-#include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/edges.hpp"
 #include "kane/kinematics/point.hpp"
+#include "kane/scalars/expr.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

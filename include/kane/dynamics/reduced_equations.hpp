@@ -1,6 +1,6 @@
 // Kane's equations of a nonholonomic system for its p independent
 // speeds, summed along the nonholonomic partial velocities v~ = v T
-// (equations.hpp's sums with the columns of T): no n x n M is formed. Also the n
+// (Kane's sums, sums.hpp, with the columns of T): no n x n M is formed. Also the n
 // equations with their constraint rows, and F~, F~* along v~.
 #pragma once
 
@@ -172,8 +172,8 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
 
 // The n equations of a nonholonomic system with its constraint rows, M u' = f in speed order (SymPy's
 // KanesMethod.mass_matrix and forcing): the row of an independent speed u_r is Kane's equation along
-// v~_r, (T^T M)_r u' = (T^T f)_r, with M, f the equations of all n speeds (equations.hpp); the row of
-// the j-th dependent speed is the j-th constraint differentiated, C_j u' = -(C' u + c0')_j, with C the
+// v~_r, (T^T M)_r u' = (T^T f)_r, with M, f the equations of all n speeds (mass_matrix_and_forcing.hpp); the
+// row of the j-th dependent speed is the j-th constraint differentiated, C_j u' = -(C' u + c0')_j, with C the
 // constraints' Jacobian by u as written. status: the equations' or the solution's.
 template <class Sys, class NH, Evaluator Ev, class Sol>
 equations_of_motion<typename Ev::scalar, NH::n> constrained_mass_matrix_and_forcing(const Ev& ev,

@@ -11,10 +11,10 @@
 
 #include "kane/detail/list.hpp"
 #include "kane/dynamics/bodies.hpp"
-#include "kane/expressions/expr.hpp"
-#include "kane/expressions/functions.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/point.hpp"
+#include "kane/scalars/expr.hpp"
+#include "kane/scalars/functions.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

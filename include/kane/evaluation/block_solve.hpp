@@ -32,7 +32,7 @@
 #include "kane/detail/list.hpp"
 #include "kane/detail/structure.hpp"
 #include "kane/evaluation/status.hpp"
-#include "kane/frames/scalar.hpp"
+#include "kane/scalars/scalar.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

@@ -9,11 +9,11 @@
 
 #include "kane/detail/patterned.hpp"
 #include "kane/expressions/direction_cosines.hpp"
-#include "kane/expressions/expr.hpp"
 #include "kane/frames/axis.hpp"
-#include "kane/frames/coordinate.hpp"
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/edges.hpp"
+#include "kane/scalars/coordinate.hpp"
+#include "kane/scalars/expr.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

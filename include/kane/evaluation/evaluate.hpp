@@ -11,10 +11,10 @@
 
 #include "kane/detail/tree.hpp"
 #include "kane/detail/v3.hpp"
-#include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/frames/vec.hpp"
 #include "kane/kinematics/derivative.hpp"
+#include "kane/scalars/expr.hpp"
 #include "kane/speeds/kinematic_weights.hpp"
 
 #pragma GCC diagnostic push

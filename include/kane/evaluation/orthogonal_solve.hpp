@@ -13,10 +13,10 @@
 #include "kane/detail/structure.hpp"
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/status.hpp"
-#include "kane/expressions/expr.hpp"
-#include "kane/frames/coordinate.hpp"
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/edges.hpp"
+#include "kane/scalars/coordinate.hpp"
+#include "kane/scalars/expr.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

@@ -9,10 +9,10 @@
 #include <utility>
 
 #include "kane/detail/list.hpp"
-#include "kane/frames/coordinate.hpp"
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative_traits.hpp"
 #include "kane/kinematics/edges.hpp"
+#include "kane/scalars/coordinate.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

@@ -9,8 +9,8 @@
 #include <utility>
 
 #include "kane/expressions/direction_cosines.hpp"
-#include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
+#include "kane/scalars/expr.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

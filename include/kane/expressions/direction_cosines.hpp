@@ -7,9 +7,9 @@
 
 #include <type_traits>
 
-#include "kane/expressions/expr.hpp"
-#include "kane/expressions/functions.hpp"
 #include "kane/frames/axis.hpp"
+#include "kane/scalars/expr.hpp"
+#include "kane/scalars/functions.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

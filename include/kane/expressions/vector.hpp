@@ -10,10 +10,10 @@
 
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/tree.hpp"
-#include "kane/expressions/expr.hpp"
-#include "kane/expressions/functions.hpp"
 #include "kane/expressions/vector_rules.hpp"
 #include "kane/frames/frame.hpp"
+#include "kane/scalars/expr.hpp"
+#include "kane/scalars/functions.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

@@ -5,7 +5,7 @@
 
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/tree.hpp"
-#include "kane/expressions/expr.hpp"
+#include "kane/scalars/expr.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

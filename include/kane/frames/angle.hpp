@@ -14,9 +14,9 @@
 #include <cstddef>
 #include <type_traits>
 
-#include "kane/expressions/expr.hpp"
-#include "kane/expressions/functions.hpp"
-#include "kane/frames/coordinate.hpp"
+#include "kane/scalars/coordinate.hpp"
+#include "kane/scalars/expr.hpp"
+#include "kane/scalars/functions.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

@@ -18,7 +18,7 @@
 #include "kane/detail/list.hpp"
 #include "kane/frames/angle.hpp"
 #include "kane/frames/axis.hpp"
-#include "kane/frames/coordinate.hpp"
+#include "kane/scalars/coordinate.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

@@ -4,9 +4,9 @@
 #include <array>
 #include <cstddef>
 
-#include "kane/frames/coordinate.hpp"
-#include "kane/frames/scalar.hpp"
 #include "kane/fwd.hpp"
+#include "kane/scalars/coordinate.hpp"
+#include "kane/scalars/scalar.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

@@ -9,8 +9,8 @@
 
 #include "kane/detail/frame_check.hpp"
 #include "kane/frames/frame.hpp"
-#include "kane/frames/scalar.hpp"
 #include "kane/fwd.hpp"
+#include "kane/scalars/scalar.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

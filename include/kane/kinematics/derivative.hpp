@@ -16,10 +16,10 @@
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/expressions/derived_products.hpp"
-#include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative_traits.hpp"
+#include "kane/scalars/expr.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

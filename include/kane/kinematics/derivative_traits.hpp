@@ -12,11 +12,11 @@
 
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/tree.hpp"
-#include "kane/expressions/expr.hpp"
-#include "kane/expressions/functions.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/edges.hpp"
+#include "kane/scalars/expr.hpp"
+#include "kane/scalars/functions.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

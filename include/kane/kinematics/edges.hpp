@@ -12,9 +12,9 @@
 
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/list.hpp"
-#include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/frames/axis.hpp"
+#include "kane/scalars/expr.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

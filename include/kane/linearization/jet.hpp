@@ -16,7 +16,7 @@
 #include <Eigen/Core>
 
 #include "kane/detail/invert.hpp"
-#include "kane/frames/scalar.hpp"
+#include "kane/scalars/scalar.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

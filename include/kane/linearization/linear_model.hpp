@@ -9,7 +9,7 @@
 #include <Eigen/Core>
 
 #include "kane/evaluation/status.hpp"
-#include "kane/frames/coordinate.hpp"
+#include "kane/scalars/coordinate.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

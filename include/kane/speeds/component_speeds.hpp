@@ -11,10 +11,10 @@
 #include <utility>
 
 #include "kane/detail/tree.hpp"
-#include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/edges.hpp"
+#include "kane/scalars/expr.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

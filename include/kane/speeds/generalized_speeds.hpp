@@ -18,11 +18,11 @@
 
 #include "kane/detail/structure.hpp"
 #include "kane/expressions/derived_products.hpp"
-#include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/edges.hpp"
+#include "kane/scalars/expr.hpp"
 #include "kane/speeds/component_speeds.hpp"
 
 #pragma GCC diagnostic push

@@ -14,11 +14,11 @@
 #include <utility>
 
 #include "kane/detail/frame_check.hpp"
-#include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/edges.hpp"
+#include "kane/scalars/expr.hpp"
 #include "kane/speeds/kinematic_weights.hpp"
 
 #pragma GCC diagnostic push

@@ -14,7 +14,7 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
 #include "kane/evaluation/status.hpp"
-#include "kane/frames/coordinate.hpp"
+#include "kane/scalars/coordinate.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

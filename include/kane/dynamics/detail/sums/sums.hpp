@@ -1,4 +1,4 @@
-// Kane's sums (equations.hpp for the entry points): M and f over every item's partial
+// Kane's sums (mass_matrix_and_forcing.hpp for the entry points): M and f over every item's partial
 // velocities, in the root frame N of the evaluator's tree:
 //   M_rs = sum m v_r . v_s + w_r . I . w_s
 //   f_r  = F_r - sum m v_r . a_0 + w_r . (I . alpha_0 + w x I . w)

@@ -1,4 +1,4 @@
-// The terms of Kane's sums (equations.hpp) for numbers: what the sums evaluate of
+// The terms of Kane's sums (sums.hpp) for numbers: what the sums evaluate of
 // each item of a system (partial velocities, accelerations, masses, loads: the
 // group whose common subexpressions evaluation/memo.hpp recalls), and the inertia
 // dyadic in the root's components.

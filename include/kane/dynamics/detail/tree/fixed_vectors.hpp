@@ -11,9 +11,9 @@
 #include "kane/detail/patterned.hpp"
 #include "kane/detail/v3.hpp"
 #include "kane/evaluation/evaluate.hpp"
-#include "kane/expressions/expr.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/derivative.hpp"
+#include "kane/scalars/expr.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

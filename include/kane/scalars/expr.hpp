@@ -15,7 +15,7 @@
 #include <numeric>
 #include <type_traits>
 
-#include "kane/frames/coordinate.hpp"
+#include "kane/scalars/coordinate.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

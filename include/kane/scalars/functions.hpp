@@ -7,7 +7,7 @@
 #include <type_traits>
 
 #include "kane/detail/dual.hpp"
-#include "kane/expressions/expr.hpp"
+#include "kane/scalars/expr.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
