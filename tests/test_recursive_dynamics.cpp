@@ -256,8 +256,8 @@ TEST_CASE(
     tree::evaluator ev;
     ev.update(s);
     const auto fast = kane::mass_matrix_and_forcing<tree::system>(ev);
-    const auto sums =
-        kane::detail::equations_along<tree::system, false, true>(ev, kane::detail::all_speeds<4>{});
+    const auto sums = kane::detail::equations_along<tree::system, kane::detail::rates::of_state>(
+        ev, kane::detail::all_speeds<4>{});
     REQUIRE(fast.status == kane::solve_status::ok);
     CHECK((fast.M - sums.M).cwiseAbs().maxCoeff() < 1e-13);
     CHECK((fast.f - sums.f).cwiseAbs().maxCoeff() < 1e-12);

@@ -137,7 +137,7 @@ class constrained_motion
     const auto sol = detail::update_at_independent_speeds<NH, detail::every_read<Ev>>(
         ev, s_, x);  // the constraints' derivatives read every alpha and q''
     const auto [ud, status] = detail::speed_derivatives_at(
-        detail::reduced_mass_matrix_and_forcing_at<Sys, NH, true>(ev, sol).reduced);
+        detail::reduced_mass_matrix_and_forcing_at<Sys, NH, detail::rates::at_rest>(ev, sol).reduced);
     status_ = status;
     detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status == solve_status::ok);
     for (std::size_t k = 0; k < p; ++k) dxdt[nq + k] = ud(Eigen::Index(k));

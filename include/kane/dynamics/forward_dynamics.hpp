@@ -27,7 +27,7 @@ namespace kane {
 
 namespace detail {
 // u' = M^-1 f; RestRates: the state's u' is 0 (as in motion.hpp).
-template <class Sys, bool RestRates, class Ev>
+template <class Sys, rates Rates, class Ev>
 forward_result<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
   using S = typename Ev::scalar;
   constexpr std::size_t n = Ev::nu;
@@ -45,22 +45,23 @@ forward_result<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
     constexpr auto inverse =
         known_inverse<Sys, typename Ev::root, speeds_of<Ev>>;  // M^-1, a table of numbers
     if constexpr (!inverse.known)
-      return speed_derivatives_at(mass_matrix_and_forcing_at<Sys, RestRates>(ev));  // singular
+      return speed_derivatives_at(mass_matrix_and_forcing_at<Sys, Rates>(ev));  // singular
     else {
-      const auto e = equations_along<Sys, RestRates, true, false>(ev, all_speeds<n>{});
+      const auto e = equations_along<Sys, Rates, parts::forcing>(ev, all_speeds<n>{});
       Eigen::Matrix<S, int(n), 1> ud = times_known<inverse>(e.f);
       const solve_status status = finished(ud, e.status);
       return {ud, status};
     }
   } else
-    return speed_derivatives_at(mass_matrix_and_forcing_at<Sys, RestRates>(ev));
+    return speed_derivatives_at(mass_matrix_and_forcing_at<Sys, Rates>(ev));
 }
 }  // namespace detail
 
 // u' = M^-1 f at the evaluator's state, with its status
 template <class Sys, Evaluator Ev>
 forward_result<typename Ev::scalar, Ev::nu> forward_dynamics(const Ev& ev) {
-  return detail::flat<typename Ev::scalar>([&] { return detail::forward_at<Sys, false>(ev); });
+  return detail::flat<typename Ev::scalar>(
+      [&] { return detail::forward_at<Sys, detail::rates::of_state>(ev); });
 }
 
 }  // namespace kane

@@ -27,8 +27,9 @@ namespace kane {
 
 namespace detail {
 // tau at the state's u' (Rest false) or at u' = 0 (Rest true); -tau with Negated; as Out.
-template <class Sys, bool Rest, bool Negated, class Out, class Ev>
+template <class Sys, rates Rates, sign Sign, class Out, class Ev>
 Out inverse_at(const Ev& ev) {
+  constexpr bool Rest = Rates == rates::at_rest, Negated = Sign == sign::minus;
   using S = typename Ev::scalar;
   constexpr std::size_t n = Ev::nu;
   Eigen::Matrix<S, int(n), 1> tau;
@@ -36,9 +37,9 @@ Out inverse_at(const Ev& ev) {
     static_assert(system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
     using JF = joint_form_of<Sys, Ev>;
     const body_frames<JF, Ev> bf(ev);
-    joint_forces<Rest, JF, Sys, Negated>(bf, ev, tau);
+    joint_forces<Rates, JF, Sys, Sign>(bf, ev, tau);
   } else {
-    const auto e = mass_matrix_and_forcing_at<Sys, false>(ev);
+    const auto e = mass_matrix_and_forcing_at<Sys, rates::of_state>(ev);
     if constexpr (Rest && Negated)
       tau = e.f;
     else if constexpr (Rest)
@@ -55,15 +56,19 @@ Out inverse_at(const Ev& ev) {
 // tau = M u' - f at the evaluator's state, with its status
 template <class Sys, Evaluator Ev>
 inverse_result<typename Ev::scalar, Ev::nu> inverse_dynamics(const Ev& ev) {
-  return detail::flat<typename Ev::scalar>(
-      [&] { return detail::inverse_at<Sys, false, false, inverse_result<typename Ev::scalar, Ev::nu>>(ev); });
+  return detail::flat<typename Ev::scalar>([&] {
+    return detail::inverse_at<Sys, detail::rates::of_state, detail::sign::plus,
+                              inverse_result<typename Ev::scalar, Ev::nu>>(ev);
+  });
 }
 
 // f alone (tau at u' = 0 is -f), with its status
 template <class Sys, Evaluator Ev>
 forcing_result<typename Ev::scalar, Ev::nu> forcing(const Ev& ev) {
-  return detail::flat<typename Ev::scalar>(
-      [&] { return detail::inverse_at<Sys, true, true, forcing_result<typename Ev::scalar, Ev::nu>>(ev); });
+  return detail::flat<typename Ev::scalar>([&] {
+    return detail::inverse_at<Sys, detail::rates::at_rest, detail::sign::minus,
+                              forcing_result<typename Ev::scalar, Ev::nu>>(ev);
+  });
 }
 
 }  // namespace kane

@@ -49,20 +49,20 @@ Out recursive_equations(const Ev& ev) {
   composite_mass_matrix<JF, Sys>(bf, ev, out.M);
   bool finite = finite_diagonal(out.M);
   if constexpr (requires { out.f; }) {
-    joint_forces<true, JF, Sys, true>(bf, ev, out.f);
+    joint_forces<rates::at_rest, JF, Sys, sign::minus>(bf, ev, out.f);
     finite = finite && all_finite_matrix(out.f);
   }
   if (out.status == solve_status::ok && !finite) out.status = solve_status::not_finite;
   return out;
 }
-template <class Sys, bool RestRates, class Ev>
+template <class Sys, rates Rates, class Ev>
 equations_of_motion<typename Ev::scalar, Ev::nu> mass_matrix_and_forcing_at(const Ev& ev) {
   if constexpr (!admitted<Sys, speeds_of<Ev>>())
     return {};
   else if constexpr (recursive_form<Sys, Ev>)
     return recursive_equations<Sys, equations_of_motion<typename Ev::scalar, Ev::nu>>(ev);
   else
-    return equations_along<Sys, RestRates, true>(ev, all_speeds<Ev::nu>{});
+    return equations_along<Sys, Rates>(ev, all_speeds<Ev::nu>{});
 }
 }  // namespace detail
 
@@ -70,7 +70,7 @@ equations_of_motion<typename Ev::scalar, Ev::nu> mass_matrix_and_forcing_at(cons
 template <class Sys, Evaluator Ev>
 equations_of_motion<typename Ev::scalar, Ev::nu> mass_matrix_and_forcing(const Ev& ev) {
   return detail::flat<typename Ev::scalar>(
-      [&] { return detail::mass_matrix_and_forcing_at<Sys, false>(ev); });
+      [&] { return detail::mass_matrix_and_forcing_at<Sys, detail::rates::of_state>(ev); });
 }
 
 // M alone of the system Sys at the evaluator's state (any level)
@@ -84,7 +84,8 @@ mass_matrix_only<typename Ev::scalar, Ev::nu> mass_matrix(const Ev& ev) {
     else if constexpr (detail::recursive_form<Sys, Ev>)
       return detail::recursive_equations<Sys, out>(ev);
     else {
-      const auto e = detail::equations_along<Sys, true, false>(ev, detail::all_speeds<Ev::nu>{});
+      const auto e = detail::equations_along<Sys, detail::rates::at_rest, detail::parts::mass_matrix>(
+          ev, detail::all_speeds<Ev::nu>{});
       return {e.M, e.status};
     }
   });

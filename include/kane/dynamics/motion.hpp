@@ -115,7 +115,7 @@ class motion
       ev.template update_for<detail::every_read<Ev>>(s_);
     else  // Kane's sums read a few angular accelerations and q'' (evaluation/reads.hpp)
       ev.template update_for<equation_reads>(s_);
-    const auto [ud, status] = detail::forward_at<Sys, true>(ev);
+    const auto [ud, status] = detail::forward_at<Sys, detail::rates::at_rest>(ev);
     status_ = status;
     detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status == solve_status::ok);
     for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = ud(Eigen::Index(i));

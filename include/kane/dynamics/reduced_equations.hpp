@@ -108,8 +108,8 @@ Eigen::Matrix<S, int(NH::n), int(NH::p)> speeds_of_independents(
   for (std::size_t j = 0; j < NH::m; ++j) t.row(Eigen::Index(NH::dependents[j] - 1)) = a.row(Eigen::Index(j));
   return t;
 }
-// C' u + c0' = dt(c) - C u' of the constraints (RestRates: the evaluator's u' are zero).
-template <class NH, bool RestRates, class Ev, class Sol>
+// C' u + c0' = dt(c) - C u' of the constraints (rates::at_rest: the evaluator's u' are zero).
+template <class NH, rates Rates, class Ev, class Sol>
 Eigen::Matrix<typename Ev::scalar, int(NH::m), 1> constraint_rates_at_rest(const Ev& ev, const Sol& sol) {
   using S = typename Ev::scalar;
   constexpr std::size_t m = NH::m;
@@ -123,18 +123,18 @@ Eigen::Matrix<typename Ev::scalar, int(NH::m), 1> constraint_rates_at_rest(const
     });
   }
   (std::make_index_sequence<m>{});
-  if constexpr (!RestRates) rest -= sol.C * detail::speed_rates(ev);
+  if constexpr (Rates == rates::of_state) rest -= sol.C * detail::speed_rates(ev);
   return rest;
 }
 // b_dep of u_dep' = A u_ind' + b_dep: -C_dep^-1 (C' u + c0'), with the factors of C_dep that
 // solve_constraints found.
-template <class NH, bool RestRates, class Ev, class Sol>
+template <class NH, rates Rates, class Ev, class Sol>
 solve_status dependent_rates_at_rest(const Ev& ev, const Sol& sol,
                                      std::array<typename Ev::scalar, NH::m>& b_dep) {
   using S = typename Ev::scalar;
   constexpr std::size_t m = NH::m;
   static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
-  const Eigen::Matrix<S, int(m), 1> rest = constraint_rates_at_rest<NH, RestRates>(ev, sol);
+  const Eigen::Matrix<S, int(m), 1> rest = constraint_rates_at_rest<NH, Rates>(ev, sol);
   using Dep = detail::dense_right_side<detail::constraint_system<NH>>;
   detail::table<S, m, 1> right, bd;
   for (std::size_t k = 0; k < m; ++k) right[k][0] = rest(Eigen::Index(k));
@@ -143,7 +143,7 @@ solve_status dependent_rates_at_rest(const Ev& ev, const Sol& sol,
   for (std::size_t j = 0; j < m; ++j) b_dep[j] = -bd[j][0];
   return solved;
 }
-template <class Sys, class NH, bool RestRates, class Ev, class Sol>
+template <class Sys, class NH, rates Rates, class Ev, class Sol>
 reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_forcing_at(const Ev& ev,
                                                                                         const Sol& sol) {
   using S = typename Ev::scalar;
@@ -151,9 +151,9 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
   out.T = speeds_of_independents<NH>(sol.A);
   out.b.setZero();
   std::array<S, NH::m> b_dep;
-  const solve_status solved = dependent_rates_at_rest<NH, RestRates>(ev, sol, b_dep);
+  const solve_status solved = dependent_rates_at_rest<NH, Rates>(ev, sol, b_dep);
   for (std::size_t j = 0; j < NH::m; ++j) out.b(Eigen::Index(NH::dependents[j] - 1)) = b_dep[j];
-  out.reduced = equations_along<Sys, RestRates, true>(ev, independent_speeds<NH, S>{sol.A, b_dep});
+  out.reduced = equations_along<Sys, Rates>(ev, independent_speeds<NH, S>{sol.A, b_dep});
   if (out.reduced.status == solve_status::ok) out.reduced.status = sol.status;
   if (out.reduced.status == solve_status::ok) out.reduced.status = solved;
   return out;
@@ -166,8 +166,9 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
   if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
     return {};
   else
-    return detail::flat<typename Ev::scalar>(
-        [&] { return detail::reduced_mass_matrix_and_forcing_at<Sys, NH, false>(ev, sol); });
+    return detail::flat<typename Ev::scalar>([&] {
+      return detail::reduced_mass_matrix_and_forcing_at<Sys, NH, detail::rates::of_state>(ev, sol);
+    });
 }
 
 // The n equations of a nonholonomic system with its constraint rows, M u' = f in speed order (SymPy's
@@ -186,7 +187,8 @@ equations_of_motion<typename Ev::scalar, NH::n> constrained_mass_matrix_and_forc
   } else {
     const auto e = mass_matrix_and_forcing<Sys>(ev);
     const Eigen::Matrix<S, int(n), int(p)> t = detail::speeds_of_independents<NH>(sol.A);
-    const Eigen::Matrix<S, int(NH::m), 1> rest = detail::constraint_rates_at_rest<NH, false>(ev, sol);
+    const Eigen::Matrix<S, int(NH::m), 1> rest =
+        detail::constraint_rates_at_rest<NH, detail::rates::of_state>(ev, sol);
     equations_of_motion<S, n> out{Eigen::Matrix<S, int(n), int(n)>::Zero(), Eigen::Matrix<S, int(n), 1>(),
                                   e.status};
     for (std::size_t k = 0; k < p; ++k) {

@@ -255,7 +255,8 @@ detail::equations_of<NH, Ev, H, In> linearize_equations(const typename Ev::state
   js.ud = {};
   typename detail::rebind_evaluator<Ev, J>::type ev;
   const auto sol = detail::update_at_independent_speeds<NH>(ev, js, x);
-  const auto eq = detail::reduced_mass_matrix_and_forcing_at<Sys, NH, true>(ev, sol).reduced;
+  const auto eq =
+      detail::reduced_mass_matrix_and_forcing_at<Sys, NH, detail::rates::at_rest>(ev, sol).reduced;
   // u_ind' at s: M~ u' = f~ on the numbers
   equations_of_motion<S, p> at{{}, {}, eq.status};
   for (std::size_t r = 0; r < p; ++r) {

@@ -22,6 +22,7 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/invert.hpp"
 #include "kane/dynamics/bodies.hpp"
+#include "kane/dynamics/detail/choices.hpp"
 #include "kane/dynamics/detail/sums/columns.hpp"
 #include "kane/dynamics/detail/sums/known_mass_matrix.hpp"
 #include "kane/dynamics/detail/sums/terms.hpp"
@@ -224,17 +225,19 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
         ...);
   }(typename Sys::items{});
 }
-// M and f along the columns Cols; RestRates: the caller's state has u' = 0 (the
+// M and f along the columns Cols. rates::at_rest: the caller's state has u' = 0 (the
 // right-hand sides of motion.hpp), so the bias accelerations are the evaluator's
-// (a - v u' would multiply by zeros); without Forcing, M alone (f stays 0: no
-// velocity, acceleration or load is read). WithM false: where M is known, f alone (forcing_only),
+// (a - v u' would multiply by zeros). parts::mass_matrix: M alone (f stays 0: no
+// velocity, acceleration or load is read). parts::forcing: where M is known, f alone (forcing_only),
 // not checked (the caller checks u' = M^-1 f).
-template <class Sys, bool RestRates, bool Forcing, bool WithM = true, class Ev, class Cols>
+template <class Sys, rates Rates, parts Parts = parts::both, class Ev, class Cols>
 auto equations_along(const Ev& ev, const Cols& cols) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using Sp = detail::speeds_of<Ev>;
   constexpr std::size_t n = Cols::n;
+  constexpr bool RestRates = Rates == rates::at_rest, Forcing = Parts != parts::mass_matrix,
+                 WithM = Parts != parts::forcing;
   static_assert(detail::system_checked<Sys, Sp>(typename Sys::items{}));
   constexpr bool known = [] {
     if constexpr (std::is_same_v<Cols, all_speeds<n>>)

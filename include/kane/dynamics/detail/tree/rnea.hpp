@@ -19,6 +19,7 @@
 
 #include "kane/detail/inline.hpp"
 #include "kane/detail/v3.hpp"
+#include "kane/dynamics/detail/choices.hpp"
 #include "kane/dynamics/detail/tree/body_frames.hpp"
 #include "kane/dynamics/detail/tree/crba.hpp"
 
@@ -87,8 +88,9 @@ KANE_ALWAYS_INLINE void subtract_load(V& f, V& n, const V& c, const Ev& ev) {
 }
 
 // tau = M u' - f of the joint-form system Sys (u' of the state, or 0 with Rest); -tau with Negated.
-template <bool Rest, class JF, class Sys, bool Negated = false, class Ev, class Out>
+template <rates Rates, class JF, class Sys, sign Sign = sign::plus, class Ev, class Out>
 KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev, Out& tau) {
+  constexpr bool Rest = Rates == rates::at_rest, Negated = Sign == sign::minus;
   using S = typename Ev::scalar;
   using vec = v3<S>;
   static constexpr auto& t = JF::table;
