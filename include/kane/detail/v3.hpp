@@ -3,6 +3,8 @@
 // expression trees went through the stack (store-forwarding stalls).
 #pragma once
 
+#include <array>
+
 #include <cstddef>
 #include <limits>
 #include <tuple>
@@ -30,6 +32,12 @@ template <class A>
 KANE_ALWAYS_INLINE constexpr void fill_nan(A& a) {
   fill_nan(a, std::make_index_sequence<std::tuple_size_v<A>>{});
 }
+
+// A symmetric 3 x 3 matrix as six numbers: 11 22 33 12 23 31 (kane::inertia's order), and the
+// entry of row j, column k among them.
+template <class S>
+using sym3 = std::array<S, 6>;
+inline constexpr std::size_t sym_index[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
 
 template <class S>
 struct v3 {

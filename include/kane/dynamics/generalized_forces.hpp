@@ -13,6 +13,7 @@
 #include <tuple>
 #include <type_traits>
 
+#include "kane/detail/v3.hpp"
 #include "kane/dynamics/bodies.hpp"
 #include "kane/speeds/partial_velocity.hpp"
 
@@ -21,17 +22,15 @@
 namespace kane {
 
 namespace detail {
-template <std::size_t J, std::size_t K>
-inline constexpr std::size_t component_index = J == K ? J - 1 : (J + K == 3 ? 3 : (J + K == 5 ? 4 : 5));
 // I . x = sum_j f_j sum_k I_jk (f_k . x), I in F's components
 template <class I, class X>
 constexpr auto dyadic_dot(X x) {
   using F = typename I::frame;
   constexpr auto c = I::components;
   const auto row = [&]<std::size_t J>(std::integral_constant<std::size_t, J>) {
-    return (std::get<component_index<J, 1>>(c) * dot(e<F, 1>, x) +
-            std::get<component_index<J, 2>>(c) * dot(e<F, 2>, x) +
-            std::get<component_index<J, 3>>(c) * dot(e<F, 3>, x)) *
+    return (std::get<sym_index[J - 1][0]>(c) * dot(e<F, 1>, x) +
+            std::get<sym_index[J - 1][1]>(c) * dot(e<F, 2>, x) +
+            std::get<sym_index[J - 1][2]>(c) * dot(e<F, 3>, x)) *
            e<F, J>;
   };
   using one = std::integral_constant<std::size_t, 1>;

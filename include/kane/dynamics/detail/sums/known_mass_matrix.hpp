@@ -98,7 +98,7 @@ constexpr void add_known_terms(known_table<Sp::n>& out) {
           return std::array<double, 6>{known_value(std::get<J>(c))...};
         }
         (std::make_index_sequence<6>{});
-        add_products(out, w, [&](std::size_t a, std::size_t b) { return i[inertia_at[a][b]]; });
+        add_products(out, w, [&](std::size_t a, std::size_t b) { return i[sym_index[a][b]]; });
       }
     }
   }

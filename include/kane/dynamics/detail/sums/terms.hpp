@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "kane/detail/list.hpp"
+#include "kane/detail/v3.hpp"
 #include "kane/dynamics/bodies.hpp"
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/evaluate.hpp"
@@ -27,7 +28,6 @@ namespace kane::detail {
 // I in the root's components: C (I)_F C^T, C the columns e_F1, e_F2, e_F3; the
 // components that are zero at compile time skip their products, and the result
 // is symmetric by construction (its upper triangle, mirrored).
-inline constexpr std::size_t inertia_at[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};  // i11 i22 i33 i12 i23 i31
 template <class Cs, std::size_t K>
 constexpr auto inertia_column_rows() {  // the j of I_jk not zero at compile time
   struct rows {
@@ -35,7 +35,7 @@ constexpr auto inertia_column_rows() {  // the j of I_jk not zero at compile tim
     std::size_t n = 0;
   } out;
   [&]<std::size_t... J>(std::index_sequence<J...>) {
-    ((!is_zero_v<std::tuple_element_t<inertia_at[J][K], Cs>> ? void(out.j[out.n++] = J) : void()), ...);
+    ((!is_zero_v<std::tuple_element_t<sym_index[J][K], Cs>> ? void(out.j[out.n++] = J) : void()), ...);
   }
   (std::make_index_sequence<3>{});
   return out;
@@ -47,7 +47,7 @@ Eigen::Matrix<typename Ev::scalar, 3, 3> inertia_in_own(const Ev& ev) {
   using Cs = std::remove_cvref_t<decltype(I::components)>;
   Eigen::Matrix<S, 3, 3> out;
   static_for<9>([&](auto jk) {
-    constexpr std::size_t k = inertia_at[jk / 3][jk % 3];
+    constexpr std::size_t k = sym_index[jk / 3][jk % 3];
     out(Eigen::Index(jk / 3), Eigen::Index(jk % 3)) =
         is_zero_v<std::tuple_element_t<k, Cs>> ? S(0) : S(eval_scalar(std::get<k>(I::components), ev));
   });
@@ -94,7 +94,7 @@ Eigen::Matrix<typename Ev::scalar, 3, 3> inertia_in_root(const Ev& ev) {
   Eigen::Matrix<S, 3, 3> out;
   if constexpr (std::is_void_v<typename I::frame::tree_parent>) {
     static_for<9>(
-        [&](auto jk) { out(Eigen::Index(jk / 3), Eigen::Index(jk % 3)) = v[inertia_at[jk / 3][jk % 3]]; });
+        [&](auto jk) { out(Eigen::Index(jk / 3), Eigen::Index(jk % 3)) = v[sym_index[jk / 3][jk % 3]]; });
   } else {
     const auto c = ev.template axes<typename I::frame>();
     Eigen::Matrix<S, 3, 3> p;  // C I
@@ -103,7 +103,7 @@ Eigen::Matrix<typename Ev::scalar, 3, 3> inertia_in_root(const Ev& ev) {
       constexpr auto rows = inertia_column_rows<Cs, k>();
       const auto term = [&](auto t) {
         constexpr std::size_t j = rows.j[t];
-        return S(c(Eigen::Index(r), Eigen::Index(j)) * v[inertia_at[j][k]]);
+        return S(c(Eigen::Index(r), Eigen::Index(j)) * v[sym_index[j][k]]);
       };
       if constexpr (rows.n == 0) {
         p(Eigen::Index(r), Eigen::Index(k)) = S(0);

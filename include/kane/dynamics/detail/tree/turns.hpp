@@ -21,10 +21,6 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
-// A symmetric 3 x 3 matrix: 11 22 33 12 23 31.
-template <class S>
-using sym3 = std::array<S, 6>;
-inline constexpr std::size_t sym_at[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
 template <class S>
 KANE_ALWAYS_INLINE v3<S> sym_times(const sym3<S>& i, const v3<S>& k) {
   return {i[0] * k.x + i[3] * k.y + i[5] * k.z, i[3] * k.x + i[1] * k.y + i[4] * k.z,
@@ -71,8 +67,8 @@ struct turn {
     return p;
   }
   KANE_ALWAYS_INLINE sym3<S> up(const sym3<S>& i) const {  // E I E^T, through cos 2q and sin 2q
-    constexpr std::size_t bb = sym_at[b][b], dd = sym_at[d][d], bd = sym_at[b][d], ab = sym_at[A][b],
-                          ad = sym_at[A][d];
+    constexpr std::size_t bb = sym_index[b][b], dd = sym_index[d][d], bd = sym_index[b][d],
+                          ab = sym_index[A][b], ad = sym_index[A][d];
     const S c2 = c * c - s * s, s2 = S(2) * c * s, mean = S(0.5) * (i[bb] + i[dd]),
             diff = S(0.5) * (i[bb] - i[dd]);
     sym3<S> o = i;
@@ -119,7 +115,8 @@ struct turn<S, -1> {
       S x = S(0);
       static_for<9>([&](auto jl) {
         constexpr std::size_t j = jl / 3, l = jl % 3;
-        x = x + e(Eigen::Index(r), Eigen::Index(j)) * i[sym_at[j][l]] * e(Eigen::Index(q), Eigen::Index(l));
+        x = x +
+            e(Eigen::Index(r), Eigen::Index(j)) * i[sym_index[j][l]] * e(Eigen::Index(q), Eigen::Index(l));
       });
       o[k] = x;
     });
