@@ -25,7 +25,7 @@
 
 // A building block that must disappear into its caller even where that
 // caller is itself inlined (flatten applies only to a function's own body).
-// Only for leaves and for code whose callees are always-inline too: g++ orders
+// g++ 12: only for leaves and for code whose callees are always-inline too. g++ orders
 // early inlining without the calls an always-inline function makes to other
 // functions, so such a callee may still lack its summary when a flattened entry
 // point reaches it, and be cloned by IPA-SRA before the late flattening, which

@@ -218,7 +218,7 @@ KANE_INLINE_FLATTEN typename Ev::scalar evaluate(const X& x, const Ev& ev) {
 namespace detail {
 // Entry points inline into their caller for evaluators of up to 8 frames; for
 // larger trees each stays one flattened function (one body per entry point
-// keeps g++'s register allocation of a long chain in reach).
+// keeps the register allocation of a long chain in reach: g++ 12).
 template <class Ev>
 inline constexpr bool inlined_entry = Ev::size <= 8;
 

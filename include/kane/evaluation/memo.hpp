@@ -24,8 +24,8 @@ template <class X>
 struct node_key {
   static constexpr char id = 0;
 };
-// Whether addresses of two variables compare in a constant expression (g++ with
-// -fsanitize=null does not fold them): where not, no node is recalled.
+// Whether addresses of two variables compare in a constant expression. g++ 12: with
+// -fsanitize=null it does not fold them; then no node is recalled.
 template <class A>
 inline constexpr bool keys_compare_for = requires {
   typename std::integral_constant<bool, (&node_key<A>::id != &node_key<A*>::id)>;

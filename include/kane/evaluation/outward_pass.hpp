@@ -107,7 +107,7 @@ class outward_pass {
     return x;
   }
   // element by element (a wide copy of values just written narrowly would stall) and unrolled
-  // (after a loop g++ no longer forwards the pass's stores to the reads that follow)
+  // (g++ 12: after a loop it no longer forwards the pass's stores to the reads that follow)
   KANE_ALWAYS_INLINE void store_trig(const trig_type& t) {
     detail::static_for<trig_type::size>([&](auto k) { trig_.s[k] = t.s[k], trig_.c[k] = t.c[k]; });
   }
@@ -148,7 +148,7 @@ class outward_pass {
 
   template <bool Pose, bool Velocity, bool Acceleration, class Reads, class Rates, class... F>
   KANE_ALWAYS_INLINE void pass_over(list<F...>, const trig_type& t, const Rates& rates) {
-    // no lambdas: g++ -O2 left them out of line
+    // g++ 12: no lambdas, which -O2 left out of line
     (edge < Pose, Velocity, Acceleration && Reads::alpha[index<F>()], F,
      Acceleration && !Reads::alpha[index<F>()] > (t, rates), ...);
   }

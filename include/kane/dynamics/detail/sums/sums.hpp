@@ -55,8 +55,8 @@ Eigen::Matrix<typename Ev::scalar, 3, 1> in_frame_of(const X& x, const Ev& ev) {
   const auto r = eval_in<A>(x, ev);
   return {r.x, r.y, r.z};
 }
-// The columns of M that the partial velocities of X reach (a type: g++ 12 merged
-// instantiations of one function template that differed only in an array argument).
+// The columns of M that the partial velocities of X reach, as a type. g++ 12: it merged
+// instantiations of one function template that differed only in an array argument.
 template <class Cols, class Sp, class X>
 struct reached_columns {
   static constexpr auto value = Cols::template nonzero<nonzero_columns<Sp, X>()>();
