@@ -51,15 +51,6 @@ KANE_ALWAYS_INLINE S minus(const S& a, const S& x, const S& b, const S& y) {
     return times<X>(a, x) - times<Y>(b, y);
 }
 
-template <std::size_t I, class S>
-KANE_ALWAYS_INLINE const S& get3(const v3<S>& a) {
-  if constexpr (I == 0)
-    return a.x;
-  else if constexpr (I == 1)
-    return a.y;
-  else
-    return a.z;
-}
 // a b, a and b of patterns A and B
 template <entry A, entry B, class S>
 KANE_ALWAYS_INLINE S product(const S& a, const S& b) {
@@ -95,9 +86,9 @@ KANE_ALWAYS_INLINE S dot_along(const v3<S>& x, const v3<S>& k) {
   if constexpr (first == 3)
     return S(0);
   else {
-    S out = times<K[first]>(get3<first>(x), get3<first>(k));
+    S out = times<K[first]>(comp<first>(x), comp<first>(k));
     static_for<3>([&](auto j) {
-      if constexpr (j > first) out = plus_product<entry::other, K[j]>(out, get3<j>(x), get3<j>(k));
+      if constexpr (j > first) out = plus_product<entry::other, K[j]>(out, comp<j>(x), comp<j>(k));
     });
     return out;
   }

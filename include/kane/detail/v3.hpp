@@ -68,6 +68,27 @@ template <class S>
 KANE_ALWAYS_INLINE constexpr S dot3(const v3<S>& a, const v3<S>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
+// Component I (0, 1, 2) of a: the one accessor of a v3's components.
+template <std::size_t I, class S>
+KANE_ALWAYS_INLINE constexpr S& comp(v3<S>& a) {
+  static_assert(I < 3, "kane: a v3 has components 0, 1, 2");
+  if constexpr (I == 0)
+    return a.x;
+  else if constexpr (I == 1)
+    return a.y;
+  else
+    return a.z;
+}
+template <std::size_t I, class S>
+KANE_ALWAYS_INLINE constexpr const S& comp(const v3<S>& a) {
+  static_assert(I < 3, "kane: a v3 has components 0, 1, 2");
+  if constexpr (I == 0)
+    return a.x;
+  else if constexpr (I == 1)
+    return a.y;
+  else
+    return a.z;
+}
 // The operations with components known to be zero (bit i of Za, Zb: component i of a, b): those
 // terms are not formed, since the optimizer keeps s * 0 and x + 0 (NaN, inf and -0 forbid folding).
 template <unsigned Z, int I, class S>
@@ -75,7 +96,7 @@ KANE_ALWAYS_INLINE constexpr S part(const v3<S>& a) {
   if constexpr (Z >> I & 1u)
     return S(0);
   else
-    return I == 0 ? a.x : I == 1 ? a.y : a.z;
+    return comp<std::size_t(I)>(a);
 }
 template <unsigned Za, unsigned Zb, int I, class S>
 KANE_ALWAYS_INLINE constexpr S sum_part(const v3<S>& a, const v3<S>& b) {

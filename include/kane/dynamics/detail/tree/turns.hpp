@@ -26,10 +26,6 @@ KANE_ALWAYS_INLINE v3<S> sym_times(const sym3<S>& i, const v3<S>& k) {
   return {i[0] * k.x + i[3] * k.y + i[5] * k.z, i[3] * k.x + i[1] * k.y + i[4] * k.z,
           i[5] * k.x + i[4] * k.y + i[2] * k.z};
 }
-template <int I, class S>
-KANE_ALWAYS_INLINE S& component_ref(v3<S>& v) {
-  return I == 0 ? v.x : I == 1 ? v.y : v.z;
-}
 
 // E about the coordinate axis A (0, 1, 2): the axes B = A + 1, C = A + 2 turn.
 template <class S, int A>
@@ -37,13 +33,13 @@ struct turn {
   S c, s;
   static constexpr int b = (A + 1) % 3, d = (A + 2) % 3;
   KANE_ALWAYS_INLINE v3<S> up(v3<S> v) const {  // E v
-    const S x = component_ref<b>(v), y = component_ref<d>(v);
-    component_ref<b>(v) = c * x - s * y, component_ref<d>(v) = s * x + c * y;
+    const S x = comp<std::size_t(b)>(v), y = comp<std::size_t(d)>(v);
+    comp<std::size_t(b)>(v) = c * x - s * y, comp<std::size_t(d)>(v) = s * x + c * y;
     return v;
   }
   KANE_ALWAYS_INLINE v3<S> down(v3<S> v) const {  // E^T v
-    const S x = component_ref<b>(v), y = component_ref<d>(v);
-    component_ref<b>(v) = c * x + s * y, component_ref<d>(v) = c * y - s * x;
+    const S x = comp<std::size_t(b)>(v), y = comp<std::size_t(d)>(v);
+    comp<std::size_t(b)>(v) = c * x + s * y, comp<std::size_t(d)>(v) = c * y - s * x;
     return v;
   }
   template <std::array<entry, 3> P>  // E^T v, v of pattern P
