@@ -68,19 +68,9 @@ template <class S>
 KANE_ALWAYS_INLINE constexpr S dot3(const v3<S>& a, const v3<S>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
-// Component I (0, 1, 2) of a: the one accessor of a v3's components.
-template <std::size_t I, class S>
-KANE_ALWAYS_INLINE constexpr S& comp(v3<S>& a) {
-  static_assert(I < 3, "kane: a v3 has components 0, 1, 2");
-  if constexpr (I == 0)
-    return a.x;
-  else if constexpr (I == 1)
-    return a.y;
-  else
-    return a.z;
-}
-template <std::size_t I, class S>
-KANE_ALWAYS_INLINE constexpr const S& comp(const v3<S>& a) {
+// Component I (0, 1, 2) of a (a v3, const or not): the one accessor of a v3's components.
+template <std::size_t I, class V>
+KANE_ALWAYS_INLINE constexpr auto& comp(V& a) {
   static_assert(I < 3, "kane: a v3 has components 0, 1, 2");
   if constexpr (I == 0)
     return a.x;

@@ -7,12 +7,11 @@
 //   kane::force<P, R>, torque<B, T>, gravity<g>   the loads (loads.hpp)
 //   kane::system<items...>                       items, or systems whose items it adds
 //
-// Masses and components are scalar expressions (a parameter, kane::literal(2.0),
-// kane::constant<1, 2>); loads are vector expressions of q, u, t and parameters.
-// The inertia's frame is fixed in the body (or B turns in it about an axis of
-// symmetry of I: a wheel, a disc) and its point is the mass centre
-// (kane::parallel_axis moves a dyadic there); a force acts at a particle or at a
-// point fixed in a body, where its partial velocities are those of a mass.
+// Masses and components are scalar expressions (a parameter, kane::literal(2.0), kane::constant<1, 2>);
+// loads are vector expressions of q, u, t and parameters. The inertia's frame is fixed in the body (or B
+// turns in it about an axis of symmetry of I: a wheel, a disc) and its point is the mass centre
+// (kane::parallel_axis moves a dyadic there); a force acts at a particle or at a point fixed in a body,
+// where its partial velocities are those of a mass.
 #pragma once
 
 #include <tuple>
@@ -48,9 +47,9 @@ template <class... F>
 constexpr bool constant_edges(list<F...>) {
   return (constant_edge<F>() && ...);
 }
-// B turns relative to its parent F (by an angle or a spin) about a coordinate axis k of
-// both, and I (in F) is symmetric about k: equal moments about the other two axes (the same
-// expression), no products. I has the same components in B (a wheel, a disc).
+// B turns relative to its parent F (by an angle or a spin) about a coordinate axis k of both, and
+// I (in F) is symmetric about k: equal moments about the other two axes (the same expression), no
+// products. I has the same components in B (a wheel, a disc).
 template <class B, class I>
 constexpr bool spins_symmetric() {
   using F = typename I::frame;
@@ -129,8 +128,8 @@ template <class I, Point G, auto Mass>
 using parallel_axis = typename detail::moved_inertia<I, G, Mass>::type;
 
 namespace detail {
-// I as given, or, in a frame W that spins, I in W's parent: the same components if
-// symmetric about the spin axis, the only inertia a frame of unknown axes can have.
+// I as given, or, in a frame W that spins, I in W's parent: the same components if symmetric
+// about the spin axis, the only inertia a frame of unknown axes can have.
 template <class I>
 struct inertia_for {
   using type = I;
@@ -206,7 +205,6 @@ struct rigid_body
   // the inertia as given, or in the parent of a frame that spins
   using I = typename detail::inertia_for<Given>::type;
   static_assert(detail::joined_frames<B, typename I::frame>::joined);
-
   static_assert(
       detail::check<
           std::is_same_v<typename I::about, Bo>,
@@ -279,15 +277,6 @@ constexpr bool force_applies(list<X...>) {
   else
     return (carries<typename F::point>(static_cast<X*>(nullptr)) || ...);
 }
-template <class X>
-struct point_of {
-  using type = void;
-};
-template <class X>
-requires is_force<X>
-struct point_of<X> {
-  using type = typename X::point;
-};
 // The point of a particle, the mass centre of a body.
 template <class X>
 struct point_of_mass {

@@ -1,23 +1,19 @@
-// The evaluator: one outward pass over the frame tree per state, the
-// kinematic differential equations solved at it, then any number of
-// expressions evaluated from its cache (evaluate.hpp).
+// The evaluator: one outward pass over the frame tree per state, the kinematic differential
+// equations solved at it, then any number of expressions evaluated from its cache (evaluate.hpp).
 //
 //   kane::evaluator<State, kane::frames<C, E>> ev;  // C, E and their ancestors
 //   ev.update(s);                                    // sin/cos once, then per frame
 //   kane::vec<N> v = kane::express<N>(expr, ev);     // ^N components of expr
 //
-// With a speed set, q' and q'' are solved from u and u' (kinematic_equations.hpp).
-// Without one u is q': q' is read from s.qd, or from s.u where s.qd holds 0 (q''
-// from s.qdd or s.ud likewise); different nonzero numbers in both are
-// conflicting_rates.
-// update(s) copies what evaluation reads of s (q, p, t and, with a speed set,
-// u and u', else q' and q''): every result is of the state of the last update,
-// never a mix of two states, and s may be a temporary. An attitude of s that is
-// not a rotation (frames/orientation.hpp, rotation_tolerance) gives status
-// not_a_rotation and NaN for all computed from it. Before the first update
-// the state is NaN (updated() is false, debug builds assert): every result is
-// NaN, never a read of memory not written.
-// Evaluating allocates nothing and calls no sin or cos of a frame coordinate.
+// With a speed set, q' and q'' are solved from u and u' (kinematic_equations.hpp). Without one u is
+// q': q' is read from s.qd, or from s.u where s.qd holds 0 (q'' from s.qdd or s.ud likewise);
+// different nonzero numbers in both are conflicting_rates. update(s) copies what evaluation reads
+// of s (q, p, t and, with a speed set, u and u', else q' and q''): every result is of the state of
+// the last update, never a mix of two states, and s may be a temporary. An attitude of s that is
+// not a rotation (frames/orientation.hpp, rotation_tolerance) gives status not_a_rotation and NaN
+// for all computed from it. Before the first update the state is NaN (updated() is false, debug
+// builds assert): every result is NaN, never a read of memory not written. Evaluating allocates
+// nothing and calls no sin or cos of a frame coordinate.
 #pragma once
 
 #include <array>

@@ -30,6 +30,16 @@ requires is_torque<X>
 struct turning_frames<X> {
   using type = typename closure<typename X::frame>::type;
 };
+// The point of a force (void for other items), named by the rule a force keeps.
+template <class X>
+struct point_of {
+  using type = void;
+};
+template <class X>
+requires is_force<X>
+struct point_of<X> {
+  using type = typename X::point;
+};
 // Every force at a point of a mass, every frame of a body or torque turning at speeds of Sp.
 template <class Sys, class Sp, class... X>
 constexpr bool system_checked(list<X...>) {
