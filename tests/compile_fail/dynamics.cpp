@@ -17,6 +17,8 @@
 // case motion_wrong_size: kane: x and dx/dt of kane::motion hold nq \+ nu numbers
 // case motion_index_beyond: kane: u_r is not a speed of this x .u_1 .. u_nu.
 // case constrained_index_dependent: kane: u_r is not an independent speed of this x
+// case motion_state_of_other_type: kane: motion takes the state of its evaluator. for kane::motion<System> declare it kane::state_of<System>
+// case motion_second_argument: kane: the second argument is an evaluator .kane::evaluator<...>. or a speed set
 // case cut_names_no_mass: kane: cut<P, Items...> names no body .by its frame. or particle .by its point. of the system
 // case cut_of_a_vector: kane: cut<P, Items...> takes the frames of the part's bodies and the points of its particles
 #include <array>
@@ -204,4 +206,22 @@ double linear_entry() {
 #else
   return lin.A(L::index(kane::q<1>), L::index(kane::u<2>));
 #endif
+}
+
+// kane::motion<System>: its state is kane::state_of<System>; its second argument a speed set or an evaluator.
+using pendulum = kane::system<kane::particle<Bo, p<3>>, kane::gravity<-p<8> * e<N, 3>>>;
+double own_motion() {
+#ifdef KANE_CASE_motion_state_of_other_type
+  kane::state<double, 2, 2, 9> s;
+#else
+  kane::state_of<pendulum> s;
+#endif
+#ifdef KANE_CASE_motion_second_argument
+  kane::motion<pendulum, double> f(s);
+#else
+  kane::motion<pendulum, kane::qdot_speeds<2>> f(s);
+#endif
+  std::array<double, 4> x{}, dx{};
+  f(x, dx, 0.0);
+  return dx[3];
 }

@@ -67,13 +67,7 @@ class motion
   template <class X>
   Ev evaluator(const X& x, scalar time) const {
     state_type s = s_;
-    auto& u = [&]() -> auto& {
-      if constexpr (std::is_void_v<typename Ev::speed_set>)
-        return s.qd;
-      else
-        return s.u;
-    }
-    ();
+    auto& u = speeds_in(s);
     if (detail::fits<size>(x)) {
       for (std::size_t i = 0; i < nq; ++i) s.q[i] = x[i];
       for (std::size_t i = 0; i < nu; ++i) u[i] = x[nq + i];
@@ -92,19 +86,20 @@ class motion
   }
 
  private:
+  // where x's speeds go in a state: u, or q' without a speed set (what such an evaluator reads)
+  static auto& speeds_in(state_type& s) {
+    if constexpr (std::is_void_v<typename Ev::speed_set>)
+      return s.qd;
+    else
+      return s.u;
+  }
   template <class X, class DX>
   void step(const X& x, DX& dxdt, scalar time) {
     if (!detail::size_fits<size, scalar>(x, dxdt)) {
       status_ = solve_status::wrong_size;
       return;
     }
-    auto& u = [&]() -> auto& {  // u = q' without a speed set: what such an evaluator reads
-      if constexpr (std::is_void_v<typename Ev::speed_set>)
-        return s_.qd;
-      else
-        return s_.u;
-    }
-    ();
+    auto& u = speeds_in(s_);
     detail::copy_wide<nq>(s_.q.data(), x, 0);
     detail::copy_wide<nu>(u.data(), x, nq);
     s_.t = time;
