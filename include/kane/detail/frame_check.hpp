@@ -1,7 +1,7 @@
 // The rules of the types in one place. Each rule is a class template that is
 // declared and never defined; its name says the rule and the fix, its
 // arguments are the frames (or points) involved. A broken rule instantiates
-//   static_assert(detail::check<false, error::rule<A, B>>)
+//   static_assert(detail::check<ok, error::rule<A, B>>)
 // and sizeof of the undefined class is the first error of g++ and clang:
 //   error: invalid application of 'sizeof' to incomplete type 'kane::error::rule<N, A>'
 // A rule whose fix is a call names it in a second argument, kane::fix::...:
@@ -138,6 +138,9 @@ template <class Rule>
 inline constexpr bool check<false, Rule, void> = sizeof(Rule) > 0;
 template <class Rule, class Fix>
 inline constexpr bool check<false, Rule, Fix> = sizeof(broken<Rule, Fix>) > 0;
+// An error that names Rule, for a branch that is always wrong.
+template <class Rule, class Fix = void>
+inline constexpr bool refused = check<false, Rule, Fix>;
 // A base that is empty, or names Rule and Fix in the one error of the class deriving from it.
 template <bool Ok, class Rule, class Fix>
 struct holds {};

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <type_traits>
 
+#include "kane/detail/choices.hpp"
 #include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
 #include "kane/detail/structure.hpp"
@@ -123,11 +124,11 @@ constexpr bool per_component(const std::array<entry, N>& pattern) {
   for (entry x : pattern) any_known = any_known || x != entry::other;
   return any_known;
 }
-// x + r k, or r k alone (Alone), k of pattern K
-template <std::array<entry, 3> K, bool Alone, class S>
+// x + r k, or r k onto zero, k of pattern K
+template <std::array<entry, 3> K, onto To, class S>
 KANE_ALWAYS_INLINE v3<S> add_along(const v3<S>& x, const S& r, const v3<S>& k) {
   const auto one = [&](const S& xi, auto i, const S& ki) -> S {
-    if constexpr (Alone)
+    if constexpr (To == onto::zero)
       return times<K[i]>(r, ki);
     else if constexpr (K[i] == entry::zero)
       return xi;

@@ -14,6 +14,7 @@
 // where its partial velocities are those of a mass.
 #pragma once
 
+#include <concepts>
 #include <tuple>
 #include <type_traits>
 
@@ -267,6 +268,10 @@ struct system : detail::system_tag {
   // the particles, bodies and loads, nested systems flattened
   using items = typename detail::concat<typename detail::items_of<X>::type...>::type;
 };
+
+// kane::system<...>, or a class that derives from one.
+template <class T>
+concept System = __is_base_of(detail::system_tag, T);  // a builtin: a short error context
 
 namespace detail {
 // A force of Sys acts where its partial velocities are those of a mass.

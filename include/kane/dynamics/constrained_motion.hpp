@@ -51,7 +51,7 @@ using constraint_terms = decltype(listed(NH::equations));
 // A nonholonomic system (constraints NH): x = (q, u_ind), p independent speeds;
 // at each call u_dep = A u_ind + B, then u_ind' from Kane's reduced equations. Ev: the system's
 // own evaluator with NH's speed set and the frames of its constraints, or one's own.
-template <class Sys, class NH,
+template <System Sys, Nonholonomic NH,
           class Ev = detail::evaluator_or_own_t<Sys, typename NH::speed_set, level::acceleration,
                                                 detail::constraint_terms<NH>>>
 class constrained_motion

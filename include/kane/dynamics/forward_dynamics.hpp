@@ -58,7 +58,7 @@ forward_result<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
 }  // namespace detail
 
 // u' = M^-1 f at the evaluator's state, with its status
-template <class Sys, Evaluator Ev>
+template <System Sys, Evaluator Ev>
 forward_result<typename Ev::scalar, Ev::nu> forward_dynamics(const Ev& ev) {
   return detail::flat<typename Ev::scalar>(
       [&] { return detail::forward_at<Sys, detail::rates::of_state>(ev); });

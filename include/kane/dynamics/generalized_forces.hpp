@@ -45,14 +45,7 @@ constexpr auto active_term() {
   else if constexpr (is_torque<X>)
     return dot(partial_velocity<Sp>(angular_velocity<N, typename X::frame>(), speed<R>{}), X::vector);
   else if constexpr (is_particle<X> || is_body<X>) {  // the weight m g of each mass
-    constexpr auto g = []<class... Y>(list<Y...>) {
-      return (zero_vector{} + ... + [] {
-        if constexpr (is_gravity<Y>)
-          return Y::vector;
-        else
-          return zero_vector{};
-      }());
-    }(typename Sys::items{});
+    constexpr auto g = gravity_of(typename Sys::items{});
     return dot(partial_velocity<Sp>(velocity<N, typename point_of_mass<X>::type>(), speed<R>{}), X::mass * g);
   } else
     return constant<0>{};
@@ -78,7 +71,7 @@ constexpr auto inertia_term() {
 }  // namespace detail
 
 // ^N F_r = sum v_r . R + w_r . T of the system Sys for the speeds Sp
-template <Frame N, class Sys, SpeedSet Sp, std::size_t R>
+template <Frame N, System Sys, SpeedSet Sp, std::size_t R>
 constexpr auto generalized_active_force() {
   return []<class... X>(detail::list<X...>) {
     return (constant<0>{} + ... + detail::active_term<N, Sys, Sp, R, X>());
@@ -86,7 +79,7 @@ constexpr auto generalized_active_force() {
 }
 
 // ^N F*_r = -sum m a . v_r + (I . alpha + w x I . w) . w_r of Sys for the speeds Sp
-template <Frame N, class Sys, SpeedSet Sp, std::size_t R>
+template <Frame N, System Sys, SpeedSet Sp, std::size_t R>
 constexpr auto generalized_inertia_force() {
   return []<class... X>(detail::list<X...>) {
     return (constant<0>{} + ... + detail::inertia_term<N, Sp, R, X>());

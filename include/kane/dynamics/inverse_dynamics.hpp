@@ -54,7 +54,7 @@ Out inverse_at(const Ev& ev) {
 }  // namespace detail
 
 // tau = M u' - f at the evaluator's state, with its status
-template <class Sys, Evaluator Ev>
+template <System Sys, Evaluator Ev>
 inverse_result<typename Ev::scalar, Ev::nu> inverse_dynamics(const Ev& ev) {
   return detail::flat<typename Ev::scalar>([&] {
     return detail::inverse_at<Sys, detail::rates::of_state, detail::sign::plus,
@@ -63,7 +63,7 @@ inverse_result<typename Ev::scalar, Ev::nu> inverse_dynamics(const Ev& ev) {
 }
 
 // f alone (tau at u' = 0 is -f), with its status
-template <class Sys, Evaluator Ev>
+template <System Sys, Evaluator Ev>
 forcing_result<typename Ev::scalar, Ev::nu> forcing(const Ev& ev) {
   return detail::flat<typename Ev::scalar>([&] {
     return detail::inverse_at<Sys, detail::rates::at_rest, detail::sign::minus,

@@ -11,6 +11,7 @@
 #include <type_traits>
 
 #include "kane/detail/frame_check.hpp"
+#include "kane/detail/list.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/point.hpp"
@@ -68,6 +69,16 @@ inline constexpr bool is_torque = requires {
 &&std::derived_from<T, load_tag>;
 template <class T>
 inline constexpr bool is_gravity = std::derived_from<T, load_tag> && !is_force<T> && !is_torque<T>;
+// g, the sum of the gravity loads among X (zero_vector without one).
+template <class... X>
+constexpr auto gravity_of(list<X...>) {
+  return (zero_vector{} + ... + [] {
+    if constexpr (is_gravity<X>)
+      return X::vector;
+    else
+      return zero_vector{};
+  }());
+}
 }  // namespace detail
 
 }  // namespace kane

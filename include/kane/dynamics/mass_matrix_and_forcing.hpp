@@ -67,14 +67,14 @@ equations_of_motion<typename Ev::scalar, Ev::nu> mass_matrix_and_forcing_at(cons
 }  // namespace detail
 
 // M and f of the system Sys at the evaluator's state (level::acceleration).
-template <class Sys, Evaluator Ev>
+template <System Sys, Evaluator Ev>
 equations_of_motion<typename Ev::scalar, Ev::nu> mass_matrix_and_forcing(const Ev& ev) {
   return detail::flat<typename Ev::scalar>(
       [&] { return detail::mass_matrix_and_forcing_at<Sys, detail::rates::of_state>(ev); });
 }
 
 // M alone of the system Sys at the evaluator's state (any level)
-template <class Sys, Evaluator Ev>
+template <System Sys, Evaluator Ev>
 mass_matrix_only<typename Ev::scalar, Ev::nu> mass_matrix(const Ev& ev) {
   using S = typename Ev::scalar;
   using out = mass_matrix_only<S, Ev::nu>;

@@ -87,7 +87,7 @@ void for_each_mass(const Ev& ev, F&& f) {
 }  // namespace detail
 
 // ^R p = sum m ^R v^P, as vec<R>
-template <class Sys, Evaluator Ev>
+template <System Sys, Evaluator Ev>
 vec<typename Ev::root, typename Ev::scalar> linear_momentum(const Ev& ev) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
@@ -100,7 +100,7 @@ vec<typename Ev::root, typename Ev::scalar> linear_momentum(const Ev& ev) {
 }
 
 // ^R H^O = sum r^OP x m ^R v^P + I . ^R w^B, as vec<R>; O the system's mass centre by default
-template <class Sys, class O = mass_centre, Evaluator Ev>
+template <System Sys, class O = mass_centre, Evaluator Ev>
 requires(std::is_same_v<O, mass_centre> ||
          Point<O>) vec<typename Ev::root, typename Ev::scalar> angular_momentum(const Ev& ev) {
   using S = typename Ev::scalar;
@@ -130,7 +130,7 @@ requires(std::is_same_v<O, mass_centre> ||
 }
 
 // T = sum m v . v / 2 + w . I . w / 2
-template <class Sys, Evaluator Ev>
+template <System Sys, Evaluator Ev>
 typename Ev::scalar kinetic_energy(const Ev& ev) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
@@ -148,17 +148,16 @@ typename Ev::scalar kinetic_energy(const Ev& ev) {
 }
 
 // V = -sum m g . r^OP + sum k s^2 / 2, zero at O
-template <class Sys, class O = void, Evaluator Ev>
+template <System Sys, class O = void, Evaluator Ev>
 requires(std::is_void_v<O> || Point<O>) typename Ev::scalar potential_energy(const Ev& ev) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using V = Eigen::Matrix<S, 3, 1>;
   S energy = S(0);
-  V g = V::Zero();
+  const V g = detail::in_root<R>(detail::gravity_of(typename Sys::items{}), ev);
   [&]<class... X>(detail::list<X...>) {
     (
         [&] {
-          if constexpr (detail::is_gravity<X>) g += detail::in_root<R>(X::vector, ev);
           if constexpr (detail::is_spring_energy<X>) energy += detail::eval_scalar(X::energy, ev);
         }(),
         ...);

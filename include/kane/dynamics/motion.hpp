@@ -32,7 +32,7 @@ namespace kane {
 
 // x' = (q', u') of the system Sys for any integrator: f(x, dxdt, t). EvOrSpeeds: the evaluator, or
 // the speed set (none: u = q') of the system's own evaluator.
-template <class Sys, class EvOrSpeeds = void>
+template <System Sys, class EvOrSpeeds = void>
 class motion
     : public detail::rates_function<motion<Sys, EvOrSpeeds>, detail::evaluator_or_own_t<Sys, EvOrSpeeds>,
                                     detail::evaluator_or_own_t<Sys, EvOrSpeeds>::state_type::nq +

@@ -95,7 +95,7 @@ constexpr auto masses_of(list<X...>) {
 
 // The force and moment about Cut's point that the rest of Sys exerts on Cut's part, at ev's state
 // (its q, u and u'; ev at the acceleration level).
-template <class Sys, class Cut, Evaluator Ev>
+template <System Sys, class Cut, Evaluator Ev>
 reaction_load<typename Ev::root, typename Ev::scalar> reaction(const Ev& ev) {
   using R = typename Ev::root;
   using S = typename Ev::scalar;
@@ -105,13 +105,8 @@ reaction_load<typename Ev::root, typename Ev::scalar> reaction(const Ev& ev) {
   static_assert(
       !std::is_same_v<masses, detail::list<>>,
       "kane: cut<P, Items...> names no body (by its frame) or particle (by its point) of the system");
-  V g = V::Zero(), force = V::Zero(), moment = V::Zero();
-  [&]<class... X>(detail::list<X...>) {
-    (([&] {
-       if constexpr (detail::is_gravity<X>) g += detail::in_root<R>(X::vector, ev);
-     }()),
-     ...);
-  }(typename Sys::items{});
+  const V g = detail::in_root<R>(detail::gravity_of(typename Sys::items{}), ev);
+  V force = V::Zero(), moment = V::Zero();
   // m (a - g) at the point Q, and its moment about P
   const auto mass_at = [&]<class Q>(std::type_identity<Q>, const auto& m) {
     const V f = S(detail::eval_scalar(m, ev)) * (detail::in_root<R>(acceleration<R, Q>(), ev) - g);

@@ -160,7 +160,7 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
 }
 }  // namespace detail
 // M~, f~, T and b of Sys at ev's state, with sol the solution of the constraints NH
-template <class Sys, class NH, Evaluator Ev, class Sol>
+template <System Sys, Nonholonomic NH, Evaluator Ev, class Sol>
 reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_forcing(const Ev& ev,
                                                                                      const Sol& sol) {
   if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
@@ -176,7 +176,7 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
 // v~_r, (T^T M)_r u' = (T^T f)_r, with M, f the equations of all n speeds (mass_matrix_and_forcing.hpp); the
 // row of the j-th dependent speed is the j-th constraint differentiated, C_j u' = -(C' u + c0')_j, with C the
 // constraints' Jacobian by u as written. status: the equations' or the solution's.
-template <class Sys, class NH, Evaluator Ev, class Sol>
+template <System Sys, Nonholonomic NH, Evaluator Ev, class Sol>
 equations_of_motion<typename Ev::scalar, NH::n> constrained_mass_matrix_and_forcing(const Ev& ev,
                                                                                     const Sol& sol) {
   using S = typename Ev::scalar;
@@ -222,7 +222,7 @@ struct reduced_forces {
   solve_status status;
 };
 // F~ and F~* of Sys at ev's state, with sol the solution of the constraints NH
-template <class Sys, class NH, Evaluator Ev, class Sol>
+template <System Sys, Nonholonomic NH, Evaluator Ev, class Sol>
 reduced_forces<typename Ev::scalar, NH::p> reduced_generalized_forces(const Ev& ev, const Sol& sol) {
   using S = typename Ev::scalar;
   constexpr std::size_t n = NH::n, p = NH::p;

@@ -138,13 +138,13 @@ using evaluator_reading =
 
 // The state of a system: state<S, nq, nu, np, nr>, the numbers read by its items (and Speeds).
 // (More: expressions read beside the items', such as constraints; internal.)
-template <class Sys, class Speeds = void, class S = double, class More = detail::list<>>
+template <System Sys, class Speeds = void, class S = double, class More = detail::list<>>
 using state_of =
     state<S, detail::system_sizes<Sys, Speeds, More>().q, detail::system_sizes<Sys, Speeds, More>().u,
           detail::system_sizes<Sys, Speeds, More>().p, detail::system_sizes<Sys, Speeds, More>().r>;
 
 // The evaluator of a system: the frames its items read, at level L, with Speeds, of a state St.
-template <class Sys, class Speeds = void, level L = level::acceleration, State St = state_of<Sys, Speeds>>
+template <System Sys, class Speeds = void, level L = level::acceleration, State St = state_of<Sys, Speeds>>
 using system_evaluator = detail::evaluator_reading<Sys, Speeds, L, St>;
 
 namespace detail {

@@ -27,6 +27,7 @@
 
 #include <Eigen/Core>
 
+#include "kane/detail/choices.hpp"
 #include "kane/detail/inline.hpp"
 #include "kane/detail/invert.hpp"
 #include "kane/detail/list.hpp"
@@ -201,8 +202,8 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
 
 // X = M^-1 R from the factors of M. Sys: static constexpr n, k, m (pattern n x n), r (n x k),
 // form (blocks_of(m)), x (solution_pattern). The zeros and ones of X are written unless the
-// caller keeps them (WriteConstants false).
-template <class Sys, bool WriteConstants = true, class S>
+// caller keeps them (known_entries::left).
+template <class Sys, known_entries Known = known_entries::written, class S>
 KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys::n>& m,
                                                       const structured_factors<S, Sys::n>& fac,
                                                       const table<S, Sys::n, Sys::k>& r,
@@ -219,7 +220,8 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
   };
   static_for_inline<n * k>([&](auto cj) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t c = cj / k, j = cj % k;
-    if constexpr (WriteConstants && Sys::x[c][j] != entry::other) x[c][j] = S(Sys::x[c][j] == entry::one);
+    if constexpr (Known == known_entries::written && Sys::x[c][j] != entry::other)
+      x[c][j] = S(Sys::x[c][j] == entry::one);
   });
   static_for_inline<Sys::form.count>([&](auto b) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t first = Sys::form.start[b], size = Sys::form.start[b + 1] - first;
@@ -230,7 +232,7 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
       static_for_inline<n>([&](auto d) KANE_ALWAYS_INLINE_LAMBDA {
         if constexpr (Sys::form.block[d] != b && Sys::m[row][d] != entry::zero &&
                       Sys::x[d][j] != entry::zero) {
-          // x_dj: an exact one from the pattern (WriteConstants false leaves it unwritten)
+          // x_dj: an exact one from the pattern (known_entries::left leaves it unwritten)
           const S xd = Sys::x[d][j] == entry::one ? S(1) : x[d][j];
           t -= Sys::m[row][d] == entry::one ? xd : S(m[row][d] * xd);
         }
@@ -286,11 +288,11 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
   return status;
 }
 
-template <class Sys, bool WriteConstants = true, class S>
+template <class Sys, known_entries Known = known_entries::written, class S>
 KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>& m,
                                                  const table<S, Sys::n, Sys::k>& r,
                                                  table<S, Sys::n, Sys::k>& x) {
-  return substitute_structured<Sys, WriteConstants>(m, factor_structured<Sys>(m), r, x);
+  return substitute_structured<Sys, Known>(m, factor_structured<Sys>(m), r, x);
 }
 
 }  // namespace kane::detail

@@ -47,7 +47,7 @@ struct newton_result {
 };
 
 // q_dep of s with f(q) = 0 by Newton's method from s; ev and s at the last iterate
-template <Holonomic H, class Ev>
+template <Holonomic H, Evaluator Ev>
 newton_result<typename Ev::scalar> solve_configuration(Ev& ev, typename Ev::state_type& s,
                                                        newton_options<typename Ev::scalar> options = {}) {
   using S = typename Ev::scalar;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "kane/detail/choices.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/detail/v3.hpp"
 #include "kane/expressions/vector.hpp"
@@ -34,7 +35,7 @@ concept Evaluator = detail::is_evaluator<T>::value;
 
 namespace detail {
 
-template <bool Recall = true, class Ev, class V>
+template <memo_use Memo = memo_use::recall, class Ev, class V>
 KANE_ALWAYS_INLINE v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev);
 
 // An evaluator that recalls repeated nodes (memo.hpp) answers for X itself.
@@ -81,10 +82,10 @@ constexpr unsigned zeros_in() {
 template <class A, class X>
 inline constexpr unsigned zeros_in_v = zeros_in<A, std::remove_cvref_t<X>>();
 
-template <bool Recall = true, class Ev, class X>
+template <memo_use Memo = memo_use::recall, class Ev, class X>
 KANE_ALWAYS_INLINE typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
   using S = typename Ev::scalar;
-  if constexpr (Recall && recalled<Ev, X>)
+  if constexpr (Memo == memo_use::recall && recalled<Ev, X>)
     return ev.recall_scalar(x);
   else if constexpr (coordinate_info<X>::value)
     return ev.template coordinate_value<X::index, X::order>();
@@ -157,10 +158,10 @@ KANE_ALWAYS_INLINE typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
 }
 
 // Components in the root frame.
-template <bool Recall, class Ev, class V>
+template <memo_use Memo, class Ev, class V>
 KANE_ALWAYS_INLINE v3<typename Ev::scalar> eval_vector(const V& v, const Ev& ev) {
   using S = typename Ev::scalar;
-  if constexpr (Recall && recalled<Ev, V>)
+  if constexpr (Memo == memo_use::recall && recalled<Ev, V>)
     return ev.recall_vector(v);
   else if constexpr (is_zero_vector_v<V>)
     return {S(0), S(0), S(0)};

@@ -24,6 +24,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "kane/detail/choices.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
 #include "kane/detail/v3.hpp"
@@ -100,10 +101,12 @@ class evaluator<St, frames<Fs...>, Level, Given>
   // X, q', q'' and all computed from them are NaN (without a speed set, NaN
   // or inf in s reaches what is computed from it).
   KANE_INLINE_FLATTEN void update(const St& s) requires(detail::inlined_entry<pass_type>) {
-    pass_at<true>(s);
+    pass_at<detail::reading::whole_state>(s);
   }
   // update(s) for more than 8 frames: one flattened function
-  KANE_FLATTEN void update(const St& s) requires(!detail::inlined_entry<pass_type>) { pass_at<true>(s); }
+  KANE_FLATTEN void update(const St& s) requires(!detail::inlined_entry<pass_type>) {
+    pass_at<detail::reading::whole_state>(s);
+  }
 
   // With a speed set, update(s) in two steps: update_pose(s) reads q, p, t (the
   // pose, W and X: enough for the constraints' A and B); update_speeds(s) then
@@ -111,11 +114,11 @@ class evaluator<St, frames<Fs...>, Level, Given>
   // velocity and acceleration levels. Between the two only the pose level may
   // be evaluated; after both, every result and status() are those of update(s).
   KANE_INLINE_FLATTEN void update_pose(const St& s) requires(solves&& detail::inlined_entry<pass_type>) {
-    pass_at<false>(s);
+    pass_at<detail::reading::pose>(s);
   }
   // update_pose(s) for more than 8 frames: one flattened function
   KANE_FLATTEN void update_pose(const St& s) requires(solves && !detail::inlined_entry<pass_type>) {
-    pass_at<false>(s);
+    pass_at<detail::reading::pose>(s);
   }
   // u and u' of s at the pose of the last update_pose(s)
   KANE_INLINE_FLATTEN void update_speeds(const St& s) requires(solves&& detail::inlined_entry<pass_type>) {
@@ -138,7 +141,7 @@ class evaluator<St, frames<Fs...>, Level, Given>
   // not read from s.
   template <class Reads>
   KANE_INLINE_FLATTEN void update_for(const St& s) {
-    pass_at<true, Reads>(s);
+    pass_at<detail::reading::whole_state, Reads>(s);
   }
 
   // The inputs r for what is evaluated from now on (loads read them; no pass reads them).
@@ -200,14 +203,17 @@ class evaluator<St, frames<Fs...>, Level, Given>
 
  private:
   static constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
+  static constexpr detail::stages rate_stages =
+      (velocity ? detail::stages::velocity : detail::stages::none) |
+      (acceleration ? detail::stages::acceleration : detail::stages::none);
 
   // 0 if the rates this level reads (u and u' of s, or q' and q'' as read into st_) are finite, NaN if not.
-  template <bool Rest = false>
+  template <detail::rates Ud = detail::rates::of_state>
   scalar rates_residue(const St& s) const {
     scalar residue = scalar(0);
     if constexpr (velocity)
       residue += solves ? detail::nonfinite_residue(s.u) : detail::nonfinite_residue(st_.qd);
-    if constexpr (acceleration && !Rest)
+    if constexpr (acceleration && Ud == detail::rates::of_state)
       residue += solves ? detail::nonfinite_residue(s.ud) : detail::nonfinite_residue(st_.qdd);
     return residue;
   }
@@ -217,13 +223,16 @@ class evaluator<St, frames<Fs...>, Level, Given>
   static constexpr bool rests = requires {
     Reads::rest;
   };
+  template <class Reads>
+  static constexpr detail::rates ud_of = rests<Reads> ? detail::rates::at_rest : detail::rates::of_state;
 
   struct everything {
     static constexpr auto alpha = pass_type::every_frame::alpha;
     static constexpr auto qdd = equations::every_coordinate::qdd;
   };
-  template <bool Rates, class Reads = everything>
+  template <detail::reading Read, class Reads = everything>
   KANE_ALWAYS_INLINE void pass_at(const St& s) {
+    constexpr bool Rates = Read == detail::reading::whole_state;
     st_.q = s.q, st_.p = s.p, st_.t = s.t, st_.r = s.r, updated_ = true;
     const scalar norm_residue = detail::normalise(st_, closure{});  // Euler parameters of unit norm
     const bool rotations = detail::attitudes(st_, closure{});       // NaN in st_ where not
@@ -241,18 +250,18 @@ class evaluator<St, frames<Fs...>, Level, Given>
     const auto tr = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
     scalar residue =
         detail::nonfinite_residue(s.q) + detail::nonfinite_residue(s.p) + (s.t - s.t) + norm_residue;
-    if constexpr (Rates) residue += rates_residue<rests<Reads>>(s);
+    if constexpr (Rates) residue += rates_residue<ud_of<Reads>>(s);
     const bool finite = residue == scalar(0);
     this->status_ = !finite      ? solve_status::not_finite
                     : !rotations ? solve_status::not_a_rotation
                     : conflict   ? solve_status::conflicting_rates
                                  : solve_status::ok;
     if constexpr (!solves) {
-      this->template pass<true, velocity, acceleration, Reads>(
+      this->template pass<detail::stages::pose | rate_stages, Reads>(
           tr, *this);  // frame after frame, all levels at once
       this->store_trig(tr);
     } else {  // Y, Z need the axes; Y', Z' the angular velocities
-      this->template pass<true, false, false>(tr, *this);
+      this->template pass<detail::stages::pose>(tr, *this);
       this->store_trig(tr);
       if constexpr (!direct) this->solve_kinematic_equations(*this);
       if constexpr (Rates) rates_at<Reads>(s, tr);
@@ -264,11 +273,11 @@ class evaluator<St, frames<Fs...>, Level, Given>
   KANE_ALWAYS_INLINE void rates_at(const St& s, const trig_type& tr) {
     if constexpr (velocity) {
       this->solve_rates(s);
-      this->template pass<false, true, false>(tr, *this);
+      this->template pass<detail::stages::velocity>(tr, *this);
     }
     if constexpr (acceleration) {
       this->template solve_accelerations<Reads>(*this, st_);  // u' as copied (or 0)
-      this->template pass<false, false, true, Reads>(tr, *this);
+      this->template pass<detail::stages::acceleration, Reads>(tr, *this);
     }
   }
   template <class Reads = everything>
@@ -279,7 +288,7 @@ class evaluator<St, frames<Fs...>, Level, Given>
       st_.ud = {};
     else
       st_.ud = s.ud;
-    const scalar residue = rates_residue<rests<Reads>>(s);
+    const scalar residue = rates_residue<ud_of<Reads>>(s);
     this->status_ = this->status_ == solve_status::ok && !(residue == scalar(0)) ? solve_status::not_finite
                                                                                  : this->status_;
     rates_at<Reads>(s, this->cached_trig());

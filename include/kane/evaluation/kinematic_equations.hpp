@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include "kane/detail/choices.hpp"
 #include "kane/detail/structure.hpp"
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/evaluate.hpp"
@@ -172,7 +173,7 @@ class kinematic_equations {
       if constexpr (!direct && orthogonal_form<system>())
         return solve_orthogonal<system, inverse_norms<system, Speeds, typename Ev::closure>()>(y, kde_w_);
       else
-        return solve_structured<system, false>(y, y, kde_w_);
+        return solve_structured<system, known_entries::left>(y, y, kde_w_);
     }();
     if (status_ == solve_status::ok) status_ = solved;
     std::array<scalar, nq> z;
@@ -185,7 +186,7 @@ class kinematic_equations {
     bool finite = true;  // X = -W Z may overflow where W does not
     static_for<nq>([&](auto c) {
       if constexpr (system::offset[c]) {
-        kde_x_[c] = apply_row<c, false, nq>(z);
+        kde_x_[c] = apply_row<c, map::linear, nq>(z);
         finite = finite & (kde_x_[c] - kde_x_[c] == scalar(0));
       }
     });
@@ -202,17 +203,17 @@ class kinematic_equations {
     if constexpr (direct) {  // u = q'
       for (std::size_t i = 0; i < nq; ++i) qd_[i] = s.u[i];
     } else {
-      qd_ = apply<true, nd>(s.u);
+      qd_ = apply<map::affine, nd>(s.u);
     }
     if (status_ == solve_status::ok && !all_finite(qd_)) status_ = solve_status::not_finite;
     if (status_ != solve_status::ok)  // a branch, as for q'': as products (nan_unless) they measured slower
       fill_nan(qd_);
   }
   // (W v)_c (+ X_c) for v zero beyond its first Cols entries, skipping the zeros of W and X.
-  template <std::size_t C, bool Offset, std::size_t Cols, class V>
+  template <std::size_t C, map Kind, std::size_t Cols, class V>
   KANE_ALWAYS_INLINE scalar apply_row(const V& v) const {
     scalar sum = scalar(0);
-    if constexpr (Offset && system::offset[C]) sum = kde_x_[C];
+    if constexpr (Kind == map::affine && system::offset[C]) sum = kde_x_[C];
     static_for<Cols>([&](auto j) {
       if constexpr (system::x[C][j] == entry::one)
         sum += v[j];
@@ -221,10 +222,10 @@ class kinematic_equations {
     });
     return sum;
   }
-  template <bool Offset, std::size_t Cols, class V>
+  template <map Kind, std::size_t Cols, class V>
   KANE_ALWAYS_INLINE std::array<scalar, nq> apply(const V& v) const {
     std::array<scalar, nq> out;
-    static_for<nq>([&](auto c) { out[c] = apply_row<c, Offset, Cols>(v); });
+    static_for<nq>([&](auto c) { out[c] = apply_row<c, Kind, Cols>(v); });
     return out;
   }
 
@@ -262,7 +263,7 @@ class kinematic_equations {
       });
       static_for<nq>([&](auto c) {
         if constexpr (Reads::qdd[c])
-          qdd_[c] = apply_row<c, false, nq>(v);
+          qdd_[c] = apply_row<c, map::linear, nq>(v);
         else
           qdd_[c] = nan;
       });

@@ -150,13 +150,13 @@ class recalling {
   template <class X>
   scalar recall_scalar(const X& x) const {
     constexpr std::size_t i = Plan::template index<X>(), s = Plan::repeated.slot[i];
-    if (!done_[i]) scalars_[s].value = eval_scalar<false>(x, *this), done_[i] = true;
+    if (!done_[i]) scalars_[s].value = eval_scalar<memo_use::fresh>(x, *this), done_[i] = true;
     return scalars_[s].value;
   }
   template <class X>
   v3<scalar> recall_vector(const X& x) const {
     constexpr std::size_t i = Plan::template index<X>(), s = Plan::repeated.slot[i];
-    if (!done_[i]) vectors_[s].value = eval_vector<false>(x, *this), done_[i] = true;
+    if (!done_[i]) vectors_[s].value = eval_vector<memo_use::fresh>(x, *this), done_[i] = true;
     return vectors_[s].value;
   }
 

@@ -56,7 +56,7 @@ struct constraint_solution {
 };
 
 // u_dep = A u_ind + B at the evaluator's state.
-template <class NH, class Ev>
+template <Nonholonomic NH, Evaluator Ev>
 KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
   using S = typename Ev::scalar;
   using Sys = detail::constraint_system<NH>;
@@ -144,7 +144,7 @@ void add_scaled(Col& col, const V& v, S a, const Ev& ev) {
 }  // namespace detail
 
 // [v~_1 ... v~_p] in F: v~_s = v_s + sum_r v_r A_rs over the independent s.
-template <Frame F, class NH, class X, class Ev, class Sol>
+template <Frame F, Nonholonomic NH, class X, Evaluator Ev, class Sol>
 KANE_INLINE_FLATTEN auto nonholonomic_partial_velocities(const X& x, const Ev& ev, const Sol& sol) {
   using S = typename Ev::scalar;
   using Sp = typename NH::speed_set;
@@ -162,7 +162,7 @@ KANE_INLINE_FLATTEN auto nonholonomic_partial_velocities(const X& x, const Ev& e
 }
 
 // v~_t = v_t + sum_r v_r B_r, in F.
-template <Frame F, class NH, class X, class Ev, class Sol>
+template <Frame F, Nonholonomic NH, class X, Evaluator Ev, class Sol>
 auto nonholonomic_remainder(const X& x, const Ev& ev, const Sol& sol) {
   static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
   auto [all, rest] = linear_in_speeds<F>(x, ev);

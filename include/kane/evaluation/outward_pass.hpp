@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include "kane/detail/choices.hpp"
 #include "kane/detail/list.hpp"
 #include "kane/detail/patterned.hpp"
 #include "kane/detail/tree.hpp"
@@ -91,9 +92,9 @@ class outward_pass {
   };
   // One pass at the levels asked for, frame after frame; at the acceleration level the
   // frames of Reads::alpha only (by closure index).
-  template <bool Pose, bool Velocity, bool Acceleration, class Reads = every_frame, class Rates>
+  template <stages Levels, class Reads = every_frame, class Rates>
   KANE_ALWAYS_INLINE void pass(const trig_type& t, const Rates& rates) {
-    pass_over<Pose, Velocity, Acceleration, Reads>(closure{}, t, rates);
+    pass_over<Levels, Reads>(closure{}, t, rates);
   }
 
   // ^R w^F = sum u_k+i-1 g_i (D = 0), ^R alpha^F = sum u'_k+i-1 g_i + ^R w^G x ^R w^F (D = 1)
@@ -146,24 +147,30 @@ class outward_pass {
         ...);
   }
 
-  template <bool Pose, bool Velocity, bool Acceleration, class Reads, class Rates, class... F>
+  // The levels of one frame: no angular acceleration, but NaN, where no one reads it.
+  static constexpr stages read_only(stages levels, bool read) {
+    return read || !has(levels, stages::acceleration)
+               ? levels
+               : stages(unsigned(levels) & ~unsigned(stages::acceleration)) | stages::nan_acceleration;
+  }
+  template <stages Levels, class Reads, class Rates, class... F>
   KANE_ALWAYS_INLINE void pass_over(list<F...>, const trig_type& t, const Rates& rates) {
     // g++ 12: no lambdas, which -O2 left out of line
-    (edge < Pose, Velocity, Acceleration && Reads::alpha[index<F>()], F,
-     Acceleration && !Reads::alpha[index<F>()] > (t, rates), ...);
+    (edge<read_only(Levels, Reads::alpha[index<F>()]), F>(t, rates), ...);
   }
-  template <bool Pose, bool Velocity, bool Acceleration, class F, bool Skipped = false, class Rates>
+  template <stages Levels, class F, class Rates>
   KANE_ALWAYS_INLINE void edge(const trig_type& t, const Rates& rates) {
-    if constexpr (Pose) pose_edge<F>(t, rates);
-    if constexpr (Velocity && component_speeds_in<closure, F, Rates>() != 0)
+    constexpr bool velocity = has(Levels, stages::velocity), acceleration = has(Levels, stages::acceleration);
+    if constexpr (has(Levels, stages::pose)) pose_edge<F>(t, rates);
+    if constexpr (velocity && component_speeds_in<closure, F, Rates>() != 0)
       store3(w_[index<F>()].data(), components_value<F, 0>(rates));
-    else if constexpr (Velocity)
+    else if constexpr (velocity)
       velocity_edge<F>(rates);
-    if constexpr (Skipped)
+    if constexpr (has(Levels, stages::nan_acceleration))
       fill_nan(a_[index<F>()]);
-    else if constexpr (Acceleration && component_speeds_in<closure, F, Rates>() != 0)
+    else if constexpr (acceleration && component_speeds_in<closure, F, Rates>() != 0)
       store3(a_[index<F>()].data(), components_value<F, 1>(rates));
-    else if constexpr (Acceleration)
+    else if constexpr (acceleration)
       acceleration_edge<F>(rates);
   }
 
@@ -208,7 +215,8 @@ class outward_pass {
     else if constexpr (!turns<F, D>)
       return x;
     else if constexpr (below_root<F>() || per_component<scalar>(axis_pattern<F>()))
-      return add_along<axis_pattern<F>(), below_root<F>()>(x, angle_rate_value<F, D>(rates), edge_axis<F>());
+      return add_along < axis_pattern<F>(),
+             below_root<F>() ? onto::zero : onto::sum > (x, angle_rate_value<F, D>(rates), edge_axis<F>());
     else
       return x + angle_rate_value<F, D>(rates) * edge_axis<F>();
   }

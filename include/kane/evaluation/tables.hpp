@@ -82,55 +82,56 @@ KANE_ALWAYS_INLINE void set_column(T& t, Eigen::Index c, const V& v) {
 // a vector) and the remainder t, each computed only if asked for. Column r is
 // the expression dx/du_r + sum_s dx/dq_s' W_sr, t is x_0 + sum_s dx/dq_s' X_s,
 // with the zeros and ones of W and X known at compile time (speeds.hpp).
-template <class A, bool Table, bool Rest, class X, class Ev>
+template <class A, linear_part Parts, class X, class Ev>
 KANE_ALWAYS_INLINE auto linear_parts_in(const X& x, const Ev& ev) {
   using Sp = speeds_of<Ev>;
   constexpr int rows = ScalarExpr<X> ? 1 : 3;
   Eigen::Matrix<typename Ev::scalar, rows, int(Sp::n)> t;
   Eigen::Matrix<typename Ev::scalar, rows, 1> rest;
   [&]<std::size_t... R>(std::index_sequence<R...>) {
-    if constexpr (Table) (set_column(t, Eigen::Index(R), numbers<A>(column_of<Sp, R + 1>(x), ev)), ...);
-    if constexpr (Rest) rest = numbers<A>(remainder_of<Sp>(x), ev);
+    if constexpr (has(Parts, linear_part::table))
+      (set_column(t, Eigen::Index(R), numbers<A>(column_of<Sp, R + 1>(x), ev)), ...);
+    if constexpr (has(Parts, linear_part::remainder)) rest = numbers<A>(remainder_of<Sp>(x), ev);
   }
   (std::make_index_sequence<Sp::n>{});
-  if constexpr (Table && Rest)
+  if constexpr (Parts == linear_part::both)
     return std::pair{t, rest};
-  else if constexpr (Table)
+  else if constexpr (has(Parts, linear_part::table))
     return t;
   else
     return rest;
 }
-template <class A, bool Table, bool Rest, class X, class Ev>
+template <class A, linear_part Parts, class X, class Ev>
 requires(inlined_entry<Ev>) KANE_INLINE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
-  return linear_parts_in<A, Table, Rest>(x, ev);
+  return linear_parts_in<A, Parts>(x, ev);
 }
-template <class A, bool Table, bool Rest, class X, class Ev>
+template <class A, linear_part Parts, class X, class Ev>
 requires(!inlined_entry<Ev>) KANE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
-  return linear_parts_in<A, Table, Rest>(x, ev);
+  return linear_parts_in<A, Parts>(x, ev);
 }
 }  // namespace detail
 
 // The pair (T, t) of x = T u + t in A.
 template <Frame A, class X, class Ev>
 requires(Evaluator<Ev> && (ScalarExpr<X> || VectorExpr<X>)) auto linear_in_speeds(const X& x, const Ev& ev) {
-  return detail::linear_parts<A, true, true>(x, ev);
+  return detail::linear_parts<A, detail::linear_part::both>(x, ev);
 }
 
 // The table [v_1 ... v_n] in A.
 template <Frame A, class X, class Ev>
 requires(Evaluator<Ev> && (ScalarExpr<X> || VectorExpr<X>)) auto partial_velocities(const X& x,
                                                                                     const Ev& ev) {
-  return detail::linear_parts<A, true, false>(x, ev);
+  return detail::linear_parts<A, detail::linear_part::table>(x, ev);
 }
 
 // v_t in A.
 template <Frame A, class X, class Ev>
 requires(Evaluator<Ev> && (ScalarExpr<X> || VectorExpr<X>)) auto remainder(const X& x, const Ev& ev) {
-  return detail::linear_parts<A, false, true>(x, ev);
+  return detail::linear_parts<A, detail::linear_part::remainder>(x, ev);
 }
 
 // f_k at the evaluator's state, and their time derivatives.
-template <class Config, class Ev>
+template <class Config, Evaluator Ev>
 auto residuals(const Ev& ev) {
   return [&]<std::size_t... K>(std::index_sequence<K...>) {
     return std::array<typename Ev::scalar, Config::constraints>{
@@ -139,7 +140,7 @@ auto residuals(const Ev& ev) {
   (std::make_index_sequence<Config::constraints>{});
 }
 // df_k/dt at the evaluator's state
-template <class Config, class Ev>
+template <class Config, Evaluator Ev>
 auto velocity_residuals(const Ev& ev) {
   return [&]<std::size_t... K>(std::index_sequence<K...>) {
     return std::array<typename Ev::scalar, Config::constraints>{

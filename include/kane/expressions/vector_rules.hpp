@@ -132,7 +132,7 @@ template <class T>
 inline constexpr bool one_tree_v = true;
 template <class R1, class R2>
 inline constexpr bool one_tree_v<two_roots<R1, R2>> =
-    check<false, error::frames_of_two_trees_relate_them_through_a_common_root_frame<R1, R2>>;
+    refused<error::frames_of_two_trees_relate_them_through_a_common_root_frame<R1, R2>>;
 template <class L, class R>
 inline constexpr bool same_observer_v =
     check<std::is_void_v<observer_of_t<L>> || std::is_void_v<observer_of_t<R>> ||

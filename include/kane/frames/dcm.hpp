@@ -83,8 +83,7 @@ dcm<A, C, S> operator*(const dcm<B, C, S>& l, const dcm<A, B, S>& r) {
 template <class DcmFrom, class To, class VecFrame, class S>
 requires DifferentFrames<DcmFrom, VecFrame> vec<To, S>
 operator*(const dcm<DcmFrom, To, S>&, const vec<VecFrame, S>&) {
-  static_assert(
-      detail::check<false, error::dcm_applies_only_to_components_in_its_from_frame<DcmFrom, VecFrame>>);
+  static_assert(detail::refused<error::dcm_applies_only_to_components_in_its_from_frame<DcmFrom, VecFrame>>);
   return {};
 }
 // ^B P^C . ^A P^B with frames that do not chain: an error naming them
@@ -92,7 +91,7 @@ template <class LeftFrom, class LeftTo, class RightFrom, class RightTo, class S>
 requires DifferentFrames<LeftFrom, RightTo> dcm<RightFrom, LeftTo, S>
 operator*(const dcm<LeftFrom, LeftTo, S>&, const dcm<RightFrom, RightTo, S>&) {
   static_assert(
-      detail::check<false, error::dcm_product_needs_left_from_frame_equal_right_to_frame<LeftFrom, RightTo>>);
+      detail::refused<error::dcm_product_needs_left_from_frame_equal_right_to_frame<LeftFrom, RightTo>>);
   return {};
 }
 

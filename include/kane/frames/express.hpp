@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "kane/detail/choices.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
 #include "kane/frames/dcm.hpp"
@@ -29,7 +30,7 @@ struct path_coordinates<list<Up...>, list<Down...>> {
 };
 
 // A factor of a chain: ^P P^F of the edge above F, transposed when walking up.
-template <class F, bool Up>
+template <class F, walk Way>
 struct edge {
   template <class S, class Trig, class St>
   static Eigen::Matrix<S, 3, 3> matrix(const Trig& t, const St& st) {
@@ -42,7 +43,7 @@ struct edge {
         if (!F::step::rotation(st))
           return Eigen::Matrix<S, 3, 3>::Constant(std::numeric_limits<S>::quiet_NaN());
       const Eigen::Matrix<S, 3, 3> m = F::step::template matrix<S>(t, st);
-      if constexpr (Up)
+      if constexpr (Way == walk::up)
         return m.transpose();
       else
         return m;
@@ -69,7 +70,7 @@ template <class Up, class Down>
 struct factors;
 template <class... Up, class... Down>
 struct factors<list<Up...>, list<Down...>> {
-  using type = list<edge<Up, true>..., edge<Down, false>...>;
+  using type = list<edge<Up, walk::up>..., edge<Down, walk::down>...>;
 };
 
 }  // namespace detail

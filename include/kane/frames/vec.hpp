@@ -46,7 +46,7 @@ class vec {
   // from another frame: an error (change frames with express)
   template <class G>
   requires DifferentFrames<G, F> vec(const vec<G, S>&) {
-    static_assert(detail::check<false, error::frames_differ_use_express_to_change_frame<G, F>>);
+    static_assert(detail::refused<error::frames_differ_use_express_to_change_frame<G, F>>);
   }
 
   // e_F1 = (1, 0, 0)

@@ -170,7 +170,7 @@ constexpr auto partial_in(V v) {
   } else if constexpr (is_v<V, omega> && speed_info<Leaf>::value && Leaf::order == 0) {
     // d(^R w^F)/du_r: the axes of the edges from the root to F spinning by u_r
     using p = path<root_of<typename V::frame>, typename V::frame>;
-    return partial_omega<Leaf::index, true>(typename p::up{}, typename p::down{});
+    return partial_omega<Leaf::index, wrt::speeds>(typename p::up{}, typename p::down{});
   } else if constexpr (is_v<V, omega> && !(coordinate_info<Leaf>::value && Leaf::order == 0))
     return zero_vector{};  // no t, q'' or u' in ^R w^F
   else if constexpr (is_v<V, angular_velocity_of> && !(coordinate_info<Leaf>::value && Leaf::order == 0))
@@ -222,7 +222,7 @@ constexpr auto dt(V v) {
 // d v/dt without a frame: an error (write dt<N>(v) for a frame N)
 template <VectorExpr V>
 constexpr V dt(V v) {
-  static_assert(detail::check<false, error::a_vector_derivative_needs_a_frame_write_dt_A_of_v<V>>);
+  static_assert(detail::refused<error::a_vector_derivative_needs_a_frame_write_dt_A_of_v<V>>);
   return v;
 }
 
@@ -243,7 +243,7 @@ requires(detail::coordinate_info<Leaf>::value || detail::speed_info<Leaf>::value
 // d v/dq without a frame: an error (write diff<N>(v, q) for a frame N)
 template <VectorExpr V, ScalarExpr Leaf>
 constexpr V diff(V v, Leaf) {
-  static_assert(detail::check<false, error::a_vector_derivative_needs_a_frame_write_diff_A_of_v_q<V>>);
+  static_assert(detail::refused<error::a_vector_derivative_needs_a_frame_write_diff_A_of_v_q<V>>);
   return v;
 }
 

@@ -10,6 +10,7 @@
 #include <tuple>
 #include <type_traits>
 
+#include "kane/detail/choices.hpp"
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/expressions/vector.hpp"
@@ -184,24 +185,24 @@ constexpr std::uint64_t edge_rates() {
   } else
     return leaves_of<decltype(ddt(F::step::angle))>.rates;
 }
-// The rates q' (Speeds false) or the speeds u (true) of ^R w^F, R the root.
-template <class F, bool Speeds = false>
+// The rates q' or the speeds u of ^R w^F, R the root.
+template <class F, wrt By = wrt::rates>
 constexpr std::uint64_t path_rates() {
   if constexpr (std::is_void_v<typename F::tree_parent>)
     return 0;
-  else if constexpr (Speeds)
+  else if constexpr (By == wrt::speeds)
     return [] {
       std::uint64_t bits = 0;
       for (std::size_t i : free_speeds<F>())
         if (i != 0) bits |= leaf_bit(i);
       return bits;
-    }() | path_rates<typename F::tree_parent, true>();
+    }() | path_rates<typename F::tree_parent, wrt::speeds>();
   else
     return edge_rates<F>() | path_rates<typename F::tree_parent>();
 }
 template <class... F>
 constexpr leaf_set omega_leaves() {
-  return {(path_rates<F>() | ...), (path_rates<F, true>() | ...)};
+  return {(path_rates<F>() | ...), (path_rates<F, wrt::speeds>() | ...)};
 }
 template <class X>
 constexpr leaf_set leaves_in() {

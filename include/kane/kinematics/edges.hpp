@@ -10,6 +10,7 @@
 #include <tuple>
 #include <type_traits>
 
+#include "kane/detail/choices.hpp"
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/list.hpp"
 #include "kane/expressions/vector.hpp"
@@ -142,10 +143,10 @@ constexpr bool free_speeds_checked(list<F...>) {
       check<turns_freely<Speeds, F>(), error::a_frame_turns_at_free_speeds_of_the_evaluators_speed_set<F>> &&
       ...);
 }
-// d(^A w^B)/dq_R' (Speed false) or d(^A w^B)/du_R (Speed true) over the path A -> B.
-template <std::size_t R, bool Speed = false, class... Up, class... Down>
+// d(^A w^B)/dq_R' or d(^A w^B)/du_R over the path A -> B.
+template <std::size_t R, wrt By = wrt::rates, class... Up, class... Down>
 constexpr auto partial_omega(list<Up...>, list<Down...>) {
-  if constexpr (Speed)
+  if constexpr (By == wrt::speeds)
     return (zero_vector{} - ... - edge_spin<R, Up>()) + (zero_vector{} + ... + edge_spin<R, Down>());
   else
     return (zero_vector{} - ... - edge_axis<R, Up>()) + (zero_vector{} + ... + edge_axis<R, Down>());

@@ -190,7 +190,7 @@ using equations_of =
 }  // namespace detail
 
 // x = (q, u) of an unconstrained system; the derivatives of x' = (W u + X, M^-1 f).
-template <class Sys, class Ev, class In = inputs<>>
+template <System Sys, Evaluator Ev, class In = inputs<>>
 detail::model_of<Ev, In> linearize(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
   constexpr std::size_t nq = Ev::state_type::nq, nu = Ev::nu, nx = nq + nu, n = nx + In::n;
@@ -213,8 +213,9 @@ detail::model_of<Ev, In> linearize(const typename Ev::state_type& s) {
 }
 
 // x = (q_ind, u_ind) of a nonholonomic system NH with holonomic constraints H.
-template <class Sys, class NH, class Ev, class H = void, class In = inputs<>>
-detail::constrained_model_of<NH, Ev, H, In> linearize_constrained(const typename Ev::state_type& s) {
+template <System Sys, Nonholonomic NH, Evaluator Ev, class H = void, class In = inputs<>>
+requires(std::is_void_v<H> || Holonomic<H>) detail::constrained_model_of<NH, Ev, H, In> linearize_constrained(
+    const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
   constexpr std::size_t nq = Ev::state_type::nq;
   constexpr auto qi = detail::independent_coordinates<H, nq>();
@@ -241,8 +242,9 @@ detail::constrained_model_of<NH, Ev, H, In> linearize_constrained(const typename
 }
 
 // M u' + C u + K q_ind = B r: Kane's reduced equations linearized about s, u' held.
-template <class Sys, class NH, class Ev, class H = void, class In = inputs<>>
-detail::equations_of<NH, Ev, H, In> linearize_equations(const typename Ev::state_type& s) {
+template <System Sys, Nonholonomic NH, Evaluator Ev, class H = void, class In = inputs<>>
+requires(std::is_void_v<H> || Holonomic<H>) detail::equations_of<NH, Ev, H, In> linearize_equations(
+    const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
   constexpr std::size_t nq = Ev::state_type::nq, p = NH::p;
   constexpr auto qi = detail::independent_coordinates<H, nq>();

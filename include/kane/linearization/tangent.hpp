@@ -70,7 +70,7 @@ struct tangent_model {
 };
 
 // A~ and B~ of x~ = (q with each attitude as a rotation vector, u) at s.
-template <class Sys, class Ev, class In = inputs<>>
+template <System Sys, Evaluator Ev, class In = inputs<>>
 auto linearize_tangent(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
   constexpr std::size_t nq = Ev::state_type::nq, nu = Ev::nu, nx = nq + nu;

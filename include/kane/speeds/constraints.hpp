@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 #include "kane/detail/structure.hpp"
@@ -85,6 +86,17 @@ struct nonholonomic<Sp, dependent<D...>, C...> {
   // C..., the constraint expressions
   static constexpr std::tuple<decltype(C)...> equations{C...};
 };
+
+namespace detail {
+template <class T>
+struct is_nonholonomic : std::false_type {};
+template <SpeedSet Sp, std::size_t... D, auto... C>
+struct is_nonholonomic<nonholonomic<Sp, dependent<D...>, C...>> : std::true_type {};
+}  // namespace detail
+
+// kane::nonholonomic<Speeds, dependent<...>, c...>.
+template <class T>
+concept Nonholonomic = detail::is_nonholonomic<T>::value;
 
 namespace detail {
 // The constraints M u + c0 = 0 as a structured solve (evaluation/block_solve.hpp) of the

@@ -129,7 +129,7 @@ inline constexpr auto unit_norm = [] {
     constexpr coordinate<c[3]> h{};
     return held(a * dt(a) + b * dt(b) + g * dt(g) + h * dt(h));
   } else {
-    static_assert(detail::check<false, error::unit_norm_needs_a_frame_oriented_by_euler_parameters<B>>);
+    static_assert(detail::refused<error::unit_norm_needs_a_frame_oriented_by_euler_parameters<B>>);
     return held(zero_t{});
   }
 }();

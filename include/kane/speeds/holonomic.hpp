@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "kane/detail/structure.hpp"
+#include "kane/frames/state.hpp"
 #include "kane/kinematics/derivative.hpp"
 #include "kane/speeds/constraints.hpp"
 
@@ -104,7 +105,7 @@ template <class H>
 concept Holonomic = detail::is_holonomic<H>::value;
 
 // n = NQ - M: the coordinates of the state St that the constraints H leave free.
-template <class St, Holonomic H>
+template <State St, Holonomic H>
 inline constexpr std::size_t degrees_of_freedom = St::nq - H::m;
 
 }  // namespace kane

@@ -77,7 +77,7 @@ constexpr auto omega_column(std::index_sequence<S...> s) {
       else
         return zero_vector{};
     }();
-    return ((own + partial_omega<R, true>(typename p::up{}, typename p::down{})) + ... +
+    return ((own + partial_omega<R, wrt::speeds>(typename p::up{}, typename p::down{})) + ... +
             (partial_omega<S + 1>(typename p::up{}, typename p::down{}) * weight<Sp, S + 1, R>()));
   }
 }
@@ -133,7 +133,7 @@ requires(ScalarExpr<X> || VectorExpr<X>) constexpr auto partial_velocity(X x, sp
 template <SpeedSet Sp, class X, class Leaf>
 requires(!Speed<Leaf>) constexpr X partial_velocity(X x, Leaf) {
   static_assert(
-      detail::check<false, error::partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r<Leaf>>);
+      detail::refused<error::partial_velocities_are_taken_with_respect_to_generalized_speeds_u_r<Leaf>>);
   return x;
 }
 

@@ -19,10 +19,10 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "kane/detail/choices.hpp"
 #include "kane/detail/inline.hpp"
 #include "kane/detail/invert.hpp"
 #include "kane/dynamics/bodies.hpp"
-#include "kane/dynamics/detail/choices.hpp"
 #include "kane/dynamics/detail/sums/columns.hpp"
 #include "kane/dynamics/detail/sums/known_mass_matrix.hpp"
 #include "kane/dynamics/detail/sums/terms.hpp"
@@ -120,33 +120,21 @@ struct frame_of_columns<Cols, list<R, F...>, true> {
 // root (a body's in its own frame where its partial velocities are known constants there alone), a
 // body's rotational term in the root, its inertia's frame or the frame above that the inertia is
 // symmetric about the turn to (symmetric_lift), whichever holds fewer rotations in the partial
-// angular velocities (foreign_units). SumMass false: M is known (known_mass_matrix.hpp).
-template <class Sys, bool RestRates, bool Forcing, bool SumMass, class Out, class Ev, class Cols, class Ud>
+// angular velocities (foreign_units). parts::forcing: M is known (known_mass_matrix.hpp).
+template <class Sys, rates Rates, parts Parts, class Out, class Ev, class Cols, class Ud>
 inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using Sp = detail::speeds_of<Ev>;
   constexpr std::size_t n = Cols::n;
-  // the gravity of the system in A
-  const auto gravity = [&]<class A>(std::type_identity<A>) {
-    Eigen::Matrix<S, 3, 1> g = Eigen::Matrix<S, 3, 1>::Zero();
-    [&]<class... X>(detail::list<X...>) {
-      (
-          [&] {
-            if constexpr (Forcing && detail::is_gravity<X>) g += detail::in_frame_of<A>(X::vector, ev);
-          }(),
-          ...);
-    }(typename Sys::items{});
-    return g;
-  };
   // the partial velocities of x along the columns, and x's bias (a0 or alpha0), in A
   const auto along = [&]<class A>(std::type_identity<A>, const auto& x, const auto& x_dot,
                                   Eigen::Matrix<S, 3, 1>& bias) {
     constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>, A>();
-    const auto v = linear_parts_in<A, true, false>(x, ev);
-    if constexpr (Forcing) {
+    const auto v = linear_parts_in<A, linear_part::table>(x, ev);
+    if constexpr (has(Parts, parts::forcing)) {
       bias = detail::in_frame_of<A>(x_dot, ev);
-      if constexpr (!RestRates) bias -= v * ud;
+      if constexpr (Rates == rates::of_state) bias -= v * ud;
       cols.template add_bias<nz>(bias, v);
     }
     return Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(v));
@@ -158,13 +146,14 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
     const auto v = along(in, point_velocity, point_acceleration, a0);
     using X = std::remove_cvref_t<decltype(point_velocity)>;
     const S mass = detail::eval_scalar(m, ev);
-    if constexpr (SumMass) {
+    if constexpr (has(Parts, parts::mass_matrix)) {
       const Eigen::Matrix<S, 3, int(n)> mv = mass * v;
       detail::add_upper<reached_columns<Cols, Sp, X>>(out.M, v, mv);
     }
-    if constexpr (Forcing)
+    if constexpr (has(Parts, parts::forcing))
       detail::add_transposed<Cols::template kinds<detail::nonzero_columns<Sp, X, A>()>()>(
-          out.f, v, Eigen::Matrix<S, 3, 1>(mass * (gravity(in) - a0)));
+          out.f, v,
+          Eigen::Matrix<S, 3, 1>(mass * (in_frame_of<A>(gravity_of(typename Sys::items{}), ev) - a0)));
   };
   [&]<class... X>(detail::list<X...>) {
     (
@@ -197,25 +186,25 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
               else
                 return detail::inertia_in_root<I>(ev);
             }();
-            if constexpr (SumMass) {
+            if constexpr (has(Parts, parts::mass_matrix)) {
               const Eigen::Matrix<S, 3, int(n)> iw = i * w;
               detail::add_upper<reached_columns<Cols, Sp, Om>>(out.M, w, iw);
             }
-            if constexpr (Forcing) {
+            if constexpr (has(Parts, parts::forcing)) {
               const Eigen::Matrix<S, 3, 1> omega = detail::in_frame_of<A>(angular_velocity<R, B>(), ev);
               detail::add_transposed<Cols::template kinds<detail::nonzero_columns<Sp, Om, A>()>()>(
                   out.f, w, Eigen::Matrix<S, 3, 1>(-(i * alpha0 + omega.cross(i * omega))));
             }
-          } else if constexpr (Forcing && detail::is_force<X>) {
+          } else if constexpr (has(Parts, parts::forcing) && detail::is_force<X>) {
             const auto x = velocity<R, typename X::point>();
-            const auto v = linear_parts_in<R, true, false>(x, ev);
+            const auto v = linear_parts_in<R, linear_part::table>(x, ev);
             constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
             detail::add_transposed<Cols::template kinds<nz>()>(
                 out.f, Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(v)),
                 detail::in_root<R>(X::vector, ev));
-          } else if constexpr (Forcing && detail::is_torque<X>) {
+          } else if constexpr (has(Parts, parts::forcing) && detail::is_torque<X>) {
             const auto x = angular_velocity<R, typename X::frame>();
-            const auto w = linear_parts_in<R, true, false>(x, ev);
+            const auto w = linear_parts_in<R, linear_part::table>(x, ev);
             constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>>();
             detail::add_transposed<Cols::template kinds<nz>()>(
                 out.f, Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(w)),
@@ -236,8 +225,6 @@ auto equations_along(const Ev& ev, const Cols& cols) {
   using R = typename Ev::root;
   using Sp = detail::speeds_of<Ev>;
   constexpr std::size_t n = Cols::n;
-  constexpr bool RestRates = Rates == rates::at_rest, Forcing = Parts != parts::mass_matrix,
-                 WithM = Parts != parts::forcing;
   static_assert(detail::system_checked<Sys, Sp>(typename Sys::items{}));
   constexpr bool known = [] {
     if constexpr (std::is_same_v<Cols, all_speeds<n>>)
@@ -245,9 +232,10 @@ auto equations_along(const Ev& ev, const Cols& cols) {
     else
       return false;
   }();
-  using result = std::conditional_t<known && !WithM, forcing_only<S, n>, equations_of_motion<S, n>>;
+  using result = std::conditional_t<known && !has(Parts, parts::mass_matrix), forcing_only<S, n>,
+                                    equations_of_motion<S, n>>;
   result out = [&] {
-    if constexpr (known && !WithM)
+    if constexpr (known && !has(Parts, parts::mass_matrix))
       return result{Eigen::Matrix<S, int(n), 1>::Zero(), ev.status()};
     else if constexpr (known)  // symmetric: rows or columns alike
       return result{
@@ -258,12 +246,14 @@ auto equations_along(const Ev& ev, const Cols& cols) {
       return result{Eigen::Matrix<S, int(n), int(n)>::Zero(), Eigen::Matrix<S, int(n), 1>::Zero(),
                     ev.status()};
   }();
-  const auto ud = detail::speed_rates(ev);
-  detail::with_common_subexpressions(system_terms<R, Sp>(typename Sys::items{}), ev, [&](const auto& e) {
-    add_items<Sys, RestRates, Forcing, !known>(out, e, cols, ud);
-  });
+  [[maybe_unused]] const auto ud = detail::speed_rates(ev);
+  if constexpr (!known || Parts != parts::mass_matrix)
+    detail::with_common_subexpressions(system_terms<R, Sp>(typename Sys::items{}), ev, [&](const auto& e) {
+      add_items<Sys, Rates, known ? parts::forcing : Parts>(out, e, cols, ud);
+    });
   if constexpr (!known) out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
-  if constexpr (known && !WithM)  // the caller checks M^-1 f: a NaN or inf of f reaches it
+  if constexpr (known &&
+                !has(Parts, parts::mass_matrix))  // the caller checks M^-1 f: a NaN or inf of f reaches it
     return out;
   const bool finite = [&] {  // numbers: M's diagonal suffices (M = sum m V^T V + W^T I W)
     if constexpr (known)

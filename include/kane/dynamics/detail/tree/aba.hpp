@@ -102,7 +102,7 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
       constexpr auto K = joint_axis_pattern<F>();
       const vec k = joint_axis_in_frame<F, S>();
       const S u = joint_rate<1>(ev, std::size_t(r));
-      w[g] = add_along<K, false>(wp, u, k);
+      w[g] = add_along<K, onto::sum>(wp, u, k);
       cw[g] = u * cross_along<K>(w[g], k), cv[g] = u * cross_along<K>(v[g], k);
     }
     x[g].a.setZero(), x[g].b.setZero(), x[g].c.setZero(), x[g].n = zero, x[g].f = zero;
@@ -187,7 +187,7 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
       constexpr auto K = joint_axis_pattern<F>();
       const S a = (dn[r] - dot3(uw[r], aw[g]) - dot3(uv[r], av[g])) / dd[r];
       ud(Eigen::Index(r)) = a;
-      aw[g] = add_along<K, false>(aw[g], a, joint_axis_in_frame<F, S>());
+      aw[g] = add_along<K, onto::sum>(aw[g], a, joint_axis_in_frame<F, S>());
     }
   });
   return ok;

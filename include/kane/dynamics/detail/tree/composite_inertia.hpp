@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 
+#include "kane/detail/choices.hpp"
 #include "kane/detail/inline.hpp"
 #include "kane/detail/patterned.hpp"
 #include "kane/detail/v3.hpp"
@@ -28,7 +29,7 @@ struct composite_inertia {
   sym3<S> i;  // about the frame's origin
 
   // m at c (of pattern C) with the inertia ic about c (none: a particle)
-  template <std::array<entry, 3> C, bool Inertia>
+  template <std::array<entry, 3> C, item_kind Kind>
   KANE_ALWAYS_INLINE void add_mass(const S& m, const v3<S>& c, const sym3<S>& ic) {
     constexpr auto mp = scaled_pattern(C);
     const v3<S> mc{product<entry::other, C[0]>(m, c.x), product<entry::other, C[1]>(m, c.y),
@@ -37,7 +38,7 @@ struct composite_inertia {
     h = {plus_product<entry::one, mp[0]>(h.x, S(1), mc.x), plus_product<entry::one, mp[1]>(h.y, S(1), mc.y),
          plus_product<entry::one, mp[2]>(h.z, S(1), mc.z)};
     sym3<S> j = i;
-    if constexpr (Inertia)
+    if constexpr (Kind == item_kind::body)
       static_for<6>([&](auto k) KANE_ALWAYS_INLINE_LAMBDA {
         j[k] = j[k] + ic[k];
       });  // unrolled: no loop through memory
@@ -192,9 +193,9 @@ KANE_ALWAYS_INLINE sym3<typename Ev::scalar> body_inertia(const Ev& ev) {
 template <class X, auto C, class S, class Ev>
 KANE_ALWAYS_INLINE void add_item_mass(composite_inertia<S>& k, const v3<S>& c, const Ev& ev) {
   if constexpr (is_body<X>)
-    k.template add_mass<C, true>(S(eval_scalar(X::mass, ev)), c, body_inertia<X>(ev));
+    k.template add_mass<C, item_kind::body>(S(eval_scalar(X::mass, ev)), c, body_inertia<X>(ev));
   else
-    k.template add_mass<C, false>(S(eval_scalar(X::mass, ev)), c, {});
+    k.template add_mass<C, item_kind::particle>(S(eval_scalar(X::mass, ev)), c, {});
 }
 
 template <class JF, std::size_t F>

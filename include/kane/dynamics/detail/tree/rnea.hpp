@@ -17,9 +17,9 @@
 
 #include <Eigen/Core>
 
+#include "kane/detail/choices.hpp"
 #include "kane/detail/inline.hpp"
 #include "kane/detail/v3.hpp"
-#include "kane/dynamics/detail/choices.hpp"
 #include "kane/dynamics/detail/tree/body_frames.hpp"
 #include "kane/dynamics/detail/tree/crba.hpp"
 
@@ -64,15 +64,7 @@ constexpr std::array<entry, 3> base_pattern(list<X...>) {
 template <class Sys, class R, class Ev>
 KANE_ALWAYS_INLINE v3<typename Ev::scalar> base_acceleration(const Ev& ev) {
   using S = typename Ev::scalar;
-  v3<S> a{S(0), S(0), S(0)};
-  [&]<class... X>(list<X...>) KANE_ALWAYS_INLINE_LAMBDA {
-    (
-        [&]() KANE_ALWAYS_INLINE_LAMBDA {
-          if constexpr (is_gravity<X>) a = a - eval_vector<false>(X::vector, ev);
-        }(),
-        ...);
-  }(typename Sys::items{});
-  return a;
+  return v3<S>{S(0), S(0), S(0)} - eval_vector<memo_use::fresh>(gravity_of(typename Sys::items{}), ev);
 }
 
 // The applied load X at c (pattern C, components in F) subtracted from (f, n): f -= R and
@@ -80,11 +72,11 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> base_acceleration(const Ev& ev) {
 template <class X, class F, auto C, class Ev, class V>
 KANE_ALWAYS_INLINE void subtract_load(V& f, V& n, const V& c, const Ev& ev) {
   if constexpr (is_force<X>) {
-    const V r = in_frame<F>(eval_vector<false>(X::vector, ev), ev);
+    const V r = in_frame<F>(eval_vector<memo_use::fresh>(X::vector, ev), ev);
     f = f - r;
     if constexpr (!all_zero(C)) n = n - cross_from<C>(c, r);
   } else if constexpr (is_torque<X>)
-    n = n - in_frame<F>(eval_vector<false>(X::vector, ev), ev);
+    n = n - in_frame<F>(eval_vector<memo_use::fresh>(X::vector, ev), ev);
 }
 
 // tau = M u' - f of the joint-form system Sys (u' of the state, or 0 with Rest); -tau with Negated.
@@ -116,8 +108,8 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
         using F = frame_at<JF, g>;
         constexpr auto K = joint_axis_pattern<F>();
         const vec k = joint_axis_in_frame<F, S>();
-        w[g] = add_along<K, true>(zero, joint_rate<1>(ev, std::size_t(r)), k);
-        alpha[g] = Rest ? zero : add_along<K, true>(zero, joint_rate<2>(ev, std::size_t(r)), k);
+        w[g] = add_along<K, onto::zero>(zero, joint_rate<1>(ev, std::size_t(r)), k);
+        alpha[g] = Rest ? zero : add_along<K, onto::zero>(zero, joint_rate<2>(ev, std::size_t(r)), k);
       }
     } else {
       const vec wp = e.down(w[p]);
@@ -132,9 +124,10 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
         constexpr auto K = joint_axis_pattern<F>();
         const vec k = joint_axis_in_frame<F, S>();
         const S u = joint_rate<1>(ev, std::size_t(r));
-        w[g] = add_along<K, false>(wp, u, k);
+        w[g] = add_along<K, onto::sum>(wp, u, k);
         alpha[g] = e.down(alpha[p]) + u * cross_along<K>(wp, k);
-        if constexpr (!Rest) alpha[g] = add_along<K, false>(alpha[g], joint_rate<2>(ev, std::size_t(r)), k);
+        if constexpr (!Rest)
+          alpha[g] = add_along<K, onto::sum>(alpha[g], joint_rate<2>(ev, std::size_t(r)), k);
       }
     }
     // the frame's own items of known (m, h, J) about its origin, constants: f = m a + alpha x h +

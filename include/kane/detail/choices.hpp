@@ -1,0 +1,39 @@
+// The choices kane's internals make at compile time, named where a call makes them.
+#pragma once
+
+namespace kane::detail {
+
+// An edge's ^P P^F walking down the tree, or its transpose walking up.
+enum class walk : bool { down, up };
+// A derivative with respect to the rates q' or to the speeds u.
+enum class wrt : bool { rates, speeds };
+// A repeated node's value recalled from the evaluator's memo, or computed afresh.
+enum class memo_use : bool { fresh, recall };
+// What an update reads of a state: the pose alone, or the pose and the rates.
+enum class reading : bool { pose, whole_state };
+// The levels one outward pass computes, a set. nan_acceleration: the level asked for, NaN in a
+// frame whose angular acceleration no one reads.
+enum class stages : unsigned { none = 0, pose = 1, velocity = 2, acceleration = 4, nan_acceleration = 8 };
+constexpr stages operator|(stages a, stages b) { return stages(unsigned(a) | unsigned(b)); }
+constexpr bool has(stages set, stages s) { return (unsigned(set) & unsigned(s)) != 0; }
+// The parts of x = T u + t computed: the table T, the remainder t, or both.
+enum class linear_part : unsigned { table = 1, remainder = 2, both = 3 };
+constexpr bool has(linear_part set, linear_part p) { return (unsigned(set) & unsigned(p)) != 0; }
+// Whether a structured solve writes x's entries known at compile time, or leaves them to the caller.
+enum class known_entries : bool { written, left };
+// W v, or W v + X.
+enum class map : bool { linear, affine };
+// x + r k, or r k onto zero.
+enum class onto : bool { sum, zero };
+// A mass with its central inertia, or a particle's.
+enum class item_kind : bool { particle, body };
+
+// The u' the equations take: the state's, or 0 (motion's state, whose u' they solve for).
+enum class rates : bool { of_state, at_rest };
+// tau = M u' - f, or -tau (at rest, -tau is the forcing f).
+enum class sign : bool { plus, minus };
+// What Kane's sums compute: M and f, M alone, or f alone where M is known at compile time.
+enum class parts { both, mass_matrix, forcing };
+constexpr bool has(parts set, parts p) { return set == parts::both || set == p; }
+
+}  // namespace kane::detail
