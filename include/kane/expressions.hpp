@@ -4,5 +4,7 @@
 
 #include "kane/expressions/derived_products.hpp"
 #include "kane/expressions/direction_cosines.hpp"
+#include "kane/expressions/known_values.hpp"
+#include "kane/expressions/nodes.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/scalars.hpp"  // scalar expressions

@@ -13,7 +13,8 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
-enum class entry : unsigned char { zero, one, other };
+// What is known of a number at compile time: 0, 1, -1 (a column -e_i), or nothing.
+enum class entry : unsigned char { zero, one, other, minus_one };
 
 template <std::size_t R, std::size_t C>
 using pattern = std::array<std::array<entry, C>, R>;

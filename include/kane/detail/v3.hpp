@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/structure.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -79,74 +80,89 @@ KANE_ALWAYS_INLINE constexpr auto& comp(V& a) {
   else
     return a.z;
 }
-// The operations with components known to be zero (bit i of Za, Zb: component i of a, b): those
-// terms are not formed, since the optimizer keeps s * 0 and x + 0 (NaN, inf and -0 forbid folding).
-template <unsigned Z, int I, class S>
+// The operations with components known to be zero (Za, Zb: the patterns of a, b; their zeros
+// only): those terms are not formed, since the optimizer keeps s * 0 and x + 0 (NaN, inf and -0
+// forbid folding).
+using pattern3 = std::array<entry, 3>;
+inline constexpr pattern3 unknown3{entry::other, entry::other, entry::other};
+constexpr bool any_zero(const pattern3& z) {
+  return z[0] == entry::zero || z[1] == entry::zero || z[2] == entry::zero;
+}
+template <pattern3 Z, int I, class S>
 KANE_ALWAYS_INLINE constexpr S part(const v3<S>& a) {
-  if constexpr (Z >> I & 1u)
+  if constexpr (Z[I] == entry::zero)
     return S(0);
   else
     return comp<std::size_t(I)>(a);
 }
-template <unsigned Za, unsigned Zb, int I, class S>
+template <pattern3 Za, pattern3 Zb, int I, class S>
 KANE_ALWAYS_INLINE constexpr S sum_part(const v3<S>& a, const v3<S>& b) {
-  if constexpr (Za >> I & 1u)
+  if constexpr (Za[I] == entry::zero)
     return part<Zb, I>(b);
-  else if constexpr (Zb >> I & 1u)
+  else if constexpr (Zb[I] == entry::zero)
     return part<Za, I>(a);
   else
     return part<Za, I>(a) + part<Zb, I>(b);
 }
-template <unsigned Za, unsigned Zb, class S>
+template <pattern3 Za, pattern3 Zb, class S>
 KANE_ALWAYS_INLINE constexpr v3<S> add_known(const v3<S>& a, const v3<S>& b) {
-  if constexpr (Za == 0 && Zb == 0)  // the common case: nothing to instantiate
+  if constexpr (!any_zero(Za) && !any_zero(Zb))  // the common case: nothing to instantiate
     return a + b;
   else
     return {sum_part<Za, Zb, 0>(a, b), sum_part<Za, Zb, 1>(a, b), sum_part<Za, Zb, 2>(a, b)};
 }
-template <unsigned Za, unsigned Zb, int I, class S>
+template <pattern3 Za, pattern3 Zb, int I, class S>
 KANE_ALWAYS_INLINE constexpr S difference_part(const v3<S>& a, const v3<S>& b) {
-  if constexpr (Zb >> I & 1u)
+  if constexpr (Zb[I] == entry::zero)
     return part<Za, I>(a);
   else
     return part<Za, I>(a) - part<Zb, I>(b);  // 0 - y, not -y: the sign of a zero as before
 }
-template <unsigned Za, unsigned Zb, class S>
+template <pattern3 Za, pattern3 Zb, class S>
 KANE_ALWAYS_INLINE constexpr v3<S> subtract_known(const v3<S>& a, const v3<S>& b) {
-  if constexpr (Za == 0 && Zb == 0)
+  if constexpr (!any_zero(Za) && !any_zero(Zb))
     return a - b;
   else
     return {difference_part<Za, Zb, 0>(a, b), difference_part<Za, Zb, 1>(a, b),
             difference_part<Za, Zb, 2>(a, b)};
 }
-template <unsigned Z, int I, class S>
+template <pattern3 Z, int I, class S>
 KANE_ALWAYS_INLINE constexpr S scaled_part(const S& s, const v3<S>& a) {
-  if constexpr (Z >> I & 1u)
+  if constexpr (Z[I] == entry::zero)
     return S(0);
   else
     return s * part<Z, I>(a);
 }
-template <unsigned Z, class S>
+template <pattern3 Z, class S>
 KANE_ALWAYS_INLINE constexpr v3<S> scale_known(const S& s, const v3<S>& a) {
-  if constexpr (Z == 0)
+  if constexpr (!any_zero(Z))
     return s * a;
   else
     return {scaled_part<Z, 0>(s, a), scaled_part<Z, 1>(s, a), scaled_part<Z, 2>(s, a)};
 }
-// the zeros of a x b: component i = a_j b_k - a_k b_j, (i, j, k) cyclic
-template <unsigned Za, unsigned Zb>
-constexpr unsigned cross_zeros() {
-  unsigned z = 0;
+// The zeros of a x b: component i = a_j b_k - a_k b_j, (i, j, k) cyclic.
+constexpr bool product_zero(const pattern3& za, const pattern3& zb, int j, int k) {
+  return za[std::size_t(j)] == entry::zero || zb[std::size_t(k)] == entry::zero;
+}
+constexpr pattern3 cross_zeros(const pattern3& za, const pattern3& zb) {
+  pattern3 z = unknown3;
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
-    if (((Za >> j | Zb >> k) & 1u) && ((Za >> k | Zb >> j) & 1u)) z |= 1u << i;
+    if (product_zero(za, zb, j, k) && product_zero(za, zb, k, j)) z[std::size_t(i)] = entry::zero;
   }
   return z;
 }
-template <unsigned Za, unsigned Zb, int I, class S>
+// Za and Zb: the zeros common to both.
+constexpr pattern3 common_zeros(const pattern3& za, const pattern3& zb) {
+  pattern3 z = unknown3;
+  for (std::size_t i = 0; i < 3; ++i)
+    if (za[i] == entry::zero && zb[i] == entry::zero) z[i] = entry::zero;
+  return z;
+}
+template <pattern3 Za, pattern3 Zb, int I, class S>
 KANE_ALWAYS_INLINE constexpr S cross_part(const v3<S>& a, const v3<S>& b) {
   constexpr int j = (I + 1) % 3, k = (I + 2) % 3;
-  constexpr bool first = !((Za >> j | Zb >> k) & 1u), second = !((Za >> k | Zb >> j) & 1u);
+  constexpr bool first = !product_zero(Za, Zb, j, k), second = !product_zero(Za, Zb, k, j);
   if constexpr (first && second)
     return part<Za, j>(a) * part<Zb, k>(b) - part<Za, k>(a) * part<Zb, j>(b);
   else if constexpr (first)
@@ -156,9 +172,9 @@ KANE_ALWAYS_INLINE constexpr S cross_part(const v3<S>& a, const v3<S>& b) {
   else
     return S(0);
 }
-template <unsigned Za, unsigned Zb, class S>
+template <pattern3 Za, pattern3 Zb, class S>
 KANE_ALWAYS_INLINE constexpr v3<S> cross_known(const v3<S>& a, const v3<S>& b) {
-  if constexpr (Za == 0 && Zb == 0)
+  if constexpr (!any_zero(Za) && !any_zero(Zb))
     return cross3(a, b);
   else
     return {cross_part<Za, Zb, 0>(a, b), cross_part<Za, Zb, 1>(a, b), cross_part<Za, Zb, 2>(a, b)};

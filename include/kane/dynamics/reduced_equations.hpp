@@ -35,36 +35,39 @@ struct independent_speeds {
   template <auto Nz>
   static constexpr std::array<bool, n> nonzero() {
     bool dependent = false;
-    for (std::size_t j = 0; j < NH::m; ++j) dependent = dependent || Nz[NH::dependents[j] - 1];
+    for (std::size_t j = 0; j < NH::m; ++j) dependent = dependent || !zero_column(Nz[NH::dependents[j] - 1]);
     std::array<bool, n> out{};
-    for (std::size_t k = 0; k < n; ++k) out[k] = Nz[NH::independents[k] - 1] || dependent;
+    for (std::size_t k = 0; k < n; ++k) out[k] = !zero_column(Nz[NH::independents[k] - 1]) || dependent;
     return out;
   }
   template <auto Nz>
-  static constexpr std::array<int, n> kinds() {  // v~_k is v_ind_k where no dependent column enters
+  static constexpr std::array<pattern3, n> kinds() {  // v~_k is v_ind_k where no dependent column enters
     bool dependent = false;
-    for (std::size_t j = 0; j < NH::m; ++j) dependent = dependent || Nz[NH::dependents[j] - 1];
-    std::array<int, n> out{};
-    for (std::size_t k = 0; k < n; ++k) out[k] = dependent ? general_column : Nz[NH::independents[k] - 1];
+    for (std::size_t j = 0; j < NH::m; ++j) dependent = dependent || !zero_column(Nz[NH::dependents[j] - 1]);
+    std::array<pattern3, n> out{};
+    for (std::size_t k = 0; k < n; ++k) out[k] = dependent ? unknown3 : Nz[NH::independents[k] - 1];
     return out;
   }
   template <auto Nz, class V>
   KANE_ALWAYS_INLINE Eigen::Matrix<S, 3, int(n)> columns(const V& v) const {
     Eigen::Matrix<S, 3, int(n)> t;
     static_for<n>([&](auto k) {
-      if constexpr (Nz[NH::independents[k] - 1])
+      if constexpr (!zero_column(Nz[NH::independents[k] - 1]))
         t.col(Eigen::Index(k)) = v.col(Eigen::Index(NH::independents[k] - 1));
       else
         t.col(Eigen::Index(k)).setZero();
       static_for<NH::m>([&](auto j) {
-        constexpr int kind = Nz[NH::dependents[j] - 1];
-        if constexpr (kind == general_column)
+        constexpr pattern3 kind = Nz[NH::dependents[j] - 1];
+        constexpr int i = column_axis(kind);
+        if constexpr (zero_column(kind))
+          return;
+        else if constexpr (i < 0)
           t.col(Eigen::Index(k)) +=
               v.col(Eigen::Index(NH::dependents[j] - 1)) * A(Eigen::Index(j), Eigen::Index(k));
-        else if constexpr (kind > 0)
-          t(kind - 1, Eigen::Index(k)) += A(Eigen::Index(j), Eigen::Index(k));
-        else if constexpr (kind < 0)
-          t(-kind - 1, Eigen::Index(k)) -= A(Eigen::Index(j), Eigen::Index(k));
+        else if constexpr (kind[std::size_t(i)] == entry::one)
+          t(i, Eigen::Index(k)) += A(Eigen::Index(j), Eigen::Index(k));
+        else
+          t(i, Eigen::Index(k)) -= A(Eigen::Index(j), Eigen::Index(k));
       });
     });
     return t;
@@ -72,13 +75,16 @@ struct independent_speeds {
   template <auto Nz, class X, class V>
   KANE_ALWAYS_INLINE void add_bias(X& a0, const V& v) const {
     static_for<NH::m>([&](auto j) {
-      constexpr int kind = Nz[NH::dependents[j] - 1];
-      if constexpr (kind == general_column)
+      constexpr pattern3 kind = Nz[NH::dependents[j] - 1];
+      constexpr int i = column_axis(kind);
+      if constexpr (zero_column(kind))
+        return;
+      else if constexpr (i < 0)
         a0 += v.col(Eigen::Index(NH::dependents[j] - 1)) * b[j];
-      else if constexpr (kind > 0)
-        a0(kind - 1) += b[j];
-      else if constexpr (kind < 0)
-        a0(-kind - 1) -= b[j];
+      else if constexpr (kind[std::size_t(i)] == entry::one)
+        a0(i) += b[j];
+      else
+        a0(i) -= b[j];
     });
   }
 };

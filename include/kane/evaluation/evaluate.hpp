@@ -50,37 +50,37 @@ template <class V>
 struct root_unit : std::false_type {};
 template <class F, int I>
 struct root_unit<unit<F, I>> : std::bool_constant<std::is_void_v<typename lifted_t<F, I>::tree_parent>> {};
-template <int I, class S>
-S component(const v3<S>& a) {
-  return I == 1 ? a.x : I == 2 ? a.y : a.z;
-}
 
-// The components of v known to be zero at compile time (bit i: component i + 1), in the root's
-// components (A void) or in A's: a unit vector of that frame has two zeros; scaling, negation,
-// sums and cross products keep what follows from them.
+// The components of v known to be zero at compile time (entry::zero; the others entry::other), in
+// the root's components (A void) or in A's: a unit vector of that frame has two zeros; scaling,
+// negation, sums and cross products keep what follows from them.
 template <class A, class V>
-constexpr unsigned zeros_in() {
+constexpr pattern3 zeros_in() {
   using C = const V&;
   if constexpr (is_zero_vector_v<V>)
-    return 7u;
+    return {entry::zero, entry::zero, entry::zero};
   else if constexpr (is_unit<V>::value) {
     using F = lifted_t<typename V::frame, V::index>;
     constexpr bool own = std::is_void_v<A> ? std::is_void_v<typename F::tree_parent>
                                            : std::is_same_v<typename V::frame, A> || std::is_same_v<F, A>;
-    return own ? 7u & ~(1u << (V::index - 1)) : 0u;
+    pattern3 z = unknown3;
+    if (own)
+      for (std::size_t i = 0; i < 3; ++i)
+        if (int(i) != V::index - 1) z[i] = entry::zero;
+    return z;
   } else if constexpr (is_v<V, scaled> || is_v<V, vneg> || Quantity<V>)
     return zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().v)>>();
   else if constexpr (is_v<V, vsum> || is_v<V, vdiff>)
-    return zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().l)>>() &
-           zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().r)>>();
+    return common_zeros(zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().l)>>(),
+                        zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().r)>>());
   else if constexpr (is_v<V, vcross>)
-    return cross_zeros<zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().l)>>(),
-                       zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().r)>>()>();
+    return cross_zeros(zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().l)>>(),
+                       zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().r)>>());
   else
-    return 0u;
+    return unknown3;
 }
 template <class A, class X>
-inline constexpr unsigned zeros_in_v = zeros_in<A, std::remove_cvref_t<X>>();
+inline constexpr pattern3 zeros_in_v = zeros_in<A, std::remove_cvref_t<X>>();
 
 template <memo_use Memo = memo_use::recall, class Ev, class X>
 KANE_ALWAYS_INLINE typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
@@ -147,11 +147,13 @@ KANE_ALWAYS_INLINE typename Ev::scalar eval_scalar(const X& x, const Ev& ev) {
   } else if constexpr (is_v<X, call>)
     return x.f(eval_scalar(x.x, ev));
   else if constexpr (is_v<X, vdot>) {
-    if constexpr (root_unit<decltype(x.r)>::value)  // v . e_Ri: a component
-      return component<decltype(x.r)::index>(eval_vector(x.l, ev));
-    else if constexpr (root_unit<decltype(x.l)>::value)
-      return component<decltype(x.l)::index>(eval_vector(x.r, ev));
-    else
+    if constexpr (root_unit<decltype(x.r)>::value) {  // v . e_Ri: a component
+      const v3<S> v = eval_vector(x.l, ev);
+      return comp<std::size_t(decltype(x.r)::index - 1)>(v);
+    } else if constexpr (root_unit<decltype(x.l)>::value) {
+      const v3<S> v = eval_vector(x.r, ev);
+      return comp<std::size_t(decltype(x.l)::index - 1)>(v);
+    } else
       return dot3(eval_vector(x.l, ev), eval_vector(x.r, ev));
   } else
     static_assert(!sizeof(X), "kane: evaluation of an unknown scalar node");

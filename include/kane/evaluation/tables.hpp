@@ -23,6 +23,13 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
+// x = T u + t: the table T of the partial velocities (or partial derivatives) and the remainder t.
+template <class S, int Rows, int N>
+struct linear_result {
+  Eigen::Matrix<S, Rows, N> T;
+  Eigen::Matrix<S, Rows, 1> t;
+};
+
 namespace detail {
 template <class Ev>
 using speeds_of = std::conditional_t<std::is_void_v<typename Ev::speed_set>, qdot_speeds<Ev::state_type::nq>,
@@ -95,7 +102,7 @@ KANE_ALWAYS_INLINE auto linear_parts_in(const X& x, const Ev& ev) {
   }
   (std::make_index_sequence<Sp::n>{});
   if constexpr (Parts == linear_part::both)
-    return std::pair{t, rest};
+    return linear_result<typename Ev::scalar, rows, int(Sp::n)>{t, rest};
   else if constexpr (has(Parts, linear_part::table))
     return t;
   else
@@ -111,7 +118,7 @@ requires(!inlined_entry<Ev>) KANE_FLATTEN auto linear_parts(const X& x, const Ev
 }
 }  // namespace detail
 
-// The pair (T, t) of x = T u + t in A.
+// T and t of x = T u + t in A.
 template <Frame A, class X, class Ev>
 requires(Evaluator<Ev> && (ScalarExpr<X> || VectorExpr<X>)) auto linear_in_speeds(const X& x, const Ev& ev) {
   return detail::linear_parts<A, detail::linear_part::both>(x, ev);

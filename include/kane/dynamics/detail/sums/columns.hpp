@@ -1,5 +1,5 @@
-// The kinds of partial velocity columns, known at compile time, and the sums that read them:
-// a column v_r of a vector x in A's components is 0, +-e_i (a unit vector of A) or general.
+// What partial velocity columns are at every state, known at compile time, and the sums that read
+// them: a column v_r of a vector x in A's components is 0, +-e_i (a unit vector of A) or general.
 #pragma once
 
 #include <array>
@@ -16,10 +16,30 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
-// What each partial velocity v_r of x is at every state, in A's components: 0 (zero), +-(i + 1)
-// (+-e_i: a unit vector of A, or of the root for A the root; the sums add a number to one
-// component), or general_column. A void: the root of x's tree.
-inline constexpr int general_column = 4;
+// What each partial velocity v_r of x is at every state, in A's components: 0, +-e_i (a unit vector of
+// A, or of the root for A the root: entry one or minus_one at i, zero elsewhere), or unknown3 (general).
+// A void: the root of x's tree.
+constexpr pattern3 unit_pattern(int i, entry e) {
+  pattern3 p{entry::zero, entry::zero, entry::zero};
+  p[std::size_t(i)] = e;
+  return p;
+}
+constexpr bool zero_column(const pattern3& k) {
+  return k[0] == entry::zero && k[1] == entry::zero && k[2] == entry::zero;
+}
+// The axis i of a column +-e_i, or -1.
+constexpr int column_axis(const pattern3& k) {
+  int axis = -1;
+  for (int i = 0; i < 3; ++i) {
+    const entry e = k[std::size_t(i)];
+    if (e == entry::one || e == entry::minus_one) {
+      if (axis >= 0) return -1;
+      axis = i;
+    } else if (e != entry::zero)
+      return -1;
+  }
+  return axis;
+}
 template <class V, class A>
 constexpr bool unit_in() {
   if constexpr (!is_unit<V>::value)
@@ -32,24 +52,24 @@ constexpr bool unit_in() {
     return std::is_same_v<typename V::frame, A> || std::is_same_v<lifted_t<typename V::frame, V::index>, A>;
 }
 template <class V, class A>
-constexpr int column_kind() {
+constexpr pattern3 column_kind() {
   if constexpr (is_zero_v<V> || is_zero_vector_v<V>)
-    return 0;
+    return {entry::zero, entry::zero, entry::zero};
   else if constexpr (unit_in<V, A>())
-    return V::index;
+    return unit_pattern(V::index - 1, entry::one);
   else if constexpr (is_vneg<V>::value) {
     using U = std::remove_cvref_t<decltype(std::declval<const V&>().v)>;
     if constexpr (unit_in<U, A>())
-      return -U::index;
+      return unit_pattern(U::index - 1, entry::minus_one);
     else
-      return general_column;
+      return unknown3;
   } else
-    return general_column;
+    return unknown3;
 }
 template <class Sp, class X, class A = void>
-constexpr std::array<int, Sp::n> nonzero_columns() {
+constexpr std::array<pattern3, Sp::n> nonzero_columns() {
   return []<std::size_t... R>(std::index_sequence<R...>) {
-    return std::array<int, Sp::n>{
+    return std::array<pattern3, Sp::n>{
         column_kind<std::remove_cvref_t<decltype(column_of<Sp, R + 1>(std::declval<const X&>()))>, A>()...};
   }
   (std::make_index_sequence<Sp::n>{});
@@ -60,22 +80,25 @@ template <auto K, class S, int N>
 inline void add_transposed(Eigen::Matrix<S, N, 1>& out, const Eigen::Matrix<S, 3, N>& v,
                            const Eigen::Matrix<S, 3, 1>& x) {
   constexpr bool units = [] {
-    for (int k : K)
-      if (k != 0 && k != general_column) return true;
+    for (const pattern3& k : K)
+      if (column_axis(k) >= 0) return true;
     return false;
   }();
   if constexpr (!units && !std::is_floating_point_v<S>)
     out.noalias() += v.transpose() * x;
   else
     static_for<std::size_t(N)>([&](auto r) {
-      constexpr int k = K[r];
-      if constexpr (k == general_column)
+      constexpr pattern3 k = K[r];
+      constexpr int i = column_axis(k);
+      if constexpr (zero_column(k))
+        return;
+      else if constexpr (i < 0)
         out(Eigen::Index(r)) +=
             v(0, Eigen::Index(r)) * x(0) + v(1, Eigen::Index(r)) * x(1) + v(2, Eigen::Index(r)) * x(2);
-      else if constexpr (k > 0)
-        out(Eigen::Index(r)) += x(k - 1);
-      else if constexpr (k < 0)
-        out(Eigen::Index(r)) -= x(-k - 1);
+      else if constexpr (k[std::size_t(i)] == entry::one)
+        out(Eigen::Index(r)) += x(i);
+      else
+        out(Eigen::Index(r)) -= x(i);
     });
 }
 }  // namespace kane::detail

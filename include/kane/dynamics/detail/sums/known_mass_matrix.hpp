@@ -49,10 +49,11 @@ constexpr known_columns<Sp::n> columns_known_in(const X& x) {
     (
         [&] {
           using C = std::remove_cvref_t<decltype(column_of<Sp, R + 1>(x))>;
-          if constexpr (k[R] == 0)
+          constexpr int i = column_axis(k[R]);
+          if constexpr (zero_column(k[R]))
             return;
-          else if constexpr (k[R] != general_column)
-            out.c[R][std::size_t(k[R] < 0 ? -k[R] : k[R]) - 1] = k[R] < 0 ? -1 : 1;
+          else if constexpr (i >= 0)
+            out.c[R][std::size_t(i)] = k[R][std::size_t(i)] == entry::one ? 1 : -1;
           else if constexpr (std::is_same_v<typename fixed_frame_of<C>::type, F> && known_vector<C>())
             out.c[R] = known_components(column_of<Sp, R + 1>(x));
           else

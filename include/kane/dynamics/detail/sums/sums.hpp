@@ -92,11 +92,11 @@ struct all_speeds {
   template <auto Nz>
   static constexpr std::array<bool, n> nonzero() {
     std::array<bool, n> out{};
-    for (std::size_t k = 0; k < n; ++k) out[k] = Nz[k] != 0;
+    for (std::size_t k = 0; k < n; ++k) out[k] = !zero_column(Nz[k]);
     return out;
   }
   template <auto Nz>
-  static constexpr std::array<int, n> kinds() {  // of the columns (columns.hpp)
+  static constexpr std::array<pattern3, n> kinds() {  // of the columns (columns.hpp)
     return Nz;
   }
   template <auto Nz, class V>
