@@ -286,6 +286,24 @@ TEST_CASE("21 links: u' by articulated bodies equals M^-1 f by composite bodies 
   }
 }
 
+// Articulated bodies on the branched tree (an oblique axis, a fixed tool, a particle on a branch),
+// called below the size that forward_dynamics takes them at.
+TEST_CASE("tree: u' by articulated bodies equals M^-1 f by composite bodies and inward sums", "[recursive]") {
+  std::mt19937 rng(29);
+  for (int k = 0; k < 10; ++k) {
+    const auto s = random_state<tree::state>(rng);
+    tree::evaluator ev;
+    ev.update(s);
+    using JF = kane::detail::joint_form_of<tree::system, tree::evaluator>;
+    const kane::detail::body_frames<JF, tree::evaluator> bf(ev);
+    Eigen::Matrix<double, 4, 1> ud;
+    REQUIRE(kane::detail::articulated_accelerations<JF, tree::system>(bf, ev, ud));
+    const auto eom = kane::mass_matrix_and_forcing<tree::system>(ev);
+    const Eigen::Matrix<double, 4, 1> ref = eom.M.llt().solve(eom.f);
+    CHECK((ud - ref).cwiseAbs().maxCoeff() < 1e-10 * (1 + ref.cwiseAbs().maxCoeff()));
+  }
+}
+
 TEST_CASE("the recursive entry points report a state that is not finite", "[recursive]") {
   std::mt19937 rng(17);
   auto s = random_state<arm::state>(rng);

@@ -44,6 +44,9 @@ template <class S>
 struct v3 {
   S x, y, z;
 };
+// A 3 x 3 matrix by its rows.
+template <class S>
+using m3 = std::array<v3<S>, 3>;
 
 template <class S>
 KANE_ALWAYS_INLINE constexpr v3<S> operator+(const v3<S>& a, const v3<S>& b) {

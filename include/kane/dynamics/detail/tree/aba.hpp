@@ -30,49 +30,68 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
+// M v and M^T v
 template <class S>
-using mat3 = Eigen::Matrix<S, 3, 3>;
-template <class S>
-KANE_ALWAYS_INLINE mat3<S> skew(const v3<S>& t) {
-  mat3<S> m;
-  m << S(0), -t.z, t.y, t.z, S(0), -t.x, -t.y, t.x, S(0);
-  return m;
+KANE_ALWAYS_INLINE v3<S> times3(const m3<S>& m, const v3<S>& v) {
+  return {dot3(m[0], v), dot3(m[1], v), dot3(m[2], v)};
 }
 template <class S>
-KANE_ALWAYS_INLINE v3<S> times3(const mat3<S>& m, const v3<S>& v) {
-  return {m(0, 0) * v.x + m(0, 1) * v.y + m(0, 2) * v.z, m(1, 0) * v.x + m(1, 1) * v.y + m(1, 2) * v.z,
-          m(2, 0) * v.x + m(2, 1) * v.y + m(2, 2) * v.z};
+KANE_ALWAYS_INLINE v3<S> times3_transposed(const m3<S>& m, const v3<S>& v) {
+  return v.x * m[0] + v.y * m[1] + v.z * m[2];
+}
+// M^T k, k of pattern K
+template <std::array<entry, 3> K, class S>
+KANE_ALWAYS_INLINE v3<S> transposed_along(const m3<S>& m, const v3<S>& k) {
+  return {dot_along<K>(v3<S>{m[0].x, m[1].x, m[2].x}, k), dot_along<K>(v3<S>{m[0].y, m[1].y, m[2].y}, k),
+          dot_along<K>(v3<S>{m[0].z, m[1].z, m[2].z}, k)};
+}
+// M - x y^T / d, and the symmetric M - x x^T / d
+template <class S>
+KANE_ALWAYS_INLINE m3<S> minus_outer(const m3<S>& m, const v3<S>& x, const v3<S>& y, const S& inv) {
+  return {m[0] - (inv * x.x) * y, m[1] - (inv * x.y) * y, m[2] - (inv * x.z) * y};
 }
 template <class S>
-KANE_ALWAYS_INLINE v3<S> times3_transposed(const mat3<S>& m, const v3<S>& v) {
-  return {m(0, 0) * v.x + m(1, 0) * v.y + m(2, 0) * v.z, m(0, 1) * v.x + m(1, 1) * v.y + m(2, 1) * v.z,
-          m(0, 2) * v.x + m(1, 2) * v.y + m(2, 2) * v.z};
+KANE_ALWAYS_INLINE sym3<S> minus_outer(const sym3<S>& m, const v3<S>& x, const S& inv) {
+  const v3<S> y = inv * x;
+  return {m[0] - x.x * y.x, m[1] - x.y * y.y, m[2] - x.z * y.z,
+          m[3] - x.x * y.y, m[4] - x.y * y.z, m[5] - x.z * y.x};
 }
-// E m E^T
-template <class S, int A>
-KANE_ALWAYS_INLINE mat3<S> turned_up(const turn<S, A>& e, const mat3<S>& m) {
-  if constexpr (A < 0)
-    return e.e * m * e.e.transpose();
-  else {
-    constexpr int b = (A + 1) % 3, d = (A + 2) % 3;
-    mat3<S> o = m;
-    for (int j = 0; j < 3; ++j) {
-      const S x = o(b, j), y = o(d, j);
-      o(b, j) = e.c * x - e.s * y, o(d, j) = e.s * x + e.c * y;
-    }
-    for (int i = 0; i < 3; ++i) {
-      const S x = o(i, b), y = o(i, d);
-      o(i, b) = e.c * x - e.s * y, o(i, d) = e.s * x + e.c * y;
-    }
-    return o;
-  }
+template <class S>
+KANE_ALWAYS_INLINE sym3<S> operator+(const sym3<S>& a, const sym3<S>& b) {
+  return {a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3], a[4] + b[4], a[5] + b[5]};
+}
+template <class S>
+KANE_ALWAYS_INLINE m3<S> operator+(const m3<S>& a, const m3<S>& b) {
+  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
 }
 
 template <class S>
 struct articulated {
-  mat3<S> a, b, c;  // [A B; B^T C]
-  v3<S> n, f;       // bias force
+  sym3<S> a;  // [A B; B^T C]
+  m3<S> b;
+  sym3<S> c;
+  v3<S> n, f;  // bias force
 };
+
+// [A B; B^T C] of the child, turned to the parent, moved by t (pattern O) to the parent's origin:
+// C, B + [t] C, A - P - P^T - [t] C [t] with P = B [t].
+template <std::array<entry, 3> O, class S>
+KANE_ALWAYS_INLINE void add_moved(articulated<S>& z, const sym3<S>& a, const m3<S>& b, const sym3<S>& c,
+                                  const v3<S>& t) {
+  if constexpr (all_zero(O)) {
+    z.a = z.a + a, z.b = z.b + b, z.c = z.c + c;
+  } else {
+    const v3<S> c0{c[0], c[3], c[5]}, c1{c[3], c[1], c[4]}, c2{c[5], c[4], c[2]};  // C's columns
+    const v3<S> tc0 = cross_from<O>(t, c0), tc1 = cross_from<O>(t, c1), tc2 = cross_from<O>(t, c2);
+    const m3<S> tc{v3<S>{tc0.x, tc1.x, tc2.x}, v3<S>{tc0.y, tc1.y, tc2.y}, v3<S>{tc0.z, tc1.z, tc2.z}};
+    const m3<S> p{cross_from<O>(t, b[0]), cross_from<O>(t, b[1]), cross_from<O>(t, b[2])};     // -P's rows
+    const m3<S> q{cross_from<O>(t, tc[0]), cross_from<O>(t, tc[1]), cross_from<O>(t, tc[2])};  // -[t]C[t]
+    z.a = z.a + sym3<S>{a[0] + S(2) * p[0].x + q[0].x,   a[1] + S(2) * p[1].y + q[1].y,
+                        a[2] + S(2) * p[2].z + q[2].z,   a[3] + p[0].y + p[1].x + q[0].y,
+                        a[4] + p[1].z + p[2].y + q[1].z, a[5] + p[2].x + p[0].z + q[2].x};
+    z.b = z.b + b + tc, z.c = z.c + c;
+  }
+}
 
 // u' of the joint-form system Sys; false where an articulated inertia along a speed is not positive.
 template <class JF, class Sys, class Ev, class Out>
@@ -105,7 +124,11 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
       w[g] = add_along<K, onto::sum>(wp, u, k);
       cw[g] = u * cross_along<K>(w[g], k), cv[g] = u * cross_along<K>(v[g], k);
     }
-    x[g].a.setZero(), x[g].b.setZero(), x[g].c.setZero(), x[g].n = zero, x[g].f = zero;
+    x[g] = {{S(0), S(0), S(0), S(0), S(0), S(0)},
+            {zero, zero, zero},
+            {S(0), S(0), S(0), S(0), S(0), S(0)},
+            zero,
+            zero};
   });
   composite_inertia<S> zero_inertia{S(0), zero, {S(0), S(0), S(0), S(0), S(0), S(0)}};
   std::array<composite_inertia<S>, nf> rigid;
@@ -131,9 +154,9 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
     constexpr std::size_t g = i + 1;
     const composite_inertia<S>& q = rigid[g];
     articulated<S>& y = x[g];
-    y.a << q.i[0], q.i[3], q.i[5], q.i[3], q.i[1], q.i[4], q.i[5], q.i[4], q.i[2];
-    y.b = skew(q.h);
-    y.c = mat3<S>::Identity() * q.mass;
+    y.a = q.i;
+    y.b = {vec{S(0), -q.h.z, q.h.y}, vec{q.h.z, S(0), -q.h.x}, vec{-q.h.y, q.h.x, S(0)}};  // [h]
+    y.c = {q.mass, q.mass, q.mass, S(0), S(0), S(0)};
     const vec hh = sym_times(q.i, w[g]) + cross3(q.h, v[g]), ll = q.mass * v[g] - cross3(q.h, w[g]);
     y.n = y.n + cross3(w[g], hh) + cross3(v[g], ll), y.f = y.f + cross3(w[g], ll);
   });
@@ -144,33 +167,28 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
     articulated<S>& y = x[g];
     if constexpr (r >= 0) {
       using F = frame_at<JF, g>;
+      constexpr auto K = joint_axis_pattern<F>();
       const vec k = joint_axis_in_frame<F, S>();
-      uw[r] = times3(y.a, k), uv[r] = times3_transposed(y.b, k);
-      dd[r] = dot3(k, uw[r]), dn[r] = -dot3(k, y.n);
+      uw[r] = symmetric_along<K>(y.a, k), uv[r] = transposed_along<K>(y.b, k);
+      dd[r] = dot_along<K>(uw[r], k), dn[r] = -dot_along<K>(y.n, k);
       ok = ok && dd[r] > S(0);
       if constexpr (p > 0) {
         const S inv = S(1) / dd[r];
-        const Eigen::Matrix<S, 3, 1> a1(uw[r].x, uw[r].y, uw[r].z), b1(uv[r].x, uv[r].y, uv[r].z);
-        y.a -= inv * a1 * a1.transpose(), y.b -= inv * a1 * b1.transpose(), y.c -= inv * b1 * b1.transpose();
+        y.a = minus_outer(y.a, uw[r], inv), y.b = minus_outer(y.b, uw[r], uv[r], inv);
+        y.c = minus_outer(y.c, uv[r], inv);
         const S s = dn[r] * inv;
-        y.n = y.n + times3(y.a, cw[g]) + times3(y.b, cv[g]) + s * uw[r];
-        y.f = y.f + times3_transposed(y.b, cw[g]) + times3(y.c, cv[g]) + s * uv[r];
+        y.n = y.n + sym_times(y.a, cw[g]) + times3(y.b, cv[g]) + s * uw[r];
+        y.f = y.f + times3_transposed(y.b, cw[g]) + sym_times(y.c, cv[g]) + s * uv[r];
       }
     }
     if constexpr (p > 0) {
       const auto& e = std::get<g>(bf.e);
-      constexpr auto O = BF::offset_pattern(g);
       articulated<S>& z = x[p];
-      const mat3<S> a1 = turned_up(e, y.a), b1 = turned_up(e, y.b), c1 = turned_up(e, y.c);
       const vec f1 = e.up(y.f);
       z.f = z.f + f1, z.n = z.n + e.up(y.n);
-      if constexpr (all_zero(O))
-        z.a += a1, z.b += b1, z.c += c1;
-      else {
-        const mat3<S> tx = skew(bf.offset[g]), tc = tx * c1;
-        z.a += a1 - b1 * tx + tx * b1.transpose() - tc * tx, z.b += b1 + tc, z.c += c1;
-        z.n = z.n + cross3(bf.offset[g], f1);
-      }
+      constexpr auto O = BF::offset_pattern(g);
+      add_moved<O>(z, e.up(y.a), e.up(y.b), e.up(y.c), bf.offset[g]);
+      if constexpr (!all_zero(O)) z.n = z.n + cross_from<O>(bf.offset[g], f1);
     }
   });
   std::array<vec, nf> aw, av;                                         // spatial accelerations

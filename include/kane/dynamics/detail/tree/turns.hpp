@@ -73,6 +73,12 @@ struct turn {
     o[ab] = c * i[ab] - s * i[ad], o[ad] = s * i[ab] + c * i[ad];
     return o;
   }
+  KANE_ALWAYS_INLINE m3<S> up(const m3<S>& m) const {  // E M E^T: rows b and d mixed, then each row
+    m3<S> o = m;
+    o[std::size_t(b)] = c * m[std::size_t(b)] - s * m[std::size_t(d)];
+    o[std::size_t(d)] = s * m[std::size_t(b)] + c * m[std::size_t(d)];
+    return {up(o[0]), up(o[1]), up(o[2])};
+  }
 };
 // Any other edge: E from the evaluator's axes.
 template <class S>
@@ -96,6 +102,12 @@ struct turn<S, -1> {
   }
   static constexpr std::array<entry, 3> turned(const std::array<entry, 3>& p) {
     return all_zero(p) ? p : std::array<entry, 3>{entry::other, entry::other, entry::other};
+  }
+  KANE_ALWAYS_INLINE m3<S> up(const m3<S>& m) const {  // E M E^T
+    const m3<S> r{e(0, 0) * m[0] + e(0, 1) * m[1] + e(0, 2) * m[2],
+                  e(1, 0) * m[0] + e(1, 1) * m[1] + e(1, 2) * m[2],
+                  e(2, 0) * m[0] + e(2, 1) * m[1] + e(2, 2) * m[2]};
+    return {up(r[0]), up(r[1]), up(r[2])};
   }
   KANE_ALWAYS_INLINE sym3<S> up(const sym3<S>& i) const {
     sym3<S> o;
