@@ -100,8 +100,9 @@ else
   echo "| row | before | after | after/before |"
   echo "|---|---|---|---|"
   awk 'FNR == NR { b[$1] = $3; next }
-    { seen[$1] = 1; printf "| %s | %s | %.0f | %s |\n", $1, ($1 in b) ? sprintf("%.0f", b[$1]) : "-", $3,
-        ($1 in b) && b[$1] > 0 ? sprintf("%.3f", $3 / b[$1]) : "-" }
+    { seen[$1] = 1; x = y = "-"
+      if ($1 in b) { x = sprintf("%.0f", b[$1]); if (b[$1] > 0) y = sprintf("%.3f", $3 / b[$1]) }
+      printf "| %s | %s | %.0f | %s |\n", $1, x, $3, y }
     END { for (r in b) if (!(r in seen)) printf "| %s | %.0f | - | - |\n", r, b[r] }' \
     "$work/before.txt" "$work/after.txt"
 fi
