@@ -1,20 +1,27 @@
 #!/usr/bin/env bash
-# Regenerates the tables of docs/performance.md on this machine: builds the presets bench-o2
-# (-O2) and bench-native (-O3 -march=native), runs every benchmark binary (5 repetitions),
-# measures the compile cost of the units listed below (g++ -O2, one at a time), and rewrites
-# each block between "<!-- generated: NAME -->" and "<!-- end -->" of the page.
-# Needs libbenchmark-dev liborocos-kdl-dev. Usage: benchmarks/performance_page.sh [--no-build]
-# [--no-run] [--no-compile]: without building the presets first; without the run-time tables or
-# without the compile table (a table not measured is kept as it is).
+# Regenerates the tables of docs/performance.md on this machine, the one entry point: builds the
+# presets bench-o2 (-O2) and bench-native (-O3 -march=native), runs every benchmark binary (5
+# repetitions) and rewrites each block "<!-- generated: NAME -->" ... "<!-- end -->" of the page it
+# measured; the compile table is benchmarks/compile_cost.sh table. Usage: as usage() prints.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+usage() {
+  cat <<'EOF'
+apt-get install -y libbenchmark-dev liborocos-kdl-dev   # once: Google Benchmark and Orocos KDL
+benchmarks/performance_page.sh                # every table: build both presets, run, compile
+benchmarks/performance_page.sh --no-build     # every table, the presets' binaries as they are
+benchmarks/performance_page.sh --no-run       # the compile table alone
+benchmarks/performance_page.sh --no-compile   # the run-time tables alone
+EOF
+  exit 2
+}
 build=1 run=1 compile=1
 for arg in "$@"; do
   case $arg in
     --no-build) build=0 ;;
     --no-run) run=0 build=0 ;;
     --no-compile) compile=0 ;;
-    *) echo "usage: $0 [--no-build] [--no-run] [--no-compile]" >&2 && exit 2 ;;
+    *) usage ;;
   esac
 done
 page=docs/performance.md
@@ -105,56 +112,9 @@ awk -F, -v reps=$reps -v dir="$work" '
     }
   }' "$work/runs.csv"
 
-# --- compile cost: g++ -O2, user CPU seconds and peak memory, one unit at a time.
-if [ $compile = 1 ]; then
-flags=(-std=c++20 -O2 -DNDEBUG -Iinclude -Iexamples -Ibenchmarks -isystem /usr/include/eigen3 -c -o /dev/null)
-for f in examples/models/bicycle_linear.cpp examples/models/bicycle_eigenvalues.cpp examples/bicycle_benchmark.cpp; do
-  printf '#include "%s/%s"\n' "$PWD" "$f"
-done >"$work/bicycle_in_one_unit.cpp"
-units=(
-  "examples/models/bicycle_linear.cpp|bicycle: reduced equations and linearization, compiled once"
-  "examples/models/bicycle_eigenvalues.cpp|bicycle: the benchmark's eigenvalues, compiled once"
-  "examples/bicycle_benchmark.cpp|bicycle: the example that calls the two"
-  "$work/bicycle_in_one_unit.cpp|bicycle: the same three files as one unit"
-  "examples/pendulum3d.cpp|3D double pendulum, u' by kane::motion"
-  "examples/models/free_body_motion.cpp|free body: the model compiled once"
-  "examples/free_body_dynamics.cpp|free body: the example that calls it"
-)
-for f in benchmarks/*_kane.cpp; do
-  case $f in *chain_dynamics_kane.cpp) continue ;; esac
-  units+=("$f|benchmark: kane's side of bench_$(basename "$f" _kane.cpp)")
-done
-for n in 6 12 24 48; do units+=("benchmarks/chain_dynamics_kane.cpp -DKANE_CHAIN_N=$n|benchmark: the $n-link chain's forward dynamics"); done
-for f in tests/test_*.cpp; do units+=("$f|test"); done
-units+=("tests/eigenvalues.cpp|tests: Eigen's EigenSolver, compiled once")
-for scalar in float double; do units+=("tests/warnings.cpp -DKANE_WARNINGS_SCALAR=$scalar|the whole API under strict warnings, $scalar"); done
-{
-  echo "| unit | what | CPU s | peak MB |"
-  echo "|---|---|---|---|"
-  for u in "${units[@]}"; do
-    src=${u%%|*} what=${u#*|}
-    # shellcheck disable=SC2086
-    /usr/bin/time -o "$work/time" -f "%U %M" g++ "${flags[@]}" $src
-    read -r user kb <"$work/time"
-    name=${src/$work\//}
-    printf '| `%s` | %s | %.1f | %d |\n' "$name" "$what" "$user" $((kb / 1024))
-  done
-  # a plain type error right after the bicycle's call of the linearization, -Wfatal-errors
-  sed '/kane::linearize_equations/a\  int type_error = s;' examples/models/bicycle_linear.cpp |
-    sed 's,#include ",#include "'"$PWD"'/examples/models/,' >"$work/type_error.cpp"
-  if /usr/bin/time -o "$work/time" -f "%U %M" g++ "${flags[@]}" -Wfatal-errors "$work/type_error.cpp" 2>/dev/null; then
-    echo "type_error.cpp compiled" >&2
-    exit 1
-  fi
-  read -r user kb < <(tail -1 "$work/time")
-  printf '| `type_error.cpp` | %s | %.1f | %d |\n' \
-    "a type error right after \`kane::linearize_equations\` on the bicycle, reported (-Wfatal-errors)" "$user" $((kb / 1024))
-} >"$work/table_compile.md"
-fi
-
-# --- the machine (when every table is measured), then every generated block of the page
-[ $run = 1 ] && [ $compile = 1 ] && {
-  printf 'Measured on %s at commit %s: %s, %s cores, %s, Eigen %s.\n' "$(date -u +%Y-%m-%d)" \
+# --- the machine of the run-time tables (the compile table names its own), then every block measured
+[ $run = 1 ] && {
+  printf 'Run-time tables measured on %s at commit %s: %s, %s cores, %s, Eigen %s.\n' "$(date -u +%Y-%m-%d)" \
     "$(git rev-parse --short HEAD)" "$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')" "$(nproc)" \
     "$(g++ --version | head -1)" "$(sed -n 's/#define EIGEN_[A-Z]*_VERSION \([0-9]*\)/\1/p' /usr/include/eigen3/Eigen/src/Core/util/Macros.h | paste -sd.)"
 } >"$work/table_machine.md"
@@ -166,3 +126,5 @@ awk -v dir="$work" '
   !skip { print }' "$page" >"$work/page.md"
 cp "$work/page.md" "$page"
 echo "rewrote $page"
+# --- the compile table: g++ -O2, one unit at a time
+[ $compile = 0 ] || benchmarks/compile_cost.sh table

@@ -1,4 +1,4 @@
-# Compile benchmarks/embedded.cpp for a Cortex-M4 and print its code size and each C function's stack.
+# Compile benchmarks/embedded/embedded.cpp for a Cortex-M4; print its code size and each C function's stack.
 execute_process(COMMAND ${CXX} -std=c++20 -mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16
                         -fno-exceptions -fno-rtti -Os -fstack-usage -DEIGEN_NO_MALLOC -Wall -Wextra -Werror
                         -DKANE_EMBEDDED_SCALAR=${SCALAR} -I${KANE_INCLUDE} -isystem ${EIGEN_INCLUDE}

@@ -1,5 +1,5 @@
 // Evaluating kinematics allocates nothing: the global allocation functions
-// are replaced by counting ones, and the kernels of benchmarks/embedded.cpp
+// are replaced by counting ones, and the kernels of benchmarks/embedded/embedded.cpp
 // (everything of the 6-revolute arm; the rolling disc's constraints and
 // nonholonomic partial velocities; M, f and u' of the 3D double pendulum through
 // kane::motion, its M alone by kane::mass_matrix, and kane::inverse_dynamics, kane::forcing and

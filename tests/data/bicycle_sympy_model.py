@@ -1,7 +1,7 @@
 """The Whipple bicycle of kane's examples/models/bicycle.hpp (with its four bodies and gravity) in
 sympy.physics.mechanics, symbol for symbol: p[k - 1] = kane::parameter<k>, q[k - 1] = q<k>,
 u[k - 1] = u<k>. Shared by tests/data/gen_bicycle_dynamics.py (reference numbers) and
-benchmarks/gen_bicycle_sympy.py (generated C); the conventions are in the former's docstring.
+tests/data/gen_bicycle_sympy.py (generated C); the conventions are in the former's docstring.
 """
 import sympy as sp
 from sympy.physics.mechanics import ReferenceFrame, Point, RigidBody, dynamicsymbols, inertia, dot

@@ -104,7 +104,7 @@ def log(*args):
 
 # ---------------------------------------------------------------------------------------------
 # The model, named as in kane: p[k - 1] = kane::parameter<k>, q[k - 1] = q<k>, u[k - 1] = u<k>.
-from bicycle_sympy_model import *  # noqa: E402,F401,F403  (the model, shared with benchmarks/)
+from bicycle_sympy_model import *  # noqa: E402,F401,F403  (the model, shared with gen_bicycle_sympy.py)
 
 
 # ---------------------------------------------------------------------------------------------

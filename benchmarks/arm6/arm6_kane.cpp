@@ -1,0 +1,93 @@
+// kane's implementation of the 6-revolute chain (arm6.hpp).
+#include "../../examples/models/arm6.hpp"
+#include "arm6.hpp"
+
+namespace {
+using namespace models::arm6;
+
+using state = kane::state<double, 6>;
+
+constexpr auto r_end = kane::position<O, End>();
+constexpr auto w6 = kane::angular_velocity<N, B6>();
+constexpr auto v_end = kane::velocity<N, End>();
+constexpr auto alpha6 = kane::angular_acceleration<N, B6>();
+constexpr auto a_end = kane::acceleration<N, End>();
+// Each evaluator holds what its quantities read (kane::evaluator_for): Q2 to Q4 read nothing of
+// B6 but its angular velocity and acceleration (one edge below B5) and e_B6,1 = e_B5,1, so they
+// hold B1 .. B5 and q6 is not turned; the Jacobian's columns need the pose level only.
+using pose_reads = kane::reads<r_end, kane::e<B6, 1>, kane::e<B6, 2>, kane::e<B6, 3>>;
+using velocity_reads = kane::reads<w6, v_end>;
+using acceleration_reads = kane::reads<alpha6, a_end>;
+
+template <class V>
+void store(const V& v, double* out) {
+  out[0] = v[0], out[1] = v[1], out[2] = v[2];
+}
+template <class Ev>
+void q1(const Ev& ev, arm6::output& out) {
+  Eigen::Map<Eigen::Matrix3d>(out.R) = ev.template axes<B6>();
+  store(kane::express<N>(r_end, ev), out.p);
+}
+template <class Ev>
+void q2(const Ev& ev, arm6::output& out) {
+  store(kane::express<N>(w6, ev), out.w);
+  store(kane::express<N>(v_end, ev), out.v);
+}
+template <class Ev>
+void q3(const Ev& ev, arm6::output& out) {
+  Eigen::Map<Eigen::Matrix<double, 6, 6>> J(out.J);
+  J.topRows<3>() = kane::partial_velocities<N>(w6, ev);
+  J.bottomRows<3>() = kane::partial_velocities<N>(v_end, ev);
+}
+template <class Ev>
+void q4(const Ev& ev, arm6::output& out) {
+  store(kane::express<N>(alpha6, ev), out.alpha);
+  store(kane::express<N>(a_end, ev), out.a);
+}
+}  // namespace
+
+namespace arm6 {
+void kane_q1(const input& in, output& out) {
+  state s;
+  kane::evaluator_for<state, pose_reads> ev_pose;
+  s.q = in.q;
+  ev_pose.update(s);
+  q1(ev_pose, out);
+}
+void kane_q2(const input& in, output& out) {
+  state s;
+  kane::evaluator_for<state, velocity_reads> ev_velocity;
+  s.q = in.q;
+  s.qd = in.qd;
+  ev_velocity.update(s);
+  q2(ev_velocity, out);
+}
+void kane_q3(const input& in, output& out) {
+  state s;
+  kane::evaluator<state, velocity_reads::frames, kane::level::pose> ev_jacobian;
+  s.q = in.q;
+  ev_jacobian.update(s);
+  q3(ev_jacobian, out);
+}
+void kane_q4(const input& in, output& out) {
+  state s;
+  kane::evaluator_for<state, acceleration_reads> ev_acceleration;
+  s.q = in.q;
+  s.qd = in.qd;
+  s.qdd = in.qdd;
+  ev_acceleration.update(s);
+  q4(ev_acceleration, out);
+}
+void kane_all(const input& in, output& out) {
+  state s;
+  kane::evaluator_for<state, kane::reads<r_end, kane::e<B6, 2>, w6, v_end, alpha6, a_end>> ev_all;
+  s.q = in.q;
+  s.qd = in.qd;
+  s.qdd = in.qdd;
+  ev_all.update(s);
+  q1(ev_all, out);
+  q2(ev_all, out);
+  q3(ev_all, out);
+  q4(ev_all, out);
+}
+}  // namespace arm6

@@ -1,0 +1,69 @@
+// Forward dynamics of the n-link chain (chain_dynamics.hpp), n = 6, 12, 24, 48:
+// kane beside Orocos KDL's ChainDynParam + LLT and a hand-written
+// articulated-body algorithm (O(n)); kane's code of each n is its own translation unit.
+#include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "../common/harness.hpp"
+#include "chain_dynamics.hpp"
+
+namespace {
+using namespace chain_dynamics;
+template <std::size_t... N>
+struct sizes {};
+using all = sizes<6, 12, 24, 48>;
+
+std::vector<input> inputs() {
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> d(-3, 3);
+  std::vector<input> in(64);
+  for (auto& x : in)
+    for (std::size_t i = 0; i < max_n; ++i) x.q[i] = d(rng), x.qd[i] = d(rng);
+  return in;
+}
+const std::vector<input> states = inputs();
+
+// |a - h| / max(1, |h|), over (n / 6)^2: M's condition grows with n (ABA and KDL's
+// LLT differ by up to 7e-15 max(1, |q''|) at n = 6, 2.4e-12 at n = 48)
+template <std::size_t N>
+double difference(const output& a, const output& h) {
+  const double scale = std::fmax(1, std::fabs(*std::max_element(h.qdd, h.qdd + N, [](double x, double y) {
+                                   return std::fabs(x) < std::fabs(y);
+                                 })));
+  return bench::max_diff(a.qdd, h.qdd, N) / scale / ((N / 6.0) * (N / 6.0));
+}
+template <std::size_t N>
+void agree_at() {
+  for (const auto& in : states) {
+    output h{}, k{}, o{};
+    hand_forward<N>(in, h);
+    kdl_forward<N>(in, o);
+    kane_forward<N>(in, k);
+    bench::require_agreement(std::fmax(difference<N>(o, h), difference<N>(k, h)));
+  }
+}
+template <std::size_t... N>
+void agree(sizes<N...>) {
+  (agree_at<N>(), ...);
+}
+
+template <std::size_t N>
+void rows() {
+  const std::string n = "chain_dynamics/" + std::to_string(N);
+  benchmark::RegisterBenchmark((n + "/hand").c_str(), bench::run<hand_forward<N>, states>);
+  benchmark::RegisterBenchmark((n + "/kane").c_str(), bench::run<kane_forward<N>, states>);
+  benchmark::RegisterBenchmark((n + "/kdl").c_str(), bench::run<kdl_forward<N>, states>);
+}
+template <std::size_t... N>
+bool register_rows(sizes<N...>) {
+  (rows<N>(), ...);
+  return true;
+}
+const bool registered = register_rows(all{});
+}  // namespace
+
+int main(int argc, char** argv) {
+  return bench::main(argc, argv, [] { agree(all{}); });
+}
