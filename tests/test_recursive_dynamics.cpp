@@ -13,6 +13,7 @@
 #include <kane/kane.hpp>
 
 #include "../examples/models/arm6_dynamics.hpp"
+#include "recursive_models.hpp"
 
 namespace {
 using kane::e;
@@ -70,41 +71,7 @@ Eigen::Matrix<double, 6, 1> newton_euler(const double* q, const double* qd, cons
 }
 }  // namespace arm
 
-// A tree: two branches from N, a fixed tool rotation, a particle, a force and torques.
-namespace tree {
-using q1 = kane::coordinate<1>;
-using q2 = kane::coordinate<2>;
-using q3 = kane::coordinate<3>;
-using q4 = kane::coordinate<4>;
-struct N : kane::root_frame {};
-struct A : kane::frame<N, kane::simple<kane::axis::z, q1>> {};
-struct B : kane::frame<A, kane::simple<kane::axis::y, q2>> {};
-struct T : kane::frame<B, kane::simple<kane::axis::x, kane::constant<1, 3>>> {};  // a tool, fixed in B
-struct C : kane::frame<N, kane::simple<kane::axis::x, q3>> {};
-struct D : kane::frame<C, kane::simple<kane::direction<1, 1, 0>, q4>> {};  // an oblique axis
-struct O : kane::origin<N> {};
-struct Ao : kane::point<O, 0.2 * e<A, 1> + 0.1 * e<A, 3>> {};
-struct JB : kane::point<O, 0.4 * e<A, 1>> {};
-struct Bo : kane::point<JB, 0.15 * e<B, 1> - 0.05 * e<B, 2>> {};
-struct To : kane::point<JB, 0.3 * e<T, 1> + 0.02 * e<T, 3>> {};
-struct JC : kane::point<O, -0.3 * e<N, 2>> {};
-struct P : kane::point<JC, 0.25 * e<C, 3>> {};
-struct Do : kane::point<P, 0.1 * e<D, 2>> {};
-using system = kane::system<
-    kane::rigid_body<A, Ao, literal(1.5), kane::inertia<A, Ao, literal(0.03), literal(0.02), literal(0.04)>>,
-    kane::rigid_body<B, Bo, literal(1.1),
-                     kane::inertia<B, Bo, literal(0.01), literal(0.015), literal(0.012), literal(0.001)>>,
-    kane::rigid_body<T, To, literal(0.4),
-                     kane::inertia<T, To, literal(0.004), literal(0.003), literal(0.005), literal(0.0),
-                                   literal(0.0005), literal(-0.0002)>>,
-    kane::particle<P, literal(0.7)>,
-    kane::rigid_body<D, Do, literal(0.9),
-                     kane::inertia<D, Do, literal(0.02), literal(0.01), literal(0.025), literal(0.002)>>,
-    kane::force<To, kane::q<2> * e<N, 1> + 2.0 * e<B, 3>>, kane::torque<C, -0.3 * kane::u<3> * e<C, 1>>,
-    kane::torque<D, 0.5 * e<D, 3>>, kane::gravity<literal(-9.81) * e<N, 3>>>;
-using state = kane::state<double, 4>;
-using evaluator = kane::evaluator<state, kane::frames<T, D>, kane::level::acceleration, kane::qdot_speeds<4>>;
-}  // namespace tree
+namespace tree = recursive::tree;
 
 // A 21-link chain (axes z, y, x, ...): u' by articulated bodies above 20 speeds.
 namespace chain {
@@ -143,15 +110,7 @@ using state = kane::state<double, n>;
 using evaluator = kane::evaluator<state, kane::frames<B<n>>, kane::level::acceleration, kane::qdot_speeds<n>>;
 }  // namespace chain
 
-template <class St>
-St random_state(std::mt19937& rng) {
-  std::uniform_real_distribution<double> d(-2.0, 2.0);
-  St s;
-  for (auto& x : s.q) x = d(rng);
-  for (auto& x : s.u) x = d(rng);
-  for (auto& x : s.ud) x = d(rng);
-  return s;
-}
+using recursive::random_state;
 }  // namespace
 
 static_assert(kane::detail::recursive_form<arm::system, arm::evaluator>);
@@ -283,24 +242,6 @@ TEST_CASE("21 links: u' by articulated bodies equals M^-1 f by composite bodies 
     const auto [ud2, status2] = kane::speed_derivatives(eom);  // M's Cholesky factorization by rows
     REQUIRE(status2 == kane::solve_status::ok);
     CHECK((ud2 - ref).cwiseAbs().maxCoeff() < 1e-9 * (1 + ref.cwiseAbs().maxCoeff()));
-  }
-}
-
-// Articulated bodies on the branched tree (an oblique axis, a fixed tool, a particle on a branch),
-// called below the size that forward_dynamics takes them at.
-TEST_CASE("tree: u' by articulated bodies equals M^-1 f by composite bodies and inward sums", "[recursive]") {
-  std::mt19937 rng(29);
-  for (int k = 0; k < 10; ++k) {
-    const auto s = random_state<tree::state>(rng);
-    tree::evaluator ev;
-    ev.update(s);
-    using JF = kane::detail::joint_form_of<tree::system, tree::evaluator>;
-    const kane::detail::body_frames<JF, tree::evaluator> bf(ev);
-    Eigen::Matrix<double, 4, 1> ud;
-    REQUIRE(kane::detail::articulated_accelerations<JF, tree::system>(bf, ev, ud));
-    const auto eom = kane::mass_matrix_and_forcing<tree::system>(ev);
-    const Eigen::Matrix<double, 4, 1> ref = eom.M.llt().solve(eom.f);
-    CHECK((ud - ref).cwiseAbs().maxCoeff() < 1e-10 * (1 + ref.cwiseAbs().maxCoeff()));
   }
 }
 
