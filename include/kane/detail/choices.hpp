@@ -16,6 +16,16 @@ enum class reading : bool { pose, whole_state };
 enum class stages : unsigned { none = 0, pose = 1, velocity = 2, acceleration = 4, nan_acceleration = 8 };
 constexpr stages operator|(stages a, stages b) { return stages(unsigned(a) | unsigned(b)); }
 constexpr bool has(stages set, stages s) { return (unsigned(set) & unsigned(s)) != 0; }
+// The rate levels of an evaluator: velocity, and acceleration.
+constexpr stages rate_stages(bool velocity, bool acceleration) {
+  return (velocity ? stages::velocity : stages::none) | (acceleration ? stages::acceleration : stages::none);
+}
+// The levels of one frame: no angular acceleration, but NaN, where no one reads it.
+constexpr stages read_only(stages levels, bool read) {
+  return read || !has(levels, stages::acceleration)
+             ? levels
+             : stages(unsigned(levels) & ~unsigned(stages::acceleration)) | stages::nan_acceleration;
+}
 // The parts of x = T u + t computed: the table T, the remainder t, or both.
 enum class linear_part : unsigned { table = 1, remainder = 2, both = 3 };
 constexpr bool has(linear_part set, linear_part p) { return (unsigned(set) & unsigned(p)) != 0; }

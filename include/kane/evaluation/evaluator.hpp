@@ -44,12 +44,6 @@ namespace kane {
 template <State St, class Frames, level Level = level::acceleration, class Speeds = void>
 class evaluator;
 
-namespace detail {
-// The speed set, or none where the argument is not one (its error is reported, and no other follows).
-template <class Speeds>
-using usable_speeds = std::conditional_t<std::is_void_v<Speeds> || SpeedSet<Speeds>, Speeds, void>;
-}  // namespace detail
-
 // The numbers of a state St for the frames Fs... and their ancestors, up to Level, with the speeds
 // Given: one outward pass per update.
 template <State St, Frame... Fs, level Level, class Given>
@@ -203,9 +197,7 @@ class evaluator<St, frames<Fs...>, Level, Given>
 
  private:
   static constexpr bool velocity = Level >= level::velocity, acceleration = Level >= level::acceleration;
-  static constexpr detail::stages rate_stages =
-      (velocity ? detail::stages::velocity : detail::stages::none) |
-      (acceleration ? detail::stages::acceleration : detail::stages::none);
+  static constexpr detail::stages rate_stages = detail::rate_stages(velocity, acceleration);
 
   // 0 if the rates this level reads (u and u' of s, or q' and q'' as read into st_) are finite, NaN if not.
   template <detail::rates Ud = detail::rates::of_state>

@@ -25,6 +25,10 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
+// The speed set, or none where the argument is not one (its error is reported, and no other follows).
+template <class Speeds>
+using usable_speeds = std::conditional_t<std::is_void_v<Speeds> || SpeedSet<Speeds>, Speeds, void>;
+
 // Without a speed set u is q' (NU = NQ): out = d, or u where d is 0; true where both hold
 // different nonzero numbers.
 template <class S, std::size_t NQ, std::size_t NU>

@@ -147,12 +147,6 @@ class outward_pass {
         ...);
   }
 
-  // The levels of one frame: no angular acceleration, but NaN, where no one reads it.
-  static constexpr stages read_only(stages levels, bool read) {
-    return read || !has(levels, stages::acceleration)
-               ? levels
-               : stages(unsigned(levels) & ~unsigned(stages::acceleration)) | stages::nan_acceleration;
-  }
   template <stages Levels, class Reads, class Rates, class... F>
   KANE_ALWAYS_INLINE void pass_over(list<F...>, const trig_type& t, const Rates& rates) {
     // g++ 12: no lambdas, which -O2 left out of line
