@@ -35,15 +35,15 @@ struct independent_speeds {
   template <auto Nz>
   static constexpr std::array<bool, n> nonzero() {
     bool dependent = false;
-    for (std::size_t j = 0; j < NH::m; ++j) dependent = dependent || !zero_column(Nz[NH::dependents[j] - 1]);
+    for (std::size_t j = 0; j < NH::m; ++j) dependent = dependent || !all_zero(Nz[NH::dependents[j] - 1]);
     std::array<bool, n> out{};
-    for (std::size_t k = 0; k < n; ++k) out[k] = !zero_column(Nz[NH::independents[k] - 1]) || dependent;
+    for (std::size_t k = 0; k < n; ++k) out[k] = !all_zero(Nz[NH::independents[k] - 1]) || dependent;
     return out;
   }
   template <auto Nz>
   static constexpr std::array<pattern3, n> kinds() {  // v~_k is v_ind_k where no dependent column enters
     bool dependent = false;
-    for (std::size_t j = 0; j < NH::m; ++j) dependent = dependent || !zero_column(Nz[NH::dependents[j] - 1]);
+    for (std::size_t j = 0; j < NH::m; ++j) dependent = dependent || !all_zero(Nz[NH::dependents[j] - 1]);
     std::array<pattern3, n> out{};
     for (std::size_t k = 0; k < n; ++k) out[k] = dependent ? unknown3 : Nz[NH::independents[k] - 1];
     return out;
@@ -52,14 +52,14 @@ struct independent_speeds {
   KANE_ALWAYS_INLINE Eigen::Matrix<S, 3, int(n)> columns(const V& v) const {
     Eigen::Matrix<S, 3, int(n)> t;
     static_for<n>([&](auto k) {
-      if constexpr (!zero_column(Nz[NH::independents[k] - 1]))
+      if constexpr (!all_zero(Nz[NH::independents[k] - 1]))
         t.col(Eigen::Index(k)) = v.col(Eigen::Index(NH::independents[k] - 1));
       else
         t.col(Eigen::Index(k)).setZero();
       static_for<NH::m>([&](auto j) {
         constexpr pattern3 kind = Nz[NH::dependents[j] - 1];
         constexpr int i = column_axis(kind);
-        if constexpr (zero_column(kind))
+        if constexpr (all_zero(kind))
           return;
         else if constexpr (i < 0)
           t.col(Eigen::Index(k)) +=
@@ -77,7 +77,7 @@ struct independent_speeds {
     static_for<NH::m>([&](auto j) {
       constexpr pattern3 kind = Nz[NH::dependents[j] - 1];
       constexpr int i = column_axis(kind);
-      if constexpr (zero_column(kind))
+      if constexpr (all_zero(kind))
         return;
       else if constexpr (i < 0)
         a0 += v.col(Eigen::Index(NH::dependents[j] - 1)) * b[j];

@@ -9,6 +9,7 @@
 
 #include "kane/detail/patterned.hpp"
 #include "kane/detail/structure.hpp"
+#include "kane/detail/v3.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/scalars/expr.hpp"
 
@@ -85,11 +86,6 @@ constexpr std::array<double, 3> known_components(const V& v) {
 // Which of those components are 0 or 1 at every state.
 template <class V>
 constexpr std::array<entry, 3> own_pattern() {
-  constexpr auto sum = [](std::array<entry, 3> a, std::array<entry, 3> b) {
-    for (std::size_t i = 0; i < 3; ++i)
-      a[i] = a[i] == entry::zero && b[i] == entry::zero ? entry::zero : entry::other;
-    return a;
-  };
   if constexpr (is_zero_vector_v<V>)
     return {entry::zero, entry::zero, entry::zero};
   else if constexpr (is_unit<V>::value)
@@ -98,8 +94,8 @@ constexpr std::array<entry, 3> own_pattern() {
   else if constexpr (is_v<V, scaled> || is_v<V, vneg>)
     return scaled_pattern(own_pattern<std::remove_cv_t<decltype(std::declval<const V&>().v)>>());
   else
-    return sum(own_pattern<std::remove_cv_t<decltype(std::declval<const V&>().l)>>(),
-               own_pattern<std::remove_cv_t<decltype(std::declval<const V&>().r)>>());
+    return common_zeros(own_pattern<std::remove_cv_t<decltype(std::declval<const V&>().l)>>(),
+                        own_pattern<std::remove_cv_t<decltype(std::declval<const V&>().r)>>());
 }
 
 }  // namespace kane::detail

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "kane/detail/list.hpp"
+#include "kane/detail/patterned.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/tables.hpp"
 
@@ -23,9 +24,6 @@ constexpr pattern3 unit_pattern(int i, entry e) {
   pattern3 p{entry::zero, entry::zero, entry::zero};
   p[std::size_t(i)] = e;
   return p;
-}
-constexpr bool zero_column(const pattern3& k) {
-  return k[0] == entry::zero && k[1] == entry::zero && k[2] == entry::zero;
 }
 // The axis i of a column +-e_i, or -1.
 constexpr int column_axis(const pattern3& k) {
@@ -90,7 +88,7 @@ inline void add_transposed(Eigen::Matrix<S, N, 1>& out, const Eigen::Matrix<S, 3
     static_for<std::size_t(N)>([&](auto r) {
       constexpr pattern3 k = K[r];
       constexpr int i = column_axis(k);
-      if constexpr (zero_column(k))
+      if constexpr (all_zero(k))
         return;
       else if constexpr (i < 0)
         out(Eigen::Index(r)) +=

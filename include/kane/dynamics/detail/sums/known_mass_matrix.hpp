@@ -50,7 +50,7 @@ constexpr known_columns<Sp::n> columns_known_in(const X& x) {
         [&] {
           using C = std::remove_cvref_t<decltype(column_of<Sp, R + 1>(x))>;
           constexpr int i = column_axis(k[R]);
-          if constexpr (zero_column(k[R]))
+          if constexpr (all_zero(k[R]))
             return;
           else if constexpr (i >= 0)
             out.c[R][std::size_t(i)] = k[R][std::size_t(i)] == entry::one ? 1 : -1;

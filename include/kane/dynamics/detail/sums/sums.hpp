@@ -92,7 +92,7 @@ struct all_speeds {
   template <auto Nz>
   static constexpr std::array<bool, n> nonzero() {
     std::array<bool, n> out{};
-    for (std::size_t k = 0; k < n; ++k) out[k] = !zero_column(Nz[k]);
+    for (std::size_t k = 0; k < n; ++k) out[k] = !all_zero(Nz[k]);
     return out;
   }
   template <auto Nz>
