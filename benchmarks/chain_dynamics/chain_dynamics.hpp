@@ -52,9 +52,16 @@ struct input {
 struct output {
   double qdd[max_n];
 };
+// q'' and its derivatives by q and q' (column-major N x N) of the first N links
+struct derivatives {
+  double ud[max_n];
+  double dq[max_n * max_n], du[max_n * max_n];
+};
 // q'' of the first N links, the first N entries of q, q'
 template <std::size_t N>
 void kane_forward(const input&, output&);  // one translation unit per N
+template <std::size_t N>
+void kane_derivatives(const input&, derivatives&);  // analytical, one translation unit per N
 template <std::size_t N>
 void kdl_forward(const input&, output&);  // N = 6, 12, 24, 48
 template <std::size_t N>

@@ -1,7 +1,11 @@
 // Forward dynamics of the n-link chain (chain_dynamics.hpp), n = 6, 12, 24, 48:
 // kane beside Orocos KDL's ChainDynParam + LLT and a hand-written
 // articulated-body algorithm (O(n)); kane's code of each n is its own translation unit.
+// Its derivatives by q and q': kane's analytical ones beside central differences of kane's
+// forward dynamics (4n calls), the ratio users compare with.
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
@@ -34,6 +38,42 @@ double difference(const output& a, const output& h) {
                                  })));
   return bench::max_diff(a.qdd, h.qdd, N) / scale / ((N / 6.0) * (N / 6.0));
 }
+// du'/dq and du'/du by central differences of kane_forward<N>: 4N calls
+template <std::size_t N>
+void central(const input& in, derivatives& out) {
+  const double h = 1e-6;
+  output a, b;
+  input x = in;
+  for (std::size_t j = 0; j < N; ++j) {
+    x.q[j] = in.q[j] + h, kane_forward<N>(x, a);
+    x.q[j] = in.q[j] - h, kane_forward<N>(x, b);
+    x.q[j] = in.q[j];
+    for (std::size_t i = 0; i < N; ++i) out.dq[j * N + i] = (a.qdd[i] - b.qdd[i]) / (2 * h);
+    x.qd[j] = in.qd[j] + h, kane_forward<N>(x, a);
+    x.qd[j] = in.qd[j] - h, kane_forward<N>(x, b);
+    x.qd[j] = in.qd[j];
+    for (std::size_t i = 0; i < N; ++i) out.du[j * N + i] = (a.qdd[i] - b.qdd[i]) / (2 * h);
+  }
+}
+// the analytical derivatives and the differences agree to 1e-6 of the largest entry
+template <std::size_t N>
+void derivatives_agree(const input& in, const output& h) {
+  static derivatives d, c;
+  kane_derivatives<N>(in, d);
+  central<N>(in, c);
+  const auto close = [](const double* x, const double* y) {
+    double scale = 1;
+    for (std::size_t k = 0; k < N * N; ++k) scale = std::fmax(scale, std::fabs(y[k]));
+    return bench::max_diff(x, y, int(N * N)) / scale;
+  };
+  if (!(close(d.dq, c.dq) < 1e-6 && close(d.du, c.du) < 1e-6)) {
+    std::fprintf(stderr, "chain_dynamics/%zu: derivatives and central differences disagree\n", N);
+    std::exit(1);
+  }
+  output u{};
+  std::copy(d.ud, d.ud + N, u.qdd);
+  bench::require_agreement(difference<N>(u, h));
+}
 template <std::size_t N>
 void agree_at() {
   for (const auto& in : states) {
@@ -42,6 +82,11 @@ void agree_at() {
     kdl_forward<N>(in, o);
     kane_forward<N>(in, k);
     bench::require_agreement(std::fmax(difference<N>(o, h), difference<N>(k, h)));
+  }
+  for (std::size_t i = 0; i < 4; ++i) {
+    output h{};
+    hand_forward<N>(states[i], h);
+    derivatives_agree<N>(states[i], h);
   }
 }
 template <std::size_t... N>
@@ -55,6 +100,8 @@ void rows() {
   benchmark::RegisterBenchmark((n + "/hand").c_str(), bench::run<hand_forward<N>, states>);
   benchmark::RegisterBenchmark((n + "/kane").c_str(), bench::run<kane_forward<N>, states>);
   benchmark::RegisterBenchmark((n + "/kdl").c_str(), bench::run<kdl_forward<N>, states>);
+  benchmark::RegisterBenchmark((n + "/derivatives/kane").c_str(), bench::run<kane_derivatives<N>, states>);
+  benchmark::RegisterBenchmark((n + "/central/kane").c_str(), bench::run<central<N>, states>);
 }
 template <std::size_t... N>
 bool register_rows(sizes<N...>) {

@@ -1,65 +1,17 @@
 // kane: Kane's equations of the n-link chain (chain_dynamics.hpp), n = KANE_CHAIN_N,
 // one translation unit per n (its compile cost measured alone).
-#include <kane/kane.hpp>
-
-#include <utility>
-
-#include "chain_dynamics.hpp"
+#include "chain_model.hpp"
 
 #ifndef KANE_CHAIN_N
 #error "chain_dynamics_kane.cpp: define KANE_CHAIN_N, the number of links"
 #endif
 static_assert(KANE_CHAIN_N >= 1 && KANE_CHAIN_N <= chain_dynamics::max_n);
 
-namespace {
-using chain_dynamics::L;
-using kane::e;
-using kane::literal;
-
-template <std::size_t I>  // joint I: z, y, x, z, ...
-using axis_of = std::conditional_t<I % 3 == 1, kane::axis::z,
-                                   std::conditional_t<I % 3 == 2, kane::axis::y, kane::axis::x>>;
-template <std::size_t I>
-struct B;
-template <>
-struct B<0> : kane::root_frame {};
-template <std::size_t I>
-struct B : kane::frame<B<I - 1>, kane::simple<axis_of<I>, kane::coordinate<I>>> {};
-
-template <std::size_t I>  // joint I
-struct J;
-template <>
-struct J<1> : kane::origin<B<0>> {};
-template <std::size_t I>
-struct J : kane::point<J<I - 1>, literal(L[I - 2]) * e<B<I - 1>, 1>> {};
-template <std::size_t I>  // link I's mass centre
-struct C : kane::point<J<I>, literal(L[I - 1] / 2) * e<B<I>, 1>> {};
-
-template <std::size_t I, std::size_t K>  // I11, I22, I33, I12, I23, I31 of link I
-inline constexpr literal component = literal(chain_dynamics::inertia[I - 1][K]);
-template <std::size_t I>
-using link = kane::rigid_body<B<I>, C<I>, literal(chain_dynamics::mass[I - 1]),
-                              kane::inertia<B<I>, C<I>, component<I, 0>, component<I, 1>, component<I, 2>,
-                                            component<I, 3>, component<I, 4>, component<I, 5>>>;
-template <class>
-struct links;
-template <std::size_t... I>
-struct links<std::index_sequence<I...>> {
-  using type = kane::system<link<I + 1>..., kane::gravity<literal(-chain_dynamics::g) * e<B<0>, 3>>>;
-};
-
-}  // namespace
-
 template <std::size_t N>
 void chain_dynamics::kane_forward(const input& in, output& out) {
-  using system = typename links<std::make_index_sequence<N>>::type;
-  using state = kane::state<double, N>;
-  using evaluator =
-      kane::evaluator<state, kane::frames<B<N>>, kane::level::acceleration, kane::qdot_speeds<N>>;
-  state s;
-  for (std::size_t i = 0; i < N; ++i) s.q[i] = in.q[i], s.u[i] = in.qd[i];
-  evaluator ev;
-  ev.update(s);
-  Eigen::Map<Eigen::Matrix<double, int(N), 1>>(out.qdd) = kane::forward_dynamics<system>(ev).ud;
+  typename chain_model::evaluator<N> ev;
+  ev.update(chain_model::state_of<N>(in));
+  Eigen::Map<Eigen::Matrix<double, int(N), 1>>(out.qdd) =
+      kane::forward_dynamics<chain_model::system<N>>(ev).ud;
 }
 template void chain_dynamics::kane_forward<KANE_CHAIN_N>(const input&, output&);

@@ -24,12 +24,16 @@ struct output {
   double h[6];
   double qdd[6];
   double tau[6];
+  double dq[36], du[36];  // d tau or d q'' by q and q', column-major
 };
 // M only; M and h; all (M, h, q''); tau alone
 void kane_mass(const input&, output&);
 void kane_bias(const input&, output&);
 void kane_forward(const input&, output&);
 void kane_inverse(const input&, output&);
+// the derivatives of tau (at q''_in) and of q'' by q and q': kane's analytical ones
+void kane_inverse_derivatives(const input&, output&);
+void kane_forward_derivatives(const input&, output&);
 void hand_mass(const input&, output&);
 void hand_bias(const input&, output&);
 void hand_forward(const input&, output&);

@@ -44,8 +44,30 @@ void inverse(const dynamics6::input& in, dynamics6::output& out) {
   ev.update(s);
   vector(out.tau) = kane::inverse_dynamics<system>(ev).tau;
 }
+// tau and its derivatives by q and q'
+void inverse_derivatives(const dynamics6::input& in, dynamics6::output& out) {
+  state s = at(in);
+  s.ud = in.qdd_in;
+  evaluator ev;
+  ev.update(s);
+  const auto d = kane::inverse_dynamics_derivatives<system>(ev);
+  vector(out.tau) = d.tau;
+  Eigen::Map<Eigen::Matrix<double, 6, 6>>(out.dq) = d.dtau_dq,
+                                      Eigen::Map<Eigen::Matrix<double, 6, 6>>(out.du) = d.dtau_du;
+}
+// q'' and its derivatives by q and q'
+void forward_derivatives(const dynamics6::input& in, dynamics6::output& out) {
+  evaluator ev;
+  ev.update(at(in));
+  const auto d = kane::forward_dynamics_derivatives<system>(ev);
+  vector(out.qdd) = d.ud;
+  Eigen::Map<Eigen::Matrix<double, 6, 6>>(out.dq) = d.dud_dq,
+                                      Eigen::Map<Eigen::Matrix<double, 6, 6>>(out.du) = d.dud_du;
+}
 }  // namespace
 
+void dynamics6::kane_inverse_derivatives(const input& in, output& out) { inverse_derivatives(in, out); }
+void dynamics6::kane_forward_derivatives(const input& in, output& out) { forward_derivatives(in, out); }
 void dynamics6::kane_mass(const input& in, output& out) { mass_alone(in, out); }
 void dynamics6::kane_bias(const input& in, output& out) { mass_and_bias(in, out); }
 void dynamics6::kane_forward(const input& in, output& out) { forward(in, out); }

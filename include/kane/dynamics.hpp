@@ -4,6 +4,7 @@
 
 #include "kane/dynamics/bodies.hpp"
 #include "kane/dynamics/constrained_motion.hpp"
+#include "kane/dynamics/dynamics_derivatives.hpp"
 #include "kane/dynamics/forward_dynamics.hpp"
 #include "kane/dynamics/generalized_forces.hpp"
 #include "kane/dynamics/inverse_dynamics.hpp"

@@ -20,6 +20,8 @@
 // case motion_state_of_other_type: kane: motion takes the state of its evaluator. for kane::motion<System> declare it kane::state_of<System>
 // case motion_second_argument: kane: the second argument is an evaluator .kane::evaluator<...>. or a speed set
 // case cut_names_no_mass: kane: cut<P, Items...> names no body .by its frame. or particle .by its point. of the system
+// case derivatives_of_world_load: analytical_derivatives_need_loads_fixed_in_their_bodies<kane::force<.*Bo
+// case derivatives_without_joint_form: analytical_derivatives_need_a_tree_of_simple_rotations_with_u_equal_to_q_dot<
 // case cut_of_a_vector: kane: cut<P, Items...> takes the frames of the part's bodies and the points of its particles
 #include <array>
 
@@ -192,6 +194,23 @@ double stretched_energy() {
   kane::evaluator<decltype(s), kane::frames<B>, kane::level::acceleration> ev;
   ev.update(s);
   return kane::potential_energy<stretched>(ev) + kane::mass_matrix_and_forcing<stretched>(ev).f(0);
+}
+
+// Analytical derivatives: a tree of simple rotations by q, loads fixed in the bodies they act on.
+#ifdef KANE_CASE_derivatives_of_world_load
+using steered = kane::system<body, tip, push, kane::gravity<-p<8> * e<N, 3>>>;  // push is along n1
+#else
+using steered = kane::system<body, tip, kane::force<Bo, p<7> * e<B, 1>>, kane::gravity<-p<8> * e<N, 3>>>;
+#endif
+double derivative() {
+  kane::state<double, 2, 2, 9> s;
+  kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, kane::qdot_speeds<2>> ev;
+  ev.update(s);
+#ifdef KANE_CASE_derivatives_without_joint_form
+  return kane::forward_dynamics_derivatives<rolling_sys>(ev).dud_dq(0, 0);  // Bv is known by its velocity
+#else
+  return kane::forward_dynamics_derivatives<steered>(ev).dud_dq(0, 0);
+#endif
 }
 
 // Rows and columns of a linearization by coordinate and speed.

@@ -113,6 +113,13 @@ struct inertia_about_another_point_than_the_mass_centre_use_parallel_axis;
 // A force acts at a particle or at a point fixed in a rigid body of the system.
 template <class Point>
 struct force_at_a_point_of_no_mass_apply_it_at_a_particle_or_a_point_fixed_in_a_body;
+// The analytical derivatives of the dynamics take a system of joint form: each speed u_r = q_r'
+// turns one edge by a simple rotation, every item below it about one point.
+template <class System>
+struct analytical_derivatives_need_a_tree_of_simple_rotations_with_u_equal_to_q_dot;
+// ... and loads of steady components in a frame fixed in the body they act on.
+template <class Load>
+struct analytical_derivatives_need_loads_fixed_in_their_bodies;
 }  // namespace error
 
 // The fixes that are calls or declarations, named beside their rule.
@@ -126,6 +133,8 @@ struct give_the_inertia_in_the_body_frame;
 // kane::state<S, NQ, ...> with NQ >= I, or kane::state_of<System>.
 template <std::size_t I>
 struct declare_kane_state_with_nq_at_least;
+// kane::linearize differentiates any system, by jets.
+struct call_kane_linearize;
 }  // namespace fix
 
 namespace detail {

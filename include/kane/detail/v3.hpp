@@ -72,6 +72,14 @@ template <class S>
 KANE_ALWAYS_INLINE constexpr S dot3(const v3<S>& a, const v3<S>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
+template <class S>
+KANE_ALWAYS_INLINE constexpr sym3<S> operator+(const sym3<S>& a, const sym3<S>& b) {
+  return {a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3], a[4] + b[4], a[5] + b[5]};
+}
+template <class S>
+KANE_ALWAYS_INLINE constexpr m3<S> operator+(const m3<S>& a, const m3<S>& b) {
+  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+}
 // Component I (0, 1, 2) of a (a v3, const or not): the one accessor of a v3's components.
 template <std::size_t I, class V>
 KANE_ALWAYS_INLINE constexpr auto& comp(V& a) {

@@ -5,6 +5,8 @@
 //   const auto [ud, status] = kane::forward_dynamics<System>(ev);            // forward_result
 //   const auto [tau, status] = kane::inverse_dynamics<System>(ev);           // inverse_result
 //   const auto [f, status] = kane::forcing<System>(ev);                      // forcing_result
+//   const auto [tau, dq, du, M, status] = kane::inverse_dynamics_derivatives<System>(ev);
+//   const auto [ud, dq, du, status] = kane::forward_dynamics_derivatives<System>(ev);
 #pragma once
 
 #include <cstddef>
@@ -59,6 +61,34 @@ struct forcing_result {
   // the forcing, N x 1
   Eigen::Matrix<S, int(N), 1> f;
   // the evaluator's, or not_finite
+  solve_status status;
+};
+
+// tau and its derivatives: inverse_dynamics_derivatives.
+template <class S, std::size_t N>
+struct inverse_derivatives {
+  // tau = M u' - f at the state
+  Eigen::Matrix<S, int(N), 1> tau;
+  // d tau / dq: column i by q_i
+  Eigen::Matrix<S, int(N), int(N)> dtau_dq;
+  // d tau / du: column r by u_r
+  Eigen::Matrix<S, int(N), int(N)> dtau_du;
+  // d tau / du', the mass matrix
+  Eigen::Matrix<S, int(N), int(N)> M;
+  // the evaluator's, or not_finite
+  solve_status status;
+};
+
+// u' and its derivatives: forward_dynamics_derivatives.
+template <class S, std::size_t N>
+struct forward_derivatives {
+  // u' = M^-1 f at the state
+  Eigen::Matrix<S, int(N), 1> ud;
+  // d u' / dq = -M^-1 d tau / dq
+  Eigen::Matrix<S, int(N), int(N)> dud_dq;
+  // d u' / du = -M^-1 d tau / du
+  Eigen::Matrix<S, int(N), int(N)> dud_du;
+  // the evaluator's, singular (M not positive definite) or not_finite
   solve_status status;
 };
 

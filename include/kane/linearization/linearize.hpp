@@ -30,68 +30,13 @@
 #include "kane/linearization/held_coordinates.hpp"
 #include "kane/linearization/jet.hpp"
 #include "kane/linearization/linear_model.hpp"
+#include "kane/linearization/tree_linearization.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {
 
 namespace detail {
-template <class St, class T>
-struct rebind_state;
-template <class S, std::size_t NQ, std::size_t NU, std::size_t NP, std::size_t NR, class T>
-struct rebind_state<state<S, NQ, NU, NP, NR>, T> {
-  using type = state<T, NQ, NU, NP, NR>;
-};
-template <class Ev, class T>
-struct rebind_evaluator;
-template <class St, class Fr, level L, class Sp, class T>
-struct rebind_evaluator<evaluator<St, Fr, L, Sp>, T> {
-  using type = evaluator<typename rebind_state<St, T>::type, Fr, L, Sp>;
-};
-template <class Ev>
-struct pose_evaluator;
-template <class St, class Fr, level L, class Sp>
-struct pose_evaluator<evaluator<St, Fr, L, Sp>> {
-  using type = evaluator<St, Fr, level::pose, Sp>;
-};
-// The state s in jets of N directions, every number constant.
-template <std::size_t N, class St>
-auto lift(const St& s) {
-  using J = jet<typename St::scalar, N>;
-  const auto up = [](const auto& a) {  // built in place: no zeros written first
-    return [&]<std::size_t... I>(std::index_sequence<I...>) {
-      return std::array<J, sizeof...(I)>{J(a[I])...};
-    }
-    (std::make_index_sequence<std::tuple_size_v<std::remove_cvref_t<decltype(a)>>>{});
-  };
-  using out = typename rebind_state<St, J>::type;
-  if constexpr (St::nr == 0)
-    return out{up(s.q), up(s.qd), up(s.qdd), up(s.u), up(s.ud), up(s.p), {}, J(s.t)};
-  else
-    return out{up(s.q), up(s.qd), up(s.qdd), up(s.u), up(s.ud), up(s.p), up(s.r), J(s.t)};
-}
-template <class In, class St>
-constexpr bool inputs_fit() {
-  for (std::size_t k = 0; k < In::n; ++k)
-    if (In::slots[k] > (In::of_state[k] ? St::nr : St::np)) return false;
-  return true;
-}
-template <class In, class J, class St>
-void seed_inputs(St& s, std::size_t first) {
-  static_assert(inputs_fit<In, St>(),
-                "kane: an input of linearize is beyond the state; declare the state with NR (inputs) or NP "
-                "(parameters) >= its index");
-  static_for<In::n>([&](auto k) {
-    auto& x = [&]() -> auto& {
-      if constexpr (In::of_state[k])
-        return s.r[In::slots[k] - 1];
-      else
-        return s.p[In::slots[k] - 1];
-    }
-    ();
-    x = J::variable(x.v, first + k);
-  });
-}
 template <class H>
 struct dependents_of {
   static constexpr std::size_t m = 0;
@@ -176,9 +121,6 @@ auto constrained_point(const typename Ev::state_type& s, solve_status& status) {
   return out;
 }
 // The results' types, declared so that a call does not instantiate the model to learn them.
-template <class Ev, class In>
-using model_of = linear_model<typename Ev::scalar, Ev::state_type::nq + Ev::nu, In::n,
-                              state_order<one_to<Ev::state_type::nq>(), one_to<Ev::nu>()>>;
 template <class NH, class Ev, class H, class In>
 using constrained_model_of =
     linear_model<typename Ev::scalar, independent_coordinates<H, Ev::state_type::nq>().size() + NH::p, In::n,
@@ -194,22 +136,26 @@ template <System Sys, Evaluator Ev, class In = inputs<>>
 detail::model_of<Ev, In> linearize(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
   constexpr std::size_t nq = Ev::state_type::nq, nu = Ev::nu, nx = nq + nu, n = nx + In::n;
-  using J = jet<S, n>;
-  auto js = detail::lift<n>(s);
-  detail::seed_inputs<In, J>(js, nx);
-  motion<Sys, typename detail::rebind_evaluator<Ev, J>::type> rhs(js);
-  std::array<J, nx> x, dx;
-  for (std::size_t i = 0; i < nq; ++i) x[i] = J::variable(s.q[i], i);
-  for (std::size_t i = 0; i < nu; ++i) x[nq + i] = J::variable(s.u[i], nq + i);
-  rhs(x, dx, js.t);
-  detail::model_of<Ev, In> out;
-  for (std::size_t i = 0; i < nx; ++i) {
-    out.rate(Eigen::Index(i)) = dx[i].v;
-    for (std::size_t j = 0; j < nx; ++j) out.A(Eigen::Index(i), Eigen::Index(j)) = dx[i].part(j);
-    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(i), Eigen::Index(k)) = dx[i].part(nx + k);
+  if constexpr (detail::analytical_linearization<Sys, Ev>())
+    return detail::linearize_tree<Sys, Ev, In>(s);
+  else {
+    using J = jet<S, n>;
+    auto js = detail::lift<n>(s);
+    detail::seed_inputs<In, J>(js, nx);
+    motion<Sys, typename detail::rebind_evaluator<Ev, J>::type> rhs(js);
+    std::array<J, nx> x, dx;
+    for (std::size_t i = 0; i < nq; ++i) x[i] = J::variable(s.q[i], i);
+    for (std::size_t i = 0; i < nu; ++i) x[nq + i] = J::variable(s.u[i], nq + i);
+    rhs(x, dx, js.t);
+    detail::model_of<Ev, In> out;
+    for (std::size_t i = 0; i < nx; ++i) {
+      out.rate(Eigen::Index(i)) = dx[i].v;
+      for (std::size_t j = 0; j < nx; ++j) out.A(Eigen::Index(i), Eigen::Index(j)) = dx[i].part(j);
+      for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(i), Eigen::Index(k)) = dx[i].part(nx + k);
+    }
+    out.status = rhs.status();
+    return out;
   }
-  out.status = rhs.status();
-  return out;
 }
 
 // x = (q_ind, u_ind) of a nonholonomic system NH with holonomic constraints H.

@@ -56,14 +56,6 @@ KANE_ALWAYS_INLINE sym3<S> minus_outer(const sym3<S>& m, const v3<S>& x, const S
   return {m[0] - x.x * y.x, m[1] - x.y * y.y, m[2] - x.z * y.z,
           m[3] - x.x * y.y, m[4] - x.y * y.z, m[5] - x.z * y.x};
 }
-template <class S>
-KANE_ALWAYS_INLINE sym3<S> operator+(const sym3<S>& a, const sym3<S>& b) {
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2], a[3] + b[3], a[4] + b[4], a[5] + b[5]};
-}
-template <class S>
-KANE_ALWAYS_INLINE m3<S> operator+(const m3<S>& a, const m3<S>& b) {
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
 
 template <class S>
 struct articulated {

@@ -1,0 +1,120 @@
+// Analytical derivatives of inverse and forward dynamics by q and u, from passes over the tree
+// (tree/rnea_derivatives.hpp), for a system of joint form whose loads turn with their bodies:
+//
+//   const auto [tau, dtau_dq, dtau_du, M, status] = kane::inverse_dynamics_derivatives<System>(ev);
+//   const auto [ud, dud_dq, dud_du, status] = kane::forward_dynamics_derivatives<System>(ev);
+//
+// du'/dx = -M^-1 dtau/dx at u' of the state, M factored once.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <utility>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include "kane/detail/frame_check.hpp"
+#include "kane/dynamics/detail/method.hpp"
+#include "kane/dynamics/detail/tree/rnea_derivatives.hpp"
+#include "kane/dynamics/results.hpp"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
+namespace kane {
+
+namespace detail {
+// Sys takes the analytical derivatives with the evaluator's speeds.
+template <class Sys, class Ev>
+constexpr bool analytical_derivatives() {
+  if constexpr (!recursive_form<Sys, Ev>)
+    return false;
+  else
+    return steady_loads_of<Sys, joint_form_of<Sys, Ev>>;
+}
+template <class JF, class... X, std::size_t... I>
+constexpr bool loads_checked(list<X...>, std::index_sequence<I...>) {
+  return (check<steady_load<JF, X, I>(), error::analytical_derivatives_need_loads_fixed_in_their_bodies<X>,
+                fix::call_kane_linearize> &&
+          ...);
+}
+template <class Sys, class Ev>
+constexpr bool derivatives_checked() {
+  if constexpr (!recursive_form<Sys, Ev>)
+    return refused<error::analytical_derivatives_need_a_tree_of_simple_rotations_with_u_equal_to_q_dot<Sys>,
+                   fix::call_kane_linearize>;
+  else
+    return loads_checked<joint_form_of<Sys, Ev>>(
+        typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
+}
+template <class M>
+void set_nan(M& m) {
+  m.setConstant(std::numeric_limits<typename M::Scalar>::quiet_NaN());
+}
+}  // namespace detail
+
+template <System Sys, Evaluator Ev>
+requires std::is_floating_point_v<typename Ev::scalar> inverse_derivatives<typename Ev::scalar, Ev::nu>
+inverse_dynamics_derivatives(const Ev& ev) {
+  static_assert(detail::derivatives_checked<Sys, Ev>());
+  using S = typename Ev::scalar;
+  constexpr std::size_t n = Ev::nu;
+  inverse_derivatives<S, n> out;
+  if constexpr (detail::analytical_derivatives<Sys, Ev>()) {
+    Eigen::Matrix<S, int(n), 1> ud;
+    for (std::size_t r = 0; r < n; ++r) ud(Eigen::Index(r)) = detail::joint_rate<2>(ev, r);
+    using JF = detail::joint_form_of<Sys, Ev>;
+    const detail::body_frames<JF, Ev> bf(ev);
+    detail::tree_partials<JF, Sys, Ev> pass(bf, ev);
+    pass.outward(ev, ud);
+    detail::inverse_partials<S, n> d;
+    pass.template inward<detail::partials::derivatives>(d);
+    out = {d.tau, d.dq, d.du, d.M, ev.status()};
+    if (out.status == solve_status::ok &&
+        !(detail::all_finite_matrix(d.tau) && detail::all_finite_matrix(d.dq) &&
+          detail::all_finite_matrix(d.du) && detail::all_finite_matrix(d.M)))
+      out.status = solve_status::not_finite;
+    if (out.status != solve_status::ok)
+      detail::set_nan(out.tau), detail::set_nan(out.dtau_dq), detail::set_nan(out.dtau_du),
+          detail::set_nan(out.M);
+  }
+  return out;
+}
+
+template <System Sys, Evaluator Ev>
+requires std::is_floating_point_v<typename Ev::scalar> forward_derivatives<typename Ev::scalar, Ev::nu>
+forward_dynamics_derivatives(const Ev& ev) {
+  static_assert(detail::derivatives_checked<Sys, Ev>());
+  using S = typename Ev::scalar;
+  constexpr std::size_t n = Ev::nu;
+  forward_derivatives<S, n> out;
+  if constexpr (detail::analytical_derivatives<Sys, Ev>()) {
+    // tau at u' = 0 and M; u' = -M^-1 tau; then the derivatives at u'
+    using JF = detail::joint_form_of<Sys, Ev>;
+    const detail::body_frames<JF, Ev> bf(ev);
+    detail::tree_partials<JF, Sys, Ev> pass(bf, ev);
+    pass.outward(ev, Eigen::Matrix<S, int(n), 1>::Zero());
+    detail::inverse_partials<S, n> d;
+    pass.template inward<detail::partials::values>(d);
+    const Eigen::LLT<Eigen::Matrix<S, int(n), int(n)>> llt(d.M);
+    out.status = ev.status();
+    if (out.status == solve_status::ok && llt.info() != Eigen::Success) out.status = solve_status::singular;
+    if (out.status == solve_status::ok) {
+      out.ud = -llt.solve(d.tau);
+      pass.outward(ev, out.ud);
+      pass.template inward<detail::partials::derivatives>(d);
+      out.dud_dq = -d.dq, out.dud_du = -d.du;
+      llt.solveInPlace(out.dud_dq), llt.solveInPlace(out.dud_du);
+      if (!(detail::all_finite_matrix(out.ud) && detail::all_finite_matrix(out.dud_dq) &&
+            detail::all_finite_matrix(out.dud_du)))
+        out.status = solve_status::not_finite;
+    }
+    if (out.status != solve_status::ok)
+      detail::set_nan(out.ud), detail::set_nan(out.dud_dq), detail::set_nan(out.dud_du);
+  }
+  return out;
+}
+
+}  // namespace kane
+#pragma GCC diagnostic pop

@@ -1,0 +1,56 @@
+// Analytical derivatives of the 48-link spatial chain's inverse and forward dynamics against
+// central differences of kane's own (1e-7 relative, scaled by the chain's condition).
+#include <catch2/catch.hpp>
+
+#include <cstddef>
+#include <random>
+
+#include <kane/kane.hpp>
+
+#include "recursive_models.hpp"
+
+namespace {
+constexpr std::size_t n = 48;
+using model = recursive::chain::system<n>;
+using state = recursive::chain::state<n>;
+using evaluator = recursive::chain::evaluator<n>;
+
+template <bool Speed, class G>
+auto central(const state& s, std::size_t j, G g) {
+  const double h = 1e-6;
+  state a = s, b = s;
+  (Speed ? a.u[j] : a.q[j]) += h;
+  (Speed ? b.u[j] : b.q[j]) -= h;
+  evaluator ea, eb;
+  ea.update(a), eb.update(b);
+  return ((g(ea) - g(eb)) / (2 * h)).eval();
+}
+template <class M>
+double relative(const M& a, const M& b) {
+  return (a - b).cwiseAbs().maxCoeff() / (1 + b.cwiseAbs().maxCoeff());
+}
+}  // namespace
+
+TEST_CASE("dynamics derivatives: the 48-link chain against central differences", "[derivatives]") {
+  std::mt19937 rng(53);
+  const auto s = recursive::random_state<state>(rng);
+  evaluator ev;
+  ev.update(s);
+  const auto id = kane::inverse_dynamics_derivatives<model>(ev);
+  const auto fd = kane::forward_dynamics_derivatives<model>(ev);
+  REQUIRE(id.status == kane::solve_status::ok);
+  REQUIRE(fd.status == kane::solve_status::ok);
+  const auto tau = [](const evaluator& x) { return kane::inverse_dynamics<model>(x).tau; };
+  const auto ud = [](const evaluator& x) { return kane::forward_dynamics<model>(x).ud; };
+  Eigen::Matrix<double, int(n), int(n)> tq, tu, aq, au;
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto c = Eigen::Index(j);
+    tq.col(c) = central<false>(s, j, tau), tu.col(c) = central<true>(s, j, tau);
+    aq.col(c) = central<false>(s, j, ud), au.col(c) = central<true>(s, j, ud);
+  }
+  CHECK(relative(id.dtau_dq, tq) < 1e-7);
+  CHECK(relative(id.dtau_du, tu) < 1e-7);
+  CHECK(relative(fd.dud_dq, aq) < 1e-7);
+  CHECK(relative(fd.dud_du, au) < 1e-7);
+  CHECK(relative(fd.ud, kane::forward_dynamics<model>(ev).ud) < 1e-10);
+}

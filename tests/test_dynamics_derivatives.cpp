@@ -1,0 +1,176 @@
+// Analytical derivatives of inverse and forward dynamics (kane::inverse_dynamics_derivatives,
+// kane::forward_dynamics_derivatives) against central differences of kane's own inverse and
+// forward dynamics, and against jets carried through forward dynamics: a branched tree with an
+// oblique axis, a fixed tool, a particle and loads fixed in their bodies; the 6R arm driven by
+// joint torques.
+#include <catch2/catch.hpp>
+
+#include <cstddef>
+#include <random>
+
+#include <kane/kane.hpp>
+
+#include "../examples/models/arm6_dynamics.hpp"
+#include "recursive_models.hpp"
+
+namespace {
+namespace tree = recursive::tree;
+using kane::e;
+using kane::literal;
+
+// The tree's bodies with loads whose components are constant in the bodies they act on.
+using steady_tree = kane::system<
+    kane::rigid_body<tree::A, tree::Ao, literal(1.5),
+                     kane::inertia<tree::A, tree::Ao, literal(0.03), literal(0.02), literal(0.04)>>,
+    kane::rigid_body<
+        tree::B, tree::Bo, literal(1.1),
+        kane::inertia<tree::B, tree::Bo, literal(0.01), literal(0.015), literal(0.012), literal(0.001)>>,
+    kane::rigid_body<tree::T, tree::To, literal(0.4),
+                     kane::inertia<tree::T, tree::To, literal(0.004), literal(0.003), literal(0.005),
+                                   literal(0.0), literal(0.0005), literal(-0.0002)>>,
+    kane::particle<tree::P, literal(0.7)>,
+    kane::rigid_body<
+        tree::D, tree::Do, literal(0.9),
+        kane::inertia<tree::D, tree::Do, literal(0.02), literal(0.01), literal(0.025), literal(0.002)>>,
+    kane::force<tree::To, 2.0 * e<tree::B, 3> + 0.5 * e<tree::T, 1>>,
+    kane::torque<tree::C, 0.3 * e<tree::C, 1>>, kane::torque<tree::D, 0.5 * e<tree::D, 3>>,
+    kane::gravity<literal(-9.81) * e<tree::N, 3>>>;
+
+using arm_state = kane::state<double, 6, 6, 0, 6>;
+using arm_evaluator = kane::evaluator<arm_state, kane::frames<models::arm6::B6>, kane::level::acceleration,
+                                      kane::qdot_speeds<6>>;
+
+// Column j of d g / dq (Speed: d g / du) by central differences of g(evaluator).
+template <class Ev, bool Speed, class St, class G>
+auto central(const St& s, std::size_t j, G g) {
+  const double h = 1e-6;
+  St a = s, b = s;
+  (Speed ? a.u[j] : a.q[j]) += h;
+  (Speed ? b.u[j] : b.q[j]) -= h;
+  Ev ea, eb;
+  ea.update(a), eb.update(b);
+  return ((g(ea) - g(eb)) / (2 * h)).eval();
+}
+template <class M, class R>
+double relative(const M& a, const R& b) {
+  return (a - b).cwiseAbs().maxCoeff() / (1 + b.cwiseAbs().maxCoeff());
+}
+// Every derivative against central differences (1e-7 relative); M against mass_matrix.
+template <class Sys, class Ev, class St>
+void check_differences(const St& s) {
+  constexpr std::size_t n = Ev::nu;
+  Ev ev;
+  ev.update(s);
+  const auto id = kane::inverse_dynamics_derivatives<Sys>(ev);
+  const auto fd = kane::forward_dynamics_derivatives<Sys>(ev);
+  REQUIRE(id.status == kane::solve_status::ok);
+  REQUIRE(fd.status == kane::solve_status::ok);
+  CHECK(relative(id.tau, kane::inverse_dynamics<Sys>(ev).tau) < 1e-14);
+  CHECK(relative(id.M, kane::mass_matrix<Sys>(ev).M) < 1e-14);
+  CHECK(relative(fd.ud, kane::forward_dynamics<Sys>(ev).ud) < 1e-12);
+  const auto tau = [](const Ev& x) { return kane::inverse_dynamics<Sys>(x).tau; };
+  const auto ud = [](const Ev& x) { return kane::forward_dynamics<Sys>(x).ud; };
+  Eigen::Matrix<double, int(n), int(n)> tq, tu, aq, au;
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto c = Eigen::Index(j);
+    tq.col(c) = central<Ev, false>(s, j, tau), tu.col(c) = central<Ev, true>(s, j, tau);
+    aq.col(c) = central<Ev, false>(s, j, ud), au.col(c) = central<Ev, true>(s, j, ud);
+  }
+  CHECK(relative(id.dtau_dq, tq) < 1e-7);
+  CHECK(relative(id.dtau_du, tu) < 1e-7);
+  CHECK(relative(fd.dud_dq, aq) < 1e-7);
+  CHECK(relative(fd.dud_du, au) < 1e-7);
+}
+// du'/dq and du'/du against jets of 2n directions through forward_dynamics (1e-10 relative).
+template <class Sys, class Ev, class St>
+void check_jets(const St& s) {
+  constexpr std::size_t n = Ev::nu;
+  using J = kane::jet<double, 2 * n>;
+  using JEv = typename kane::detail::rebind_evaluator<Ev, J>::type;
+  auto js = kane::detail::lift<2 * n>(s);
+  for (std::size_t i = 0; i < n; ++i)
+    js.q[i] = J::variable(s.q[i], i), js.qd[i] = J::variable(s.qd[i], n + i),
+    js.u[i] = J::variable(s.u[i], n + i);
+  JEv jev;
+  jev.update(js);
+  const auto jud = kane::forward_dynamics<Sys>(jev).ud;
+  Ev ev;
+  ev.update(s);
+  const auto fd = kane::forward_dynamics_derivatives<Sys>(ev);
+  Eigen::Matrix<double, int(n), int(n)> aq, au;
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t j = 0; j < n; ++j)
+      aq(Eigen::Index(r), Eigen::Index(j)) = jud(Eigen::Index(r)).part(j),
+                          au(Eigen::Index(r), Eigen::Index(j)) = jud(Eigen::Index(r)).part(n + j);
+  CHECK(relative(fd.dud_dq, aq) < 1e-10);
+  CHECK(relative(fd.dud_du, au) < 1e-10);
+}
+}  // namespace
+
+TEST_CASE("dynamics derivatives: a branched tree against central differences and jets", "[derivatives]") {
+  std::mt19937 rng(41);
+  for (int k = 0; k < 5; ++k) {
+    const auto s = recursive::random_state<tree::state>(rng);
+    check_differences<steady_tree, tree::evaluator>(s);
+    check_jets<steady_tree, tree::evaluator>(s);
+  }
+}
+
+TEST_CASE("dynamics derivatives: the 6R arm driven by joint torques", "[derivatives]") {
+  std::mt19937 rng(43);
+  std::uniform_real_distribution<double> torque(-5, 5);
+  for (int k = 0; k < 5; ++k) {
+    auto s = recursive::random_state<arm_state>(rng);
+    for (auto& r : s.r) r = torque(rng);
+    check_differences<models::arm6::driven, arm_evaluator>(s);
+    check_jets<models::arm6::driven, arm_evaluator>(s);
+  }
+}
+
+TEST_CASE("dynamics derivatives: a state that is not finite gives NaN and its status", "[derivatives]") {
+  std::mt19937 rng(47);
+  auto s = recursive::random_state<arm_state>(rng);
+  s.u[2] = std::numeric_limits<double>::infinity();
+  arm_evaluator ev;
+  ev.update(s);
+  const auto id = kane::inverse_dynamics_derivatives<models::arm6::driven>(ev);
+  const auto fd = kane::forward_dynamics_derivatives<models::arm6::driven>(ev);
+  CHECK(id.status != kane::solve_status::ok);
+  CHECK(fd.status != kane::solve_status::ok);
+  CHECK(id.dtau_dq.hasNaN());
+  CHECK(fd.dud_du.hasNaN());
+  CHECK(fd.ud.hasNaN());
+}
+
+TEST_CASE("linearize: the driven 6R arm's A and B against central differences of forward dynamics",
+          "[derivatives]") {
+  using inputs = kane::inputs<kane::r<1>, kane::r<2>, kane::r<3>, kane::r<4>, kane::r<5>, kane::r<6>>;
+  using Sys = models::arm6::driven;
+  std::mt19937 rng(59);
+  std::uniform_real_distribution<double> torque(-5, 5);
+  auto s = recursive::random_state<arm_state>(rng);
+  for (auto& r : s.r) r = torque(rng);
+  const auto lin = kane::linearize<Sys, arm_evaluator, inputs>(s);
+  REQUIRE(lin.status == kane::solve_status::ok);
+  const auto ud = [](const arm_state& x) {
+    arm_evaluator ev;
+    ev.update(x);
+    return kane::forward_dynamics<Sys>(ev).ud;
+  };
+  Eigen::Matrix<double, 12, 12> a = Eigen::Matrix<double, 12, 12>::Zero();
+  Eigen::Matrix<double, 12, 6> b = Eigen::Matrix<double, 12, 6>::Zero();
+  a.topRightCorner<6, 6>().setIdentity();
+  const double h = 1e-6;
+  for (std::size_t j = 0; j < 6; ++j) {
+    arm_state p = s, m = s;
+    p.q[j] += h, m.q[j] -= h;
+    a.block<6, 1>(6, Eigen::Index(j)) = (ud(p) - ud(m)) / (2 * h);
+    p = s, m = s, p.u[j] += h, m.u[j] -= h;
+    a.block<6, 1>(6, Eigen::Index(6 + j)) = (ud(p) - ud(m)) / (2 * h);
+    p = s, m = s, p.r[j] += h, m.r[j] -= h;
+    b.block<6, 1>(6, Eigen::Index(j)) = (ud(p) - ud(m)) / (2 * h);
+  }
+  CHECK(relative(lin.A, a) < 1e-7);
+  CHECK(relative(lin.B, b) < 1e-7);
+  CHECK(relative(lin.rate.tail<6>(), ud(s)) < 1e-12);
+}
