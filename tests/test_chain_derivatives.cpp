@@ -25,8 +25,8 @@ auto central(const state& s, std::size_t j, G g) {
   ea.update(a), eb.update(b);
   return ((g(ea) - g(eb)) / (2 * h)).eval();
 }
-template <class M>
-double relative(const M& a, const M& b) {
+template <class M, class R>
+double relative(const M& a, const R& b) {
   return (a - b).cwiseAbs().maxCoeff() / (1 + b.cwiseAbs().maxCoeff());
 }
 }  // namespace
@@ -53,4 +53,20 @@ TEST_CASE("dynamics derivatives: the 48-link chain against central differences",
   CHECK(relative(fd.dud_dq, aq) < 1e-7);
   CHECK(relative(fd.dud_du, au) < 1e-7);
   CHECK(relative(fd.ud, kane::forward_dynamics<model>(ev).ud) < 1e-10);
+}
+
+TEST_CASE("linearize: the 48-link chain through the analytical derivatives", "[derivatives]") {
+  std::mt19937 rng(59);
+  const auto s = recursive::random_state<state>(rng);
+  const auto lin = kane::linearize<model, evaluator>(s);
+  REQUIRE(lin.status == kane::solve_status::ok);
+  evaluator ev;
+  ev.update(s);
+  const auto fd = kane::forward_dynamics_derivatives<model>(ev);
+  constexpr auto m = Eigen::Index(n);
+  CHECK(lin.A.topLeftCorner<m, m>().isZero(0));
+  CHECK(lin.A.topRightCorner<m, m>().isIdentity(0));
+  CHECK(relative(lin.A.bottomLeftCorner<m, m>(), fd.dud_dq) == 0);
+  CHECK(relative(lin.A.bottomRightCorner<m, m>(), fd.dud_du) == 0);
+  CHECK(relative(lin.rate.tail<m>(), kane::forward_dynamics<model>(ev).ud) < 1e-10);
 }

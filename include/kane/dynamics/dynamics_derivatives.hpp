@@ -68,12 +68,11 @@ inverse_dynamics_derivatives(const Ev& ev) {
     const detail::body_frames<JF, Ev> bf(ev);
     detail::tree_partials<JF, Sys, Ev> pass(bf, ev);
     pass.outward(ev, ud);
-    detail::inverse_partials<S, n> d;
-    pass.template inward<detail::partials::derivatives>(d);
-    out = {d.tau, d.dq, d.du, d.M, ev.status()};
+    pass.template inward<detail::partials::all>(out.tau, out.M, out.dtau_dq, out.dtau_du);
+    out.status = ev.status();
     if (out.status == solve_status::ok &&
-        !(detail::all_finite_matrix(d.tau) && detail::all_finite_matrix(d.dq) &&
-          detail::all_finite_matrix(d.du) && detail::all_finite_matrix(d.M)))
+        !(detail::all_finite_matrix(out.tau) && detail::all_finite_matrix(out.dtau_dq) &&
+          detail::all_finite_matrix(out.dtau_du) && detail::all_finite_matrix(out.M)))
       out.status = solve_status::not_finite;
     if (out.status != solve_status::ok)
       detail::set_nan(out.tau), detail::set_nan(out.dtau_dq), detail::set_nan(out.dtau_du),
@@ -95,16 +94,17 @@ forward_dynamics_derivatives(const Ev& ev) {
     const detail::body_frames<JF, Ev> bf(ev);
     detail::tree_partials<JF, Sys, Ev> pass(bf, ev);
     pass.outward(ev, Eigen::Matrix<S, int(n), 1>::Zero());
-    detail::inverse_partials<S, n> d;
-    pass.template inward<detail::partials::values>(d);
-    const Eigen::LLT<Eigen::Matrix<S, int(n), int(n)>> llt(d.M);
+    Eigen::Matrix<S, int(n), int(n)> m;
+    pass.template inward<detail::partials::values>(out.ud, m, out.dud_dq, out.dud_du);  // ud holds tau
+    const Eigen::LLT<Eigen::Matrix<S, int(n), int(n)>> llt(m);
     out.status = ev.status();
     if (out.status == solve_status::ok && llt.info() != Eigen::Success) out.status = solve_status::singular;
     if (out.status == solve_status::ok) {
-      out.ud = -llt.solve(d.tau);
+      out.ud = -llt.solve(out.ud);
       pass.outward(ev, out.ud);
-      pass.template inward<detail::partials::derivatives>(d);
-      out.dud_dq = -d.dq, out.dud_du = -d.du;
+      Eigen::Matrix<S, int(n), 1> tau;
+      pass.template inward<detail::partials::derivatives>(tau, m, out.dud_dq, out.dud_du);
+      out.dud_dq = -out.dud_dq, out.dud_du = -out.dud_du;
       llt.solveInPlace(out.dud_dq), llt.solveInPlace(out.dud_du);
       if (!(detail::all_finite_matrix(out.ud) && detail::all_finite_matrix(out.dud_dq) &&
             detail::all_finite_matrix(out.dud_du)))

@@ -36,12 +36,6 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
-template <class S, std::size_t N>
-struct inverse_partials {
-  Eigen::Matrix<S, int(N), 1> tau;
-  Eigen::Matrix<S, int(N), int(N)> dq, du, M;
-};
-
 // The passes over the joint-form system Sys; each frame's own items, then u', then the sums.
 template <class JF, class Sys, class Ev>
 struct tree_partials {
@@ -121,13 +115,13 @@ struct tree_partials {
       b[g] = variation_of(own[g], v[g], l);
     }
   }
-  // tau and M, and dtau/dq and dtau/du for partials::derivatives.
-  template <partials Parts>
-  KANE_ALWAYS_INLINE void inward(inverse_partials<S, n>& out) {
-    constexpr bool all = Parts == partials::derivatives;
+  // tau, and M (partials::values), dtau/dq and dtau/du (partials::derivatives), or all three.
+  template <partials Parts, class Tau, class Square>
+  KANE_ALWAYS_INLINE void inward(Tau& tau, Square& m, Square& dq, Square& du) {
+    constexpr bool mass = Parts != partials::derivatives, slopes = Parts != partials::values;
     y = own;
-    out.M.setZero();
-    if constexpr (all) out.dq.setZero(), out.du.setZero();
+    if constexpr (mass) m.setZero();
+    if constexpr (slopes) dq.setZero(), du.setZero();
     for (std::size_t g = nf - 1; g > 0; --g) {
       const auto p = std::size_t(t.parent[g]);
       const int r = t.speed[g];
@@ -135,10 +129,11 @@ struct tree_partials {
         const auto k = Eigen::Index(r);
         const spatial<S>& s = screw[std::size_t(r)];
         const spatial<S> ys = times(y[g], s);
-        out.tau(k) = dot6(s, f[g]);
-        for (int c = r; c >= 0; c = t.parent_speed[std::size_t(c)])
-          out.M(k, Eigen::Index(c)) = out.M(Eigen::Index(c), k) = dot6(ys, screw[std::size_t(c)]);
-        if constexpr (all) {
+        tau(k) = dot6(s, f[g]);
+        if constexpr (mass)
+          for (int c = r; c >= 0; c = t.parent_speed[std::size_t(c)])
+            m(k, Eigen::Index(c)) = m(Eigen::Index(c), k) = dot6(ys, screw[std::size_t(c)]);
+        if constexpr (slopes) {
           const vec bs = b[g].transposed_times(s);
           const spatial<S> fq =
               times(y[g], da[std::size_t(r)]) + b[g].times(dv[std::size_t(r)]) + cross_force(s, f[g]);
@@ -146,15 +141,15 @@ struct tree_partials {
           for (int c = r; c >= 0; c = t.parent_speed[std::size_t(c)]) {
             const auto j = std::size_t(c);
             const auto l = Eigen::Index(c);
-            out.dq(k, l) = dot6(ys, da[j]) + dot3(bs, dv[j].w);
-            out.du(k, l) = S(2) * dot6(ys, dv[j]) + dot3(bs, screw[j].w);
-            if (c != r) out.dq(l, k) = dot6(screw[j], fq), out.du(l, k) = dot6(screw[j], fu);
+            dq(k, l) = dot6(ys, da[j]) + dot3(bs, dv[j].w);
+            du(k, l) = S(2) * dot6(ys, dv[j]) + dot3(bs, screw[j].w);
+            if (c != r) dq(l, k) = dot6(screw[j], fq), du(l, k) = dot6(screw[j], fu);
           }
         }
       }
       if (p > 0) {
         add_to(y[p], y[g]), f[p] = f[p] + f[g];
-        if constexpr (all) add_to(b[p], b[g]);
+        if constexpr (slopes) add_to(b[p], b[g]);
       }
     }
   }
