@@ -163,5 +163,41 @@ bool solve_positive_definite(const Eigen::Matrix<S, N, N>& m, const Eigen::Matri
   return true;
 }
 
+// X = -M^-1 X for every column of each X, M = L L^T factored once by plain loops (for a few speeds,
+// where a blocked solver's bookkeeping outweighs its arithmetic); false where M is not positive definite.
+template <class S, int N, class... X>
+bool solve_negated(const Eigen::Matrix<S, N, N>& m, X&... x) {
+  constexpr int n = N;
+  std::array<S, std::size_t(n * n)> l{};
+  std::array<S, std::size_t(n)> inv{};
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j <= i; ++j) {
+      S s = m(i, j);
+      for (int k = 0; k < j; ++k) s -= l[std::size_t(i * n + k)] * l[std::size_t(j * n + k)];
+      if (i == j) {
+        if (!(s > S(0))) return false;
+        l[std::size_t(i * n + i)] = std::sqrt(s), inv[std::size_t(i)] = S(1) / l[std::size_t(i * n + i)];
+      } else
+        l[std::size_t(i * n + j)] = s * inv[std::size_t(j)];
+    }
+  const auto solve = [&](auto& b) {
+    for (Eigen::Index c = 0; c < b.cols(); ++c) {
+      S* y = &b(0, c);
+      for (int i = 0; i < n; ++i) {  // L y = b
+        S s = y[i];
+        for (int k = 0; k < i; ++k) s -= l[std::size_t(i * n + k)] * y[k];
+        y[i] = s * inv[std::size_t(i)];
+      }
+      for (int i = n - 1; i >= 0; --i) {  // L^T x = y, negated
+        S s = y[i];
+        for (int k = i + 1; k < n; ++k) s -= l[std::size_t(k * n + i)] * y[k];
+        y[i] = s * inv[std::size_t(i)];
+      }
+      for (int i = 0; i < n; ++i) y[i] = -y[i];
+    }
+  };
+  (solve(x), ...);
+  return true;
+}
 }  // namespace kane::detail
 #pragma GCC diagnostic pop

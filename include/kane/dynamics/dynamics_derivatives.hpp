@@ -4,7 +4,7 @@
 //   const auto [tau, dtau_dq, dtau_du, M, status] = kane::inverse_dynamics_derivatives<System>(ev);
 //   const auto [ud, dud_dq, dud_du, status] = kane::forward_dynamics_derivatives<System>(ev);
 //
-// du'/dx = -M^-1 dtau/dx at u' of the state, M factored once.
+// du'/dx = -M^-1 dtau/dx at u', M factored once.
 #pragma once
 
 #include <cstddef>
@@ -16,8 +16,10 @@
 #include <Eigen/Core>
 
 #include "kane/detail/frame_check.hpp"
+#include "kane/detail/invert.hpp"
 #include "kane/dynamics/detail/method.hpp"
 #include "kane/dynamics/detail/tree/rnea_derivatives.hpp"
+#include "kane/dynamics/forward_dynamics.hpp"
 #include "kane/dynamics/results.hpp"
 
 #pragma GCC diagnostic push
@@ -89,23 +91,42 @@ forward_dynamics_derivatives(const Ev& ev) {
   constexpr std::size_t n = Ev::nu;
   forward_derivatives<S, n> out;
   if constexpr (detail::analytical_derivatives<Sys, Ev>()) {
-    // tau at u' = 0 and M; u' = -M^-1 tau; then the derivatives at u'
+    // u' = M^-1 f: forward dynamics up to articulated_above speeds; above, -M^-1 tau(u' = 0) from
+    // the pass itself. Then the derivatives at u', and M.
     using JF = detail::joint_form_of<Sys, Ev>;
     const detail::body_frames<JF, Ev> bf(ev);
     detail::tree_partials<JF, Sys, Ev> pass(bf, ev);
-    pass.outward(ev, Eigen::Matrix<S, int(n), 1>::Zero());
     Eigen::Matrix<S, int(n), int(n)> m;
-    pass.template inward<detail::partials::values>(out.ud, m, out.dud_dq, out.dud_du);  // ud holds tau
-    const Eigen::LLT<Eigen::Matrix<S, int(n), int(n)>> llt(m);
-    out.status = ev.status();
-    if (out.status == solve_status::ok && llt.info() != Eigen::Success) out.status = solve_status::singular;
+    Eigen::Matrix<S, int(n), 1> tau;
+    constexpr bool small = n <= detail::articulated_above;
+    if constexpr (small) {
+      const auto fd = forward_dynamics<Sys>(ev);
+      out.ud = fd.ud, out.status = fd.status;
+    } else {
+      pass.outward(ev, Eigen::Matrix<S, int(n), 1>::Zero());
+      pass.template inward<detail::partials::values>(tau, m, out.dud_dq, out.dud_du);
+      out.status = ev.status();
+    }
+    Eigen::LLT<Eigen::Matrix<S, int(n), int(n)>> llt;
+    if (out.status == solve_status::ok && !small) {
+      llt.compute(m);
+      if (llt.info() != Eigen::Success)
+        out.status = solve_status::singular;
+      else
+        out.ud = -llt.solve(tau);
+    }
     if (out.status == solve_status::ok) {
-      out.ud = -llt.solve(out.ud);
       pass.outward(ev, out.ud);
-      Eigen::Matrix<S, int(n), 1> tau;
-      pass.template inward<detail::partials::derivatives>(tau, m, out.dud_dq, out.dud_du);
-      out.dud_dq = -out.dud_dq, out.dud_du = -out.dud_du;
-      llt.solveInPlace(out.dud_dq), llt.solveInPlace(out.dud_du);
+      pass.template inward<small ? detail::partials::all : detail::partials::derivatives>(tau, m, out.dud_dq,
+                                                                                          out.dud_du);
+      if constexpr (small) {
+        if (!detail::solve_negated(m, out.dud_dq, out.dud_du)) out.status = solve_status::singular;
+      } else {
+        out.dud_dq = -out.dud_dq, out.dud_du = -out.dud_du;
+        llt.solveInPlace(out.dud_dq), llt.solveInPlace(out.dud_du);
+      }
+    }
+    if (out.status == solve_status::ok) {
       if (!(detail::all_finite_matrix(out.ud) && detail::all_finite_matrix(out.dud_dq) &&
             detail::all_finite_matrix(out.dud_du)))
         out.status = solve_status::not_finite;

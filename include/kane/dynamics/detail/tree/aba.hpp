@@ -85,6 +85,52 @@ KANE_ALWAYS_INLINE void add_moved(articulated<S>& z, const sym3<S>& a, const m3<
   }
 }
 
+// The loops below run over frames at run time: each frame's step is one of a few variants, its
+// turn's axis (0, 1, 2, or 3 for a general E) and its offset's (none, along x, y or z, general),
+// compiled once each and chosen per frame. A variant's number is 5 axis + offset.
+template <class BF>
+constexpr int variant_of(std::size_t g) {
+  const int a = BF::axes[g] < 0 ? 3 : BF::axes[g];
+  const auto o = BF::offset_pattern(g);
+  const bool x = o[0] != entry::zero, y = o[1] != entry::zero, z = o[2] != entry::zero;
+  return 5 * a + (!x && !y && !z ? 0 : x && !y && !z ? 1 : !x && y && !z ? 2 : !x && !y && z ? 3 : 4);
+}
+template <int V>
+constexpr std::array<entry, 3> variant_offset() {
+  constexpr int o = V % 5;
+  constexpr entry x = o == 1 || o == 4 ? entry::other : entry::zero,
+                  y = o == 2 || o == 4 ? entry::other : entry::zero,
+                  z = o == 3 || o == 4 ? entry::other : entry::zero;
+  return {x, y, z};
+}
+template <int V>
+constexpr std::array<entry, 3> variant_axis() {
+  constexpr int a = V / 5;
+  if constexpr (a == 3)
+    return {entry::other, entry::other, entry::other};
+  else
+    return {a == 0 ? entry::one : entry::zero, a == 1 ? entry::one : entry::zero,
+            a == 2 ? entry::one : entry::zero};
+}
+template <class BF, std::size_t NF>
+struct variants {
+  std::array<int, 20> used{};
+  std::size_t n = 0;
+  constexpr variants() {
+    for (std::size_t g = 1; g < NF; ++g) {
+      const int v = variant_of<BF>(g);
+      bool seen = false;
+      for (std::size_t k = 0; k < n; ++k) seen = seen || used[k] == v;
+      if (!seen) used[n++] = v;
+    }
+  }
+};
+// f(std::integral_constant<int, V>) for the variant V of a frame
+template <auto Used, class F, std::size_t... I>
+KANE_ALWAYS_INLINE void with_variant(int v, F&& f, std::index_sequence<I...>) {
+  (void)((v == Used.used[I] ? (f(std::integral_constant<int, Used.used[I]>{}), true) : false) || ...);
+}
+
 // u' of the joint-form system Sys; false where an articulated inertia along a speed is not positive.
 template <class JF, class Sys, class Ev, class Out>
 KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf, const Ev& ev, Out& ud) {
@@ -93,38 +139,69 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
   using BF = body_frames<JF, Ev>;
   static constexpr auto& t = JF::table;
   constexpr std::size_t nf = JF::nf, n = JF::n;
+  static constexpr variants<BF, nf> used{};
+  static constexpr std::array<int, nf> variant = [] {
+    std::array<int, nf> out{};
+    for (std::size_t g = 1; g < nf; ++g) out[g] = variant_of<BF>(g);
+    return out;
+  }();
+  const auto each = [&](std::size_t g, auto&& f) KANE_ALWAYS_INLINE_LAMBDA {
+    with_variant<used>(variant[g], f, std::make_index_sequence<used.n>{});
+  };
   const vec zero{S(0), S(0), S(0)};
+  std::array<S, nf> c, s;               // cos, sin of each frame's turn about a coordinate axis
+  std::array<turn<S, -1>, nf> general;  // or its E
+  std::array<vec, nf> k;                // a general joint's axis
+  static_for<nf - 1>([&](auto i) {
+    constexpr std::size_t g = i + 1;
+    const auto& e = std::get<g>(bf.e);
+    if constexpr (BF::axes[g] >= 0)
+      c[g] = e.c, s[g] = e.s;
+    else
+      general[g] = e, k[g] = joint_axis_in_frame<frame_at<JF, g>, S>();
+  });
+  // f(E, K, O): the frame's turn, its joint axis's pattern, its offset's
+  const auto step = [&](std::size_t g, auto&& f) KANE_ALWAYS_INLINE_LAMBDA {
+    each(g, [&](auto v) KANE_ALWAYS_INLINE_LAMBDA {
+      constexpr int a = decltype(v)::value / 5;
+      constexpr auto K = variant_axis<decltype(v)::value>();
+      constexpr auto O = variant_offset<decltype(v)::value>();
+      if constexpr (a < 3)
+        f(turn<S, a>{c[g], s[g]}, std::integral_constant<std::array<entry, 3>, K>{},
+          std::integral_constant<std::array<entry, 3>, O>{}, vec{S(a == 0), S(a == 1), S(a == 2)});
+      else
+        f(general[g], std::integral_constant<std::array<entry, 3>, K>{},
+          std::integral_constant<std::array<entry, 3>, O>{}, k[g]);
+    });
+  };
   std::array<vec, nf> w, v, cw, cv;
   std::array<articulated<S>, nf> x;
   std::array<vec, n> uw, uv;
   std::array<S, n> dd, dn;
   w[0] = zero, v[0] = zero;
-  static_for<nf - 1>([&](auto i) {  // velocities, bias accelerations, rigid inertias
-    constexpr std::size_t g = i + 1, p = std::size_t(t.parent[g]);
-    constexpr int r = t.speed[g];
-    constexpr auto O = BF::offset_pattern(g);
-    const auto& e = std::get<g>(bf.e);
-    const vec wp = e.down(w[p]);
-    v[g] = all_zero(O) ? e.down(v[p]) : e.down(v[p] + cross_along<O>(w[p], bf.offset[g]));
-    if constexpr (r < 0)
+  for (std::size_t g = 1; g < nf; ++g)  // velocities, bias accelerations
+    step(g, [&](const auto& e, auto KC, auto OC, const vec& kg) KANE_ALWAYS_INLINE_LAMBDA {
+      constexpr auto K = decltype(KC)::value;
+      constexpr auto O = decltype(OC)::value;
+      const auto p = std::size_t(t.parent[g]);
+      const int r = t.speed[g];
+      const vec wp = e.down(w[p]);
+      v[g] = all_zero(O) ? e.down(v[p]) : e.down(v[p] + cross_along<O>(w[p], bf.offset[g]));
       w[g] = wp, cw[g] = zero, cv[g] = zero;
-    else {
-      using F = frame_at<JF, g>;
-      constexpr auto K = joint_axis_pattern<F>();
-      const vec k = joint_axis_in_frame<F, S>();
-      const S u = joint_rate<1>(ev, std::size_t(r));
-      w[g] = add_along<K, onto::sum>(wp, u, k);
-      cw[g] = u * cross_along<K>(w[g], k), cv[g] = u * cross_along<K>(v[g], k);
-    }
-    x[g] = {{S(0), S(0), S(0), S(0), S(0), S(0)},
-            {zero, zero, zero},
-            {S(0), S(0), S(0), S(0), S(0), S(0)},
-            zero,
-            zero};
-  });
+      if (r >= 0) {
+        const S u = joint_rate<1>(ev, std::size_t(r));
+        w[g] = add_along<K, onto::sum>(wp, u, kg);
+        cw[g] = u * cross_along<K>(w[g], kg), cv[g] = u * cross_along<K>(v[g], kg);
+      }
+    });
   composite_inertia<S> zero_inertia{S(0), zero, {S(0), S(0), S(0), S(0), S(0), S(0)}};
   std::array<composite_inertia<S>, nf> rigid;
   rigid.fill(zero_inertia);
+  x.fill({{S(0), S(0), S(0), S(0), S(0), S(0)},
+          {zero, zero, zero},
+          {S(0), S(0), S(0), S(0), S(0), S(0)},
+          zero,
+          zero});
   [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) {
     (
         [&] {
@@ -133,17 +210,16 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
             using F = frame_at<JF, std::size_t(g)>;
             constexpr int ip = t.item_point[I];
             constexpr auto C = BF::local_pattern(ip, g);
-            const vec c = bf.template local<ip, g>();
+            const vec cg = bf.template local<ip, g>();
             if constexpr (is_body<X> || is_particle<X>)
-              add_item_mass<X, C>(rigid[std::size_t(g)], c, ev);
+              add_item_mass<X, C>(rigid[std::size_t(g)], cg, ev);
             else  // -f_ext
-              subtract_load<X, F, C>(x[std::size_t(g)].f, x[std::size_t(g)].n, c, ev);
+              subtract_load<X, F, C>(x[std::size_t(g)].f, x[std::size_t(g)].n, cg, ev);
           }
         }(),
         ...);
   }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
-  static_for<nf - 1>([&](auto i) {  // I = [i [h]; -[h] m 1], p = v x* I v - f_ext
-    constexpr std::size_t g = i + 1;
+  for (std::size_t g = 1; g < nf; ++g) {  // I = [i [h]; -[h] m 1], p = v x* I v - f_ext
     const composite_inertia<S>& q = rigid[g];
     articulated<S>& y = x[g];
     y.a = q.i;
@@ -151,55 +227,54 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
     y.c = {q.mass, q.mass, q.mass, S(0), S(0), S(0)};
     const vec hh = sym_times(q.i, w[g]) + cross3(q.h, v[g]), ll = q.mass * v[g] - cross3(q.h, w[g]);
     y.n = y.n + cross3(w[g], hh) + cross3(v[g], ll), y.f = y.f + cross3(w[g], ll);
-  });
+  }
   bool ok = true;
-  static_for<nf - 1>([&](auto j) {  // leaves first
-    constexpr std::size_t g = nf - 1 - j, p = std::size_t(t.parent[g]);
-    constexpr int r = t.speed[g];
-    articulated<S>& y = x[g];
-    if constexpr (r >= 0) {
-      using F = frame_at<JF, g>;
-      constexpr auto K = joint_axis_pattern<F>();
-      const vec k = joint_axis_in_frame<F, S>();
-      uw[r] = symmetric_along<K>(y.a, k), uv[r] = transposed_along<K>(y.b, k);
-      dd[r] = dot_along<K>(uw[r], k), dn[r] = -dot_along<K>(y.n, k);
-      ok = ok && dd[r] > S(0);
-      if constexpr (p > 0) {
-        const S inv = S(1) / dd[r];
-        y.a = minus_outer(y.a, uw[r], inv), y.b = minus_outer(y.b, uw[r], uv[r], inv);
-        y.c = minus_outer(y.c, uv[r], inv);
-        const S s = dn[r] * inv;
-        y.n = y.n + sym_times(y.a, cw[g]) + times3(y.b, cv[g]) + s * uw[r];
-        y.f = y.f + times3_transposed(y.b, cw[g]) + sym_times(y.c, cv[g]) + s * uv[r];
+  for (std::size_t g = nf - 1; g > 0; --g)  // leaves first
+    step(g, [&](const auto& e, auto KC, auto OC, const vec& kg) KANE_ALWAYS_INLINE_LAMBDA {
+      constexpr auto K = decltype(KC)::value;
+      constexpr auto O = decltype(OC)::value;
+      const auto p = std::size_t(t.parent[g]);
+      const int r = t.speed[g];
+      articulated<S>& y = x[g];
+      if (r >= 0) {
+        const auto j = std::size_t(r);
+        uw[j] = symmetric_along<K>(y.a, kg), uv[j] = transposed_along<K>(y.b, kg);
+        dd[j] = dot_along<K>(uw[j], kg), dn[j] = -dot_along<K>(y.n, kg);
+        ok = ok && dd[j] > S(0);
+        if (p > 0) {
+          const S inv = S(1) / dd[j];
+          y.a = minus_outer(y.a, uw[j], inv), y.b = minus_outer(y.b, uw[j], uv[j], inv);
+          y.c = minus_outer(y.c, uv[j], inv);
+          const S sj = dn[j] * inv;
+          y.n = y.n + sym_times(y.a, cw[g]) + times3(y.b, cv[g]) + sj * uw[j];
+          y.f = y.f + times3_transposed(y.b, cw[g]) + sym_times(y.c, cv[g]) + sj * uv[j];
+        }
       }
-    }
-    if constexpr (p > 0) {
-      const auto& e = std::get<g>(bf.e);
-      articulated<S>& z = x[p];
-      const vec f1 = e.up(y.f);
-      z.f = z.f + f1, z.n = z.n + e.up(y.n);
-      constexpr auto O = BF::offset_pattern(g);
-      add_moved<O>(z, e.up(y.a), e.up(y.b), e.up(y.c), bf.offset[g]);
-      if constexpr (!all_zero(O)) z.n = z.n + cross_from<O>(bf.offset[g], f1);
-    }
-  });
+      if (p > 0) {
+        articulated<S>& z = x[p];
+        const vec f1 = e.up(y.f);
+        z.f = z.f + f1, z.n = z.n + e.up(y.n);
+        add_moved<O>(z, e.up(y.a), e.up(y.b), e.up(y.c), bf.offset[g]);
+        if constexpr (!all_zero(O)) z.n = z.n + cross_from<O>(bf.offset[g], f1);
+      }
+    });
   std::array<vec, nf> aw, av;                                         // spatial accelerations
   aw[0] = zero, av[0] = base_acceleration<Sys, frame_at<JF, 0>>(ev);  // -g
-  static_for<nf - 1>([&](auto i) {
-    constexpr std::size_t g = i + 1, p = std::size_t(t.parent[g]);
-    constexpr int r = t.speed[g];
-    constexpr auto O = BF::offset_pattern(g);
-    const auto& e = std::get<g>(bf.e);
-    aw[g] = e.down(aw[p]) + cw[g];
-    av[g] = (all_zero(O) ? e.down(av[p]) : e.down(av[p] + cross_along<O>(aw[p], bf.offset[g]))) + cv[g];
-    if constexpr (r >= 0) {
-      using F = frame_at<JF, g>;
-      constexpr auto K = joint_axis_pattern<F>();
-      const S a = (dn[r] - dot3(uw[r], aw[g]) - dot3(uv[r], av[g])) / dd[r];
-      ud(Eigen::Index(r)) = a;
-      aw[g] = add_along<K, onto::sum>(aw[g], a, joint_axis_in_frame<F, S>());
-    }
-  });
+  for (std::size_t g = 1; g < nf; ++g)
+    step(g, [&](const auto& e, auto KC, auto OC, const vec& kg) KANE_ALWAYS_INLINE_LAMBDA {
+      constexpr auto K = decltype(KC)::value;
+      constexpr auto O = decltype(OC)::value;
+      const auto p = std::size_t(t.parent[g]);
+      const int r = t.speed[g];
+      aw[g] = e.down(aw[p]) + cw[g];
+      av[g] = (all_zero(O) ? e.down(av[p]) : e.down(av[p] + cross_along<O>(aw[p], bf.offset[g]))) + cv[g];
+      if (r >= 0) {
+        const auto j = std::size_t(r);
+        const S a = (dn[j] - dot3(uw[j], aw[g]) - dot3(uv[j], av[g])) / dd[j];
+        ud(Eigen::Index(j)) = a;
+        aw[g] = add_along<K, onto::sum>(aw[g], a, kg);
+      }
+    });
   return ok;
 }
 

@@ -133,9 +133,11 @@ struct body_frames<JF, Ev, list<F...>> {
     return pos_pattern[std::size_t(p)];
   }
 
+  // The coordinate axis each frame's edge turns about (-1: a general E).
+  static constexpr std::array<int, nf> axes{turn_axis<F>()...};
   // The pattern of E_F v, v of pattern p
   static constexpr std::array<entry, 3> turned_pattern(std::size_t f, const std::array<entry, 3>& p) {
-    constexpr std::array<int, nf> axis{turn_axis<F>()...};
+    constexpr const auto& axis = axes;
     if (axis[f] < 0) return all_zero(p) ? p : std::array<entry, 3>{entry::other, entry::other, entry::other};
     const auto a = std::size_t(axis[f]), b = (a + 1) % 3, d = (a + 2) % 3;
     std::array<entry, 3> out = p;
