@@ -1,5 +1,7 @@
 // kane's model of the n-link chain (chain_dynamics.hpp) as a user writes it: frames turning
-// about z, y, x, ..., joints and mass centres along each body's x, full inertias, gravity.
+// about z, y, x, ..., joints and mass centres along each body's x, full inertias, gravity. The
+// evaluator is at level::pose, which the entry points of a system of joint form read (as in
+// benchmarks/dynamics6).
 #pragma once
 
 #include <kane/kane.hpp>
@@ -52,8 +54,7 @@ using system = typename links<std::make_index_sequence<N>>::type;
 template <std::size_t N>
 using state = kane::state<double, N>;
 template <std::size_t N>
-using evaluator =
-    kane::evaluator<state<N>, kane::frames<B<N>>, kane::level::acceleration, kane::qdot_speeds<N>>;
+using evaluator = kane::evaluator<state<N>, kane::frames<B<N>>, kane::level::pose, kane::qdot_speeds<N>>;
 template <std::size_t N>
 state<N> state_of(const chain_dynamics::input& in) {
   state<N> s;

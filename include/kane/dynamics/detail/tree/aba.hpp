@@ -194,9 +194,17 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
         cw[g] = u * cross_along<K>(w[g], kg), cv[g] = u * cross_along<K>(v[g], kg);
       }
     });
-  composite_inertia<S> zero_inertia{S(0), zero, {S(0), S(0), S(0), S(0), S(0), S(0)}};
+  using known = known_inertias<JF, Sys, BF>;  // each frame's own items, when literals give them
   std::array<composite_inertia<S>, nf> rigid;
-  rigid.fill(zero_inertia);
+  if constexpr (known::value)
+    for (std::size_t g = 0; g < nf; ++g) {
+      const composite_inertia<double>& o = known::own[g];
+      rigid[g] = {S(o.mass),
+                  {S(o.h.x), S(o.h.y), S(o.h.z)},
+                  {S(o.i[0]), S(o.i[1]), S(o.i[2]), S(o.i[3]), S(o.i[4]), S(o.i[5])}};
+    }
+  else
+    rigid.fill({S(0), zero, {S(0), S(0), S(0), S(0), S(0), S(0)}});
   x.fill({{S(0), S(0), S(0), S(0), S(0), S(0)},
           {zero, zero, zero},
           {S(0), S(0), S(0), S(0), S(0), S(0)},
@@ -211,9 +219,9 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
             constexpr int ip = t.item_point[I];
             constexpr auto C = BF::local_pattern(ip, g);
             const vec cg = bf.template local<ip, g>();
-            if constexpr (is_body<X> || is_particle<X>)
-              add_item_mass<X, C>(rigid[std::size_t(g)], cg, ev);
-            else  // -f_ext
+            if constexpr (is_body<X> || is_particle<X>) {
+              if constexpr (!known::value) add_item_mass<X, C>(rigid[std::size_t(g)], cg, ev);
+            } else  // -f_ext
               subtract_load<X, F, C>(x[std::size_t(g)].f, x[std::size_t(g)].n, cg, ev);
           }
         }(),
