@@ -24,6 +24,7 @@
 #include "kane/detail/v3.hpp"
 #include "kane/dynamics/detail/tree/body_frames.hpp"
 #include "kane/dynamics/detail/tree/crba.hpp"
+#include "kane/dynamics/detail/tree/frame_steps.hpp"
 #include "kane/dynamics/detail/tree/rnea.hpp"
 
 #pragma GCC diagnostic push
@@ -85,52 +86,6 @@ KANE_ALWAYS_INLINE void add_moved(articulated<S>& z, const sym3<S>& a, const m3<
   }
 }
 
-// The loops below run over frames at run time: each frame's step is one of a few variants, its
-// turn's axis (0, 1, 2, or 3 for a general E) and its offset's (none, along x, y or z, general),
-// compiled once each and chosen per frame. A variant's number is 5 axis + offset.
-template <class BF>
-constexpr int variant_of(std::size_t g) {
-  const int a = BF::axes[g] < 0 ? 3 : BF::axes[g];
-  const auto o = BF::offset_pattern(g);
-  const bool x = o[0] != entry::zero, y = o[1] != entry::zero, z = o[2] != entry::zero;
-  return 5 * a + (!x && !y && !z ? 0 : x && !y && !z ? 1 : !x && y && !z ? 2 : !x && !y && z ? 3 : 4);
-}
-template <int V>
-constexpr std::array<entry, 3> variant_offset() {
-  constexpr int o = V % 5;
-  constexpr entry x = o == 1 || o == 4 ? entry::other : entry::zero,
-                  y = o == 2 || o == 4 ? entry::other : entry::zero,
-                  z = o == 3 || o == 4 ? entry::other : entry::zero;
-  return {x, y, z};
-}
-template <int V>
-constexpr std::array<entry, 3> variant_axis() {
-  constexpr int a = V / 5;
-  if constexpr (a == 3)
-    return {entry::other, entry::other, entry::other};
-  else
-    return {a == 0 ? entry::one : entry::zero, a == 1 ? entry::one : entry::zero,
-            a == 2 ? entry::one : entry::zero};
-}
-template <class BF, std::size_t NF>
-struct variants {
-  std::array<int, 20> used{};
-  std::size_t n = 0;
-  constexpr variants() {
-    for (std::size_t g = 1; g < NF; ++g) {
-      const int v = variant_of<BF>(g);
-      bool seen = false;
-      for (std::size_t k = 0; k < n; ++k) seen = seen || used[k] == v;
-      if (!seen) used[n++] = v;
-    }
-  }
-};
-// f(std::integral_constant<int, V>) for the variant V of a frame
-template <auto Used, class F, std::size_t... I>
-KANE_ALWAYS_INLINE void with_variant(int v, F&& f, std::index_sequence<I...>) {
-  (void)((v == Used.used[I] ? (f(std::integral_constant<int, Used.used[I]>{}), true) : false) || ...);
-}
-
 // u' of the joint-form system Sys; false where an articulated inertia along a speed is not positive.
 template <class JF, class Sys, class Ev, class Out>
 KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf, const Ev& ev, Out& ud) {
@@ -139,41 +94,9 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
   using BF = body_frames<JF, Ev>;
   static constexpr auto& t = JF::table;
   constexpr std::size_t nf = JF::nf, n = JF::n;
-  static constexpr variants<BF, nf> used{};
-  static constexpr std::array<int, nf> variant = [] {
-    std::array<int, nf> out{};
-    for (std::size_t g = 1; g < nf; ++g) out[g] = variant_of<BF>(g);
-    return out;
-  }();
-  const auto each = [&](std::size_t g, auto&& f) KANE_ALWAYS_INLINE_LAMBDA {
-    with_variant<used>(variant[g], f, std::make_index_sequence<used.n>{});
-  };
+  const frame_steps<JF, Ev> steps(bf);
+  const auto step = [&](std::size_t g, auto&& f) KANE_ALWAYS_INLINE_LAMBDA { steps.at(g, f); };
   const vec zero{S(0), S(0), S(0)};
-  std::array<S, nf> c, s;               // cos, sin of each frame's turn about a coordinate axis
-  std::array<turn<S, -1>, nf> general;  // or its E
-  std::array<vec, nf> k;                // a general joint's axis
-  static_for<nf - 1>([&](auto i) {
-    constexpr std::size_t g = i + 1;
-    const auto& e = std::get<g>(bf.e);
-    if constexpr (BF::axes[g] >= 0)
-      c[g] = e.c, s[g] = e.s;
-    else
-      general[g] = e, k[g] = joint_axis_in_frame<frame_at<JF, g>, S>();
-  });
-  // f(E, K, O): the frame's turn, its joint axis's pattern, its offset's
-  const auto step = [&](std::size_t g, auto&& f) KANE_ALWAYS_INLINE_LAMBDA {
-    each(g, [&](auto v) KANE_ALWAYS_INLINE_LAMBDA {
-      constexpr int a = decltype(v)::value / 5;
-      constexpr auto K = variant_axis<decltype(v)::value>();
-      constexpr auto O = variant_offset<decltype(v)::value>();
-      if constexpr (a < 3)
-        f(turn<S, a>{c[g], s[g]}, std::integral_constant<std::array<entry, 3>, K>{},
-          std::integral_constant<std::array<entry, 3>, O>{}, vec{S(a == 0), S(a == 1), S(a == 2)});
-      else
-        f(general[g], std::integral_constant<std::array<entry, 3>, K>{},
-          std::integral_constant<std::array<entry, 3>, O>{}, k[g]);
-    });
-  };
   std::array<vec, nf> w, v, cw, cv;
   std::array<articulated<S>, nf> x;
   std::array<vec, n> uw, uv;
@@ -194,17 +117,8 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
         cw[g] = u * cross_along<K>(w[g], kg), cv[g] = u * cross_along<K>(v[g], kg);
       }
     });
-  using known = known_inertias<JF, Sys, BF>;  // each frame's own items, when literals give them
   std::array<composite_inertia<S>, nf> rigid;
-  if constexpr (known::value)
-    for (std::size_t g = 0; g < nf; ++g) {
-      const composite_inertia<double>& o = known::own[g];
-      rigid[g] = {S(o.mass),
-                  {S(o.h.x), S(o.h.y), S(o.h.z)},
-                  {S(o.i[0]), S(o.i[1]), S(o.i[2]), S(o.i[3]), S(o.i[4]), S(o.i[5])}};
-    }
-  else
-    rigid.fill({S(0), zero, {S(0), S(0), S(0), S(0), S(0), S(0)}});
+  own_inertias<JF, Sys>(bf, ev, rigid);
   x.fill({{S(0), S(0), S(0), S(0), S(0), S(0)},
           {zero, zero, zero},
           {S(0), S(0), S(0), S(0), S(0), S(0)},
@@ -214,15 +128,10 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
     (
         [&] {
           constexpr int g = t.item_frame[I];
-          if constexpr (!is_gravity<X> && g > 0) {
-            using F = frame_at<JF, std::size_t(g)>;
+          if constexpr (!is_gravity<X> && !is_body<X> && !is_particle<X> && g > 0) {  // -f_ext
             constexpr int ip = t.item_point[I];
-            constexpr auto C = BF::local_pattern(ip, g);
-            const vec cg = bf.template local<ip, g>();
-            if constexpr (is_body<X> || is_particle<X>) {
-              if constexpr (!known::value) add_item_mass<X, C>(rigid[std::size_t(g)], cg, ev);
-            } else  // -f_ext
-              subtract_load<X, F, C>(x[std::size_t(g)].f, x[std::size_t(g)].n, cg, ev);
+            subtract_load<X, frame_at<JF, std::size_t(g)>, BF::local_pattern(ip, g)>(
+                x[std::size_t(g)].f, x[std::size_t(g)].n, bf.template local<ip, g>(), ev);
           }
         }(),
         ...);

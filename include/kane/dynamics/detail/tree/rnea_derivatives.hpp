@@ -28,6 +28,7 @@
 #include "kane/detail/v3.hpp"
 #include "kane/dynamics/detail/tree/body_frames.hpp"
 #include "kane/dynamics/detail/tree/composite_inertia.hpp"
+#include "kane/dynamics/detail/tree/frame_steps.hpp"
 #include "kane/dynamics/detail/tree/rnea.hpp"
 #include "kane/dynamics/detail/tree/spatial.hpp"
 #include "kane/dynamics/detail/tree/steady_loads.hpp"
@@ -55,45 +56,40 @@ struct tree_partials {
   // R, the origins, the screws, the items' inertias and loads about O.
   KANE_ALWAYS_INLINE tree_partials(const BF& bf, const Ev& ev) {
     const vec zero{S(0), S(0), S(0)};
+    const frame_steps<JF, Ev> steps(bf);
     rot[0] = {vec{S(1), S(0), S(0)}, vec{S(0), S(1), S(0)}, vec{S(0), S(0), S(1)}}, at[0] = zero;
-    static_for<nf - 1>([&](auto i) {
-      constexpr std::size_t g = i + 1, p = std::size_t(t.parent[g]);
-      constexpr int r = t.speed[g];
-      const auto& e = std::get<g>(bf.e);
-      rot[g] = {by_columns(rot[p], e.up(vec{S(1), S(0), S(0)})),
-                by_columns(rot[p], e.up(vec{S(0), S(1), S(0)})),
-                by_columns(rot[p], e.up(vec{S(0), S(0), S(1)}))};
-      at[g] = all_zero(BF::offset_pattern(g)) ? at[p] : at[p] + by_columns(rot[p], bf.offset[g]);
-      if constexpr (r >= 0) {
-        const vec k = by_columns(rot[g], joint_axis_in_frame<frame_at<JF, g>, S>());
-        screw[std::size_t(r)] = {k, cross3(at[g], k)};
-      }
-    });
-    own.fill({S(0), zero, {S(0), S(0), S(0), S(0), S(0), S(0)}});
+    own_inertias<JF, Sys>(bf, ev, own);
     std::array<vec, nf> fn, ff;  // -f_ext about o, in the frame's components
     fn.fill(zero), ff.fill(zero);
     [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) {
       (
           [&] {
             constexpr int g = t.item_frame[I];
-            if constexpr (!is_gravity<X> && g > 0) {
-              using F = frame_at<JF, std::size_t(g)>;
+            if constexpr (!is_gravity<X> && !is_body<X> && !is_particle<X> && g > 0) {
               constexpr int ip = t.item_point[I];
-              constexpr auto C = BF::local_pattern(ip, g);
-              const vec c = bf.template local<ip, g>();
-              if constexpr (is_body<X> || is_particle<X>)
-                add_item_mass<X, C>(own[std::size_t(g)], c, ev);
-              else
-                subtract_load<X, F, C>(ff[std::size_t(g)], fn[std::size_t(g)], c, ev);
+              subtract_load<X, frame_at<JF, std::size_t(g)>, BF::local_pattern(ip, g)>(
+                  ff[std::size_t(g)], fn[std::size_t(g)], bf.template local<ip, g>(), ev);
             }
           }(),
           ...);
     }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
-    for (std::size_t g = 1; g < nf; ++g) {
-      own[g] = about_root(own[g], rot[g], at[g]);
-      const vec fw = by_columns(rot[g], ff[g]);
-      load[g] = {by_columns(rot[g], fn[g]) + cross3(at[g], fw), fw};
-    }
+    for (std::size_t g = 1; g < nf; ++g)
+      steps.at(g, [&](const auto& e, auto, auto OC, const vec& kg) KANE_ALWAYS_INLINE_LAMBDA {
+        constexpr auto O = decltype(OC)::value;
+        const auto p = std::size_t(t.parent[g]);
+        const int r = t.speed[g];
+        rot[g] = {by_columns(rot[p], e.up(vec{S(1), S(0), S(0)})),
+                  by_columns(rot[p], e.up(vec{S(0), S(1), S(0)})),
+                  by_columns(rot[p], e.up(vec{S(0), S(0), S(1)}))};
+        at[g] = all_zero(O) ? at[p] : at[p] + by_columns(rot[p], bf.offset[g]);
+        if (r >= 0) {
+          const vec k = by_columns(rot[g], kg);
+          screw[std::size_t(r)] = {k, cross3(at[g], k)};
+        }
+        own[g] = about_root(own[g], rot[g], at[g]);
+        const vec fw = by_columns(rot[g], ff[g]);
+        load[g] = {by_columns(rot[g], fn[g]) + cross3(at[g], fw), fw};
+      });
     v[0] = {zero, zero}, a[0] = {zero, base_acceleration<Sys, frame_at<JF, 0>>(ev)};
   }
   // Velocities, accelerations at the rates ud, dV, dA, f and B of each frame's items.
