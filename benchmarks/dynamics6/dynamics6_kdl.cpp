@@ -37,7 +37,9 @@ void load(const dynamics6::input& in) {
 }
 void mass_matrix(dynamics6::output& out) {
   dyn.JntToMass(q, H);
-  Eigen::Map<Eigen::Matrix<double, 6, 6>>(out.M) = H.data;
+  // KDL allocated H for its own build's alignment, not -march=native's: read it entry by entry
+  const double* h = H.data.data();
+  for (int i = 0; i < 36; ++i) out.M[i] = h[i];
 }
 void bias(dynamics6::output& out) {
   dyn.JntToCoriolis(q, qd, coriolis);
