@@ -45,7 +45,5 @@ enum class sign : bool { plus, minus };
 // What Kane's sums compute: M and f, M alone, or f alone where M is known at compile time.
 enum class parts { both, mass_matrix, forcing };
 constexpr bool has(parts set, parts p) { return set == parts::both || set == p; }
-// What the inward pass of the analytical derivatives gives besides tau: M, dtau/dq and dtau/du, or all.
-enum class partials { values, derivatives, all };
 
 }  // namespace kane::detail

@@ -70,7 +70,7 @@ inverse_dynamics_derivatives(const Ev& ev) {
     const detail::body_frames<JF, Ev> bf(ev);
     detail::tree_partials<JF, Sys, Ev> pass(bf, ev);
     pass.outward(ev, ud);
-    pass.template inward<detail::partials::all>(out.tau, out.M, out.dtau_dq, out.dtau_du);
+    pass.inward(out.tau, out.M, out.dtau_dq, out.dtau_du);
     out.status = ev.status();
     if (out.status == solve_status::ok &&
         !(detail::all_finite_matrix(out.tau) && detail::all_finite_matrix(out.dtau_dq) &&
@@ -91,37 +91,23 @@ forward_dynamics_derivatives(const Ev& ev) {
   constexpr std::size_t n = Ev::nu;
   forward_derivatives<S, n> out;
   if constexpr (detail::analytical_derivatives<Sys, Ev>()) {
-    // u' = M^-1 f: forward dynamics up to articulated_above speeds; above, -M^-1 tau(u' = 0) from
-    // the pass itself. Then the derivatives at u', and M.
-    using JF = detail::joint_form_of<Sys, Ev>;
-    const detail::body_frames<JF, Ev> bf(ev);
-    detail::tree_partials<JF, Sys, Ev> pass(bf, ev);
-    Eigen::Matrix<S, int(n), int(n)> m;
-    Eigen::Matrix<S, int(n), 1> tau;
-    constexpr bool small = n <= detail::articulated_above;
-    if constexpr (small) {
-      const auto fd = forward_dynamics<Sys>(ev);
-      out.ud = fd.ud, out.status = fd.status;
-    } else {
-      pass.outward(ev, Eigen::Matrix<S, int(n), 1>::Zero());
-      pass.template inward<detail::partials::values>(tau, m, out.dud_dq, out.dud_du);
-      out.status = ev.status();
-    }
-    Eigen::LLT<Eigen::Matrix<S, int(n), int(n)>> llt;
-    if (out.status == solve_status::ok && !small) {
-      llt.compute(m);
-      if (llt.info() != Eigen::Success)
-        out.status = solve_status::singular;
-      else
-        out.ud = -llt.solve(tau);
-    }
+    // u' from forward dynamics; one pass gives M and dtau/dx at u'; du'/dx = -M^-1 dtau/dx by plain
+    // loops for a few speeds, by Eigen's blocked Cholesky above.
+    const auto fd = forward_dynamics<Sys>(ev);
+    out.ud = fd.ud, out.status = fd.status;
     if (out.status == solve_status::ok) {
+      using JF = detail::joint_form_of<Sys, Ev>;
+      const detail::body_frames<JF, Ev> bf(ev);
+      detail::tree_partials<JF, Sys, Ev> pass(bf, ev);
+      Eigen::Matrix<S, int(n), int(n)> m;
+      Eigen::Matrix<S, int(n), 1> tau;
       pass.outward(ev, out.ud);
-      pass.template inward<small ? detail::partials::all : detail::partials::derivatives>(tau, m, out.dud_dq,
-                                                                                          out.dud_du);
-      if constexpr (small) {
+      pass.inward(tau, m, out.dud_dq, out.dud_du);
+      if constexpr (n <= detail::articulated_above) {
         if (!detail::solve_negated(m, out.dud_dq, out.dud_du)) out.status = solve_status::singular;
       } else {
+        const Eigen::LLT<Eigen::Matrix<S, int(n), int(n)>> llt(m);
+        if (llt.info() != Eigen::Success) out.status = solve_status::singular;
         out.dud_dq = -out.dud_dq, out.dud_du = -out.dud_du;
         llt.solveInPlace(out.dud_dq), llt.solveInPlace(out.dud_du);
       }

@@ -111,13 +111,11 @@ struct tree_partials {
       b[g] = variation_of(own[g], v[g], l);
     }
   }
-  // tau, and M (partials::values), dtau/dq and dtau/du (partials::derivatives), or all three.
-  template <partials Parts, class Tau, class Square>
+  // tau, M, dtau/dq and dtau/du.
+  template <class Tau, class Square>
   KANE_ALWAYS_INLINE void inward(Tau& tau, Square& m, Square& dq, Square& du) {
-    constexpr bool mass = Parts != partials::derivatives, slopes = Parts != partials::values;
     y = own;
-    if constexpr (mass) m.setZero();
-    if constexpr (slopes) dq.setZero(), du.setZero();
+    m.setZero(), dq.setZero(), du.setZero();
     for (std::size_t g = nf - 1; g > 0; --g) {
       const auto p = std::size_t(t.parent[g]);
       const int r = t.speed[g];
@@ -125,28 +123,21 @@ struct tree_partials {
         const auto k = Eigen::Index(r);
         const spatial<S>& s = screw[std::size_t(r)];
         const spatial<S> ys = times(y[g], s);
+        const vec bs = b[g].transposed_times(s);
+        const spatial<S> fq =
+            times(y[g], da[std::size_t(r)]) + b[g].times(dv[std::size_t(r)]) + cross_force(s, f[g]);
+        const spatial<S> fu = S(2) * times(y[g], dv[std::size_t(r)]) + b[g].times(s);
         tau(k) = dot6(s, f[g]);
-        if constexpr (mass)
-          for (int c = r; c >= 0; c = t.parent_speed[std::size_t(c)])
-            m(k, Eigen::Index(c)) = m(Eigen::Index(c), k) = dot6(ys, screw[std::size_t(c)]);
-        if constexpr (slopes) {
-          const vec bs = b[g].transposed_times(s);
-          const spatial<S> fq =
-              times(y[g], da[std::size_t(r)]) + b[g].times(dv[std::size_t(r)]) + cross_force(s, f[g]);
-          const spatial<S> fu = S(2) * times(y[g], dv[std::size_t(r)]) + b[g].times(s);
-          for (int c = r; c >= 0; c = t.parent_speed[std::size_t(c)]) {
-            const auto j = std::size_t(c);
-            const auto l = Eigen::Index(c);
-            dq(k, l) = dot6(ys, da[j]) + dot3(bs, dv[j].w);
-            du(k, l) = S(2) * dot6(ys, dv[j]) + dot3(bs, screw[j].w);
-            if (c != r) dq(l, k) = dot6(screw[j], fq), du(l, k) = dot6(screw[j], fu);
-          }
+        for (int c = r; c >= 0; c = t.parent_speed[std::size_t(c)]) {
+          const auto j = std::size_t(c);
+          const auto l = Eigen::Index(c);
+          m(k, l) = m(l, k) = dot6(ys, screw[j]);
+          dq(k, l) = dot6(ys, da[j]) + dot3(bs, dv[j].w);
+          du(k, l) = S(2) * dot6(ys, dv[j]) + dot3(bs, screw[j].w);
+          if (c != r) dq(l, k) = dot6(screw[j], fq), du(l, k) = dot6(screw[j], fu);
         }
       }
-      if (p > 0) {
-        add_to(y[p], y[g]), f[p] = f[p] + f[g];
-        if constexpr (slopes) add_to(b[p], b[g]);
-      }
+      if (p > 0) add_to(y[p], y[g]), add_to(b[p], b[g]), f[p] = f[p] + f[g];
     }
   }
 };
