@@ -91,7 +91,6 @@ template <class JF, class Sys, class Ev, class Out>
 KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf, const Ev& ev, Out& ud) {
   using S = typename Ev::scalar;
   using vec = v3<S>;
-  using BF = body_frames<JF, Ev>;
   static constexpr auto& t = JF::table;
   constexpr std::size_t nf = JF::nf, n = JF::n;
   const frame_steps<JF, Ev> steps(bf);
@@ -119,23 +118,8 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
     });
   std::array<composite_inertia<S>, nf> rigid;
   own_inertias<JF, Sys>(bf, ev, rigid);
-  x.fill({{S(0), S(0), S(0), S(0), S(0), S(0)},
-          {zero, zero, zero},
-          {S(0), S(0), S(0), S(0), S(0), S(0)},
-          zero,
-          zero});
-  [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) {
-    (
-        [&] {
-          constexpr int g = t.item_frame[I];
-          if constexpr (!is_gravity<X> && !is_body<X> && !is_particle<X> && g > 0) {  // -f_ext
-            constexpr int ip = t.item_point[I];
-            subtract_load<X, frame_at<JF, std::size_t(g)>, BF::local_pattern(ip, g)>(
-                x[std::size_t(g)].f, x[std::size_t(g)].n, bf.template local<ip, g>(), ev);
-          }
-        }(),
-        ...);
-  }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
+  std::array<vec, nf> ff, fn;
+  own_loads<JF, Sys>(bf, ev, ff, fn);
   for (std::size_t g = 1; g < nf; ++g) {  // I = [i [h]; -[h] m 1], p = v x* I v - f_ext
     const composite_inertia<S>& q = rigid[g];
     articulated<S>& y = x[g];
@@ -143,7 +127,7 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
     y.b = {vec{S(0), -q.h.z, q.h.y}, vec{q.h.z, S(0), -q.h.x}, vec{-q.h.y, q.h.x, S(0)}};  // [h]
     y.c = {q.mass, q.mass, q.mass, S(0), S(0), S(0)};
     const vec hh = sym_times(q.i, w[g]) + cross3(q.h, v[g]), ll = q.mass * v[g] - cross3(q.h, w[g]);
-    y.n = y.n + cross3(w[g], hh) + cross3(v[g], ll), y.f = y.f + cross3(w[g], ll);
+    y.n = fn[g] + cross3(w[g], hh) + cross3(v[g], ll), y.f = ff[g] + cross3(w[g], ll);
   }
   bool ok = true;
   for (std::size_t g = nf - 1; g > 0; --g)  // leaves first

@@ -1,7 +1,8 @@
 // Loops over the frames of a system of joint form at run time (aba.hpp, rnea_derivatives.hpp):
 // each frame's step is one of a few variants, by its turn's axis (x, y, z, or 3 for a general E)
 // and its offset's (none, along x, y or z, or general), compiled once each and chosen per frame.
-// A variant's number is 5 axis + offset; a model compiles the variants it uses.
+// A variant's number is 5 axis + offset; a model compiles the variants it uses. And what each
+// frame's own items give the loops: their inertia and their loads.
 #pragma once
 
 #include <array>
@@ -15,6 +16,7 @@
 #include "kane/detail/v3.hpp"
 #include "kane/dynamics/detail/tree/body_frames.hpp"
 #include "kane/dynamics/detail/tree/composite_inertia.hpp"
+#include "kane/dynamics/detail/tree/rnea.hpp"
 #include "kane/dynamics/detail/tree/turns.hpp"
 
 #pragma GCC diagnostic push
@@ -138,6 +140,30 @@ KANE_ALWAYS_INLINE void own_inertias(const body_frames<JF, Ev>& bf, const Ev& ev
           ...);
     }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
   }
+}
+
+// Each frame's applied loads negated, -f_ext: the force f and its moment n about the frame's origin,
+// in its components.
+template <class JF, class Sys, class Ev>
+KANE_ALWAYS_INLINE void own_loads(const body_frames<JF, Ev>& bf, const Ev& ev,
+                                  std::array<v3<typename Ev::scalar>, JF::nf>& f,
+                                  std::array<v3<typename Ev::scalar>, JF::nf>& n) {
+  using S = typename Ev::scalar;
+  using BF = body_frames<JF, Ev>;
+  static constexpr auto& t = JF::table;
+  f.fill({S(0), S(0), S(0)}), n.fill({S(0), S(0), S(0)});
+  [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) {
+    (
+        [&] {
+          constexpr int g = t.item_frame[I];
+          if constexpr (!is_gravity<X> && !is_body<X> && !is_particle<X> && g > 0) {
+            constexpr int ip = t.item_point[I];
+            subtract_load<X, frame_at<JF, std::size_t(g)>, BF::local_pattern(ip, g)>(
+                f[std::size_t(g)], n[std::size_t(g)], bf.template local<ip, g>(), ev);
+          }
+        }(),
+        ...);
+  }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
 }
 
 }  // namespace kane::detail

@@ -49,7 +49,7 @@ struct tree_partials {
   std::array<m3<S>, nf> rot;                    // R of each frame, by columns
   std::array<vec, nf> at;                       // its origin from O
   std::array<composite_inertia<S>, nf> own, y;  // each frame's items, and those below it
-  std::array<spatial<S>, nf> load, v, a, f;     // -f_ext about O
+  std::array<spatial<S>, nf> load, v, a, f;     // -f_ext about O; velocity, acceleration, force
   std::array<variation<S>, nf> b;
   std::array<spatial<S>, n> screw, dv, da;
 
@@ -59,20 +59,8 @@ struct tree_partials {
     const frame_steps<JF, Ev> steps(bf);
     rot[0] = {vec{S(1), S(0), S(0)}, vec{S(0), S(1), S(0)}, vec{S(0), S(0), S(1)}}, at[0] = zero;
     own_inertias<JF, Sys>(bf, ev, own);
-    std::array<vec, nf> fn, ff;  // -f_ext about o, in the frame's components
-    fn.fill(zero), ff.fill(zero);
-    [&]<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) {
-      (
-          [&] {
-            constexpr int g = t.item_frame[I];
-            if constexpr (!is_gravity<X> && !is_body<X> && !is_particle<X> && g > 0) {
-              constexpr int ip = t.item_point[I];
-              subtract_load<X, frame_at<JF, std::size_t(g)>, BF::local_pattern(ip, g)>(
-                  ff[std::size_t(g)], fn[std::size_t(g)], bf.template local<ip, g>(), ev);
-            }
-          }(),
-          ...);
-    }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
+    std::array<vec, nf> ff, fn;  // -f_ext about o, in the frame's components
+    own_loads<JF, Sys>(bf, ev, ff, fn);
     for (std::size_t g = 1; g < nf; ++g)
       steps.at(g, [&](const auto& e, auto, auto OC, const vec& kg) KANE_ALWAYS_INLINE_LAMBDA {
         constexpr auto O = decltype(OC)::value;
