@@ -92,7 +92,7 @@ template <std::size_t N>
 using state = kane::state<double, N>;
 template <std::size_t N>
 using evaluator =
-    kane::evaluator<state<N>, kane::frames<B<N>>, kane::level::acceleration, kane::qdot_speeds<N>>;
+    kane::evaluator<state<N>, kane::frames<B<N>>, kane::level::pose, kane::qdot_speeds<N>>;
 }  // namespace chain
 
 // q, u and u' drawn from [-2, 2]

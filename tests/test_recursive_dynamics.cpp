@@ -264,3 +264,41 @@ TEST_CASE("the recursive entry points report a state that is not finite", "[recu
   CHECK(cstatus == kane::solve_status::not_finite);
   CHECK(std::isnan(ud(0)));
 }
+
+TEST_CASE("dynamics derivatives: a state that is not finite gives NaN and its status", "[derivatives]") {
+  std::mt19937 rng(47);
+  auto s = recursive::random_state<arm::driven_state>(rng);
+  s.u[2] = std::numeric_limits<double>::infinity();
+  arm::driven_evaluator ev;
+  ev.update(s);
+  const auto id = kane::inverse_dynamics_derivatives<models::arm6::driven>(ev);
+  const auto fd = kane::forward_dynamics_derivatives<models::arm6::driven>(ev);
+  CHECK(id.status != kane::solve_status::ok);
+  CHECK(fd.status != kane::solve_status::ok);
+  CHECK(id.dtau_dq.hasNaN());
+  CHECK(fd.dud_du.hasNaN());
+  CHECK(fd.ud.hasNaN());
+}
+
+// A particle on D's oblique axis: u4 moves no mass.
+struct on_axis : kane::point<tree::P, 0.1 * e<tree::D, 1> + 0.1 * e<tree::D, 2>> {};
+
+TEST_CASE("dynamics derivatives: a speed that moves no mass gives singular and NaN", "[derivatives]") {
+  using massless_speed = kane::system<
+      kane::rigid_body<tree::A, tree::Ao, literal(1.5),
+                       kane::inertia<tree::A, tree::Ao, literal(0.03), literal(0.02), literal(0.04)>>,
+      kane::rigid_body<tree::B, tree::Bo, literal(1.1),
+                       kane::inertia<tree::B, tree::Bo, literal(0.01), literal(0.015), literal(0.012)>>,
+      kane::particle<tree::P, literal(0.7)>, kane::particle<on_axis, literal(0.5)>,
+      kane::gravity<literal(-9.81) * e<tree::N, 3>>>;
+  std::mt19937 rng(61);
+  const auto s = recursive::random_state<tree::state>(rng);
+  tree::evaluator ev;
+  ev.update(s);
+  const auto fd = kane::forward_dynamics_derivatives<massless_speed>(ev);
+  CHECK(fd.status == kane::solve_status::singular);
+  CHECK(fd.dud_dq.hasNaN());
+  const auto id = kane::inverse_dynamics_derivatives<massless_speed>(ev);
+  CHECK(id.status == kane::solve_status::ok);  // tau and its derivatives need no inverse
+  CHECK(std::abs(id.M(3, 3)) < 1e-15);
+}
