@@ -91,8 +91,7 @@ using system = typename links<std::make_index_sequence<N>>::type;
 template <std::size_t N>
 using state = kane::state<double, N>;
 template <std::size_t N>
-using evaluator =
-    kane::evaluator<state<N>, kane::frames<B<N>>, kane::level::pose, kane::qdot_speeds<N>>;
+using evaluator = kane::evaluator<state<N>, kane::frames<B<N>>, kane::level::pose, kane::qdot_speeds<N>>;
 }  // namespace chain
 
 // q, u and u' drawn from [-2, 2]
