@@ -245,6 +245,57 @@ TEST_CASE("21 links: u' by articulated bodies equals M^-1 f by composite bodies 
   }
 }
 
+namespace forked {  // A carries two branches, B and F-G
+struct N : kane::root_frame {};
+struct A : kane::frame<N, kane::simple<kane::axis::z, kane::coordinate<1>>> {};
+struct B : kane::frame<A, kane::simple<kane::axis::y, kane::coordinate<2>>> {};
+struct F : kane::frame<A, kane::simple<kane::axis::x, kane::coordinate<3>>> {};
+struct G : kane::frame<F, kane::simple<kane::axis::y, kane::coordinate<4>>> {};
+struct O : kane::origin<N> {};
+struct Ao : kane::point<O, 0.3 * e<A, 1>> {};
+struct Bo : kane::point<Ao, 0.2 * e<B, 1> + 0.1 * e<B, 3>> {};
+struct Fo : kane::point<Ao, 0.25 * e<F, 2>> {};
+struct Go : kane::point<Fo, 0.2 * e<G, 3>> {};
+template <class F, class P, literal M>
+using body =
+    kane::rigid_body<F, P, M,
+                     kane::inertia<F, P, literal(0.02), literal(0.03), literal(0.025), literal(0.004)>>;
+using system = kane::system<body<A, Ao, literal(1.0)>, body<B, Bo, literal(0.8)>, body<F, Fo, literal(1.2)>,
+                            body<G, Go, literal(0.6)>>;
+using state = kane::state<double, 4>;
+using evaluator = kane::evaluator<state, kane::frames<B, G>, kane::level::pose, kane::qdot_speeds<4>>;
+}  // namespace forked
+
+// X = -M^-1 B by articulated bodies in the root's components against M from composite bodies.
+template <class Sys, class Ev, class St>
+void check_articulated_solve(std::mt19937& rng) {
+  constexpr int n = int(Ev::nu);
+  using JF = kane::detail::joint_form_of<Sys, Ev>;
+  Ev ev;
+  ev.update(random_state<St>(rng));
+  const kane::detail::body_frames<JF, Ev> bf(ev);
+  const kane::detail::tree_partials<JF, Sys, Ev> pass(bf, ev);
+  const kane::detail::articulated_solve<JF, double> bodies(pass.own, pass.screw);
+  REQUIRE(bodies.ok());
+  std::uniform_real_distribution<double> d(-1.0, 1.0);
+  Eigen::Matrix<double, n, n + 3> b;
+  for (auto& v : b.reshaped()) v = d(rng);
+  Eigen::Matrix<double, n, n + 3> x = b;
+  bodies.solve_negated(x);
+  const auto m = kane::mass_matrix<Sys>(ev).M;
+  CHECK((m * x + b).cwiseAbs().maxCoeff() < 1e-12 * (1 + (m * x).cwiseAbs().maxCoeff()));
+}
+
+TEST_CASE("articulated bodies about O solve M X = B: two branches, a tree with a fixed tool, 21 links",
+          "[recursive][derivatives]") {
+  std::mt19937 rng(29);
+  for (int k = 0; k < 3; ++k) {
+    check_articulated_solve<forked::system, forked::evaluator, forked::state>(rng);
+    check_articulated_solve<tree::system, tree::evaluator, tree::state>(rng);
+    check_articulated_solve<chain::system, chain::evaluator, chain::state>(rng);
+  }
+}
+
 TEST_CASE("the recursive entry points report a state that is not finite", "[recursive]") {
   std::mt19937 rng(17);
   auto s = random_state<arm::state>(rng);

@@ -12,12 +12,12 @@
 #include <type_traits>
 #include <utility>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "kane/detail/frame_check.hpp"
 #include "kane/detail/invert.hpp"
 #include "kane/dynamics/detail/method.hpp"
+#include "kane/dynamics/detail/tree/articulated_solve.hpp"
 #include "kane/dynamics/detail/tree/rnea_derivatives.hpp"
 #include "kane/dynamics/forward_dynamics.hpp"
 #include "kane/dynamics/results.hpp"
@@ -92,7 +92,7 @@ forward_dynamics_derivatives(const Ev& ev) {
   forward_derivatives<S, n> out;
   if constexpr (detail::analytical_derivatives<Sys, Ev>()) {
     // u' from forward dynamics; one pass gives M and dtau/dx at u'; du'/dx = -M^-1 dtau/dx by plain
-    // loops for a few speeds, by Eigen's blocked Cholesky above.
+    // loops for a few speeds, by articulated bodies above.
     const auto fd = forward_dynamics<Sys>(ev);
     out.ud = fd.ud, out.status = fd.status;
     if (out.status == solve_status::ok) {
@@ -106,10 +106,9 @@ forward_dynamics_derivatives(const Ev& ev) {
       if constexpr (n <= detail::articulated_above) {
         if (!detail::solve_negated(m, out.dud_dq, out.dud_du)) out.status = solve_status::singular;
       } else {
-        const Eigen::LLT<Eigen::Matrix<S, int(n), int(n)>> llt(m);
-        if (llt.info() != Eigen::Success) out.status = solve_status::singular;
-        out.dud_dq = -out.dud_dq, out.dud_du = -out.dud_du;
-        llt.solveInPlace(out.dud_dq), llt.solveInPlace(out.dud_du);
+        const detail::articulated_solve<JF, S> bodies(pass.own, pass.screw);
+        if (!bodies.ok()) out.status = solve_status::singular;
+        bodies.solve_negated(out.dud_dq), bodies.solve_negated(out.dud_du);
       }
     }
     if (out.status == solve_status::ok) {

@@ -1,0 +1,147 @@
+// X = -M^-1 X for many columns by articulated bodies in the root's components (spatial.hpp):
+// every screw S_r and inertia is about O, so nothing turns. Once, inward from each frame's own
+// items: U = I^A S, D = S.U, I^A of the parent += I^A - U U^T / D. Then for each column b,
+// inward: u_r = b_r - S.p, p of the parent += p + U u_r / D; outward from a_O = 0:
+// x_r = (u_r - U.a') / D, a = a' + S x_r. Cost: O(n) a column, against O(n^2) for a
+// factored M; the columns go W at a time, each step a loop over them.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include <Eigen/Core>
+
+#include "kane/detail/inline.hpp"
+#include "kane/dynamics/detail/tree/composite_inertia.hpp"
+#include "kane/dynamics/detail/tree/spatial.hpp"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
+namespace kane::detail {
+
+template <class JF, class S>
+class articulated_solve {
+  static constexpr auto& t = JF::table;
+  static constexpr std::size_t nf = JF::nf, n = JF::n;
+#ifdef __AVX__
+  static constexpr std::size_t W = 4;
+#else
+  static constexpr std::size_t W = 8;
+#endif
+  using six = std::array<S, 6>;
+  // Frame g hands its sum to the next frame in registers when that frame is its parent (inward: g - 1;
+  // outward: a child at g + 1); a frame with another child keeps its sum in memory.
+  struct tree_shape {
+    std::array<bool, nf> carried{}, kept{};
+  };
+  static constexpr tree_shape shape = [] {
+    tree_shape z;
+    for (std::size_t g = 1; g < nf; ++g) z.carried[g] = t.parent[g] == int(g) - 1;
+    for (std::size_t g = 1; g < nf; ++g)
+      if (!z.carried[g]) z.kept[std::size_t(t.parent[g])] = true;
+    return z;
+  }();
+  std::array<six, n> s_{}, ud_{};  // S and U / D of each speed
+  std::array<S, n> inv_d_{};
+  bool ok_ = true;
+
+  static six flat(const spatial<S>& x) { return {x.w.x, x.w.y, x.w.z, x.v.x, x.v.y, x.v.z}; }
+  // [I [h]; [h]^T m 1]
+  static Eigen::Matrix<S, 6, 6> matrix(const composite_inertia<S>& y) {
+    Eigen::Matrix<S, 6, 6> a;
+    const S z(0);
+    a << y.i[0], y.i[3], y.i[5], z, -y.h.z, y.h.y,  //
+        y.i[3], y.i[1], y.i[4], y.h.z, z, -y.h.x,   //
+        y.i[5], y.i[4], y.i[2], -y.h.y, y.h.x, z,   //
+        z, y.h.z, -y.h.y, y.mass, z, z,             //
+        -y.h.z, z, y.h.x, z, y.mass, z,             //
+        y.h.y, -y.h.x, z, z, z, y.mass;
+    return a;
+  }
+
+ public:
+  articulated_solve(const std::array<composite_inertia<S>, nf>& own, const std::array<spatial<S>, n>& screw) {
+    std::array<Eigen::Matrix<S, 6, 6>, nf> ia;
+    for (std::size_t g = 0; g < nf; ++g) ia[g] = matrix(own[g]);
+    for (std::size_t g = nf - 1; g > 0; --g) {
+      const auto p = std::size_t(t.parent[g]);
+      const int r = t.speed[g];
+      if (r >= 0) {
+        const auto j = std::size_t(r);
+        const six sj = flat(screw[j]);
+        const Eigen::Matrix<S, 6, 1> u = ia[g] * Eigen::Map<const Eigen::Matrix<S, 6, 1>>(sj.data());
+        S d(0);
+        for (std::size_t i = 0; i < 6; ++i) d += sj[i] * u(Eigen::Index(i));
+        ok_ = ok_ && d > S(0);
+        inv_d_[j] = S(1) / d, s_[j] = sj;
+        for (std::size_t i = 0; i < 6; ++i) ud_[j][i] = inv_d_[j] * u(Eigen::Index(i));
+        ia[g].noalias() -= (inv_d_[j] * u) * u.transpose();
+      }
+      ia[p] += ia[g];
+    }
+  }
+  // M is positive definite.
+  bool ok() const { return ok_; }
+
+  // x = -M^-1 x, W columns at a time
+  template <class X>
+  void solve_negated(X& x) const {
+    const auto cols = std::size_t(x.cols()), full = cols - cols % W;
+    for (std::size_t c0 = 0; c0 < full; c0 += W) columns<W>(x, c0);
+    for (std::size_t c0 = full; c0 < cols; ++c0) columns<1>(x, c0);
+  }
+
+ private:
+  template <std::size_t V>
+  using rows = std::array<std::array<S, V>, 6>;  // six components of V columns
+  template <std::size_t V>
+  static void add(rows<V>& to, const rows<V>& from) {
+    for (std::size_t i = 0; i < 6; ++i)
+      for (std::size_t k = 0; k < V; ++k) to[i][k] += from[i][k];
+  }
+  template <std::size_t V, class X>
+  void columns(X& x, std::size_t c0) const {
+    std::array<rows<V>, nf> p;  // p inward, then a outward, kept where the tree branches
+    std::array<std::array<S, V>, n> ur;
+    for (std::size_t g = 0; g < nf; ++g)
+      if (shape.kept[g]) p[g] = rows<V>{};
+    rows<V> c{};  // p of the frame after g when g is its parent, carried
+    for (std::size_t g = nf - 1; g > 0; --g) {
+      if (shape.kept[g]) add(c, p[g]);
+      const int r = t.speed[g];
+      if (r >= 0) {
+        const auto j = std::size_t(r);
+        const six& sj = s_[j];
+        std::array<S, V>& uu = ur[j];
+        for (std::size_t k = 0; k < V; ++k)
+          uu[k] = -x(Eigen::Index(j), Eigen::Index(c0 + k)) -
+                  ((sj[0] * c[0][k] + sj[1] * c[1][k]) + (sj[2] * c[2][k] + sj[3] * c[3][k]) +
+                   (sj[4] * c[4][k] + sj[5] * c[5][k]));
+        for (std::size_t i = 0; i < 6; ++i)
+          for (std::size_t k = 0; k < V; ++k) c[i][k] += ud_[j][i] * uu[k];
+      }
+      if (!shape.carried[g]) add(p[std::size_t(t.parent[g])], c), c = rows<V>{};
+    }
+    c = rows<V>{}, p[0] = rows<V>{};  // a of the frame before g when it is g's parent, carried; a_O = 0
+    for (std::size_t g = 1; g < nf; ++g) {
+      if (!shape.carried[g]) c = p[std::size_t(t.parent[g])];
+      const int r = t.speed[g];
+      if (r >= 0) {
+        const auto j = std::size_t(r);
+        const six& sj = s_[j];
+        const six& uj = ud_[j];
+        for (std::size_t k = 0; k < V; ++k) {
+          const S xr = ur[j][k] * inv_d_[j] -
+                       ((uj[0] * c[0][k] + uj[1] * c[1][k]) + (uj[2] * c[2][k] + uj[3] * c[3][k]) +
+                        (uj[4] * c[4][k] + uj[5] * c[5][k]));
+          x(Eigen::Index(j), Eigen::Index(c0 + k)) = xr;
+          for (std::size_t i = 0; i < 6; ++i) c[i][k] += sj[i] * xr;
+        }
+      }
+      if (shape.kept[g]) p[g] = c;
+    }
+  }
+};
+
+}  // namespace kane::detail
+#pragma GCC diagnostic pop
