@@ -278,21 +278,20 @@ void check_articulated_solve(std::mt19937& rng) {
   const kane::detail::articulated_solve<JF, double> bodies(pass.own, pass.screw);
   REQUIRE(bodies.ok());
   std::uniform_real_distribution<double> d(-1.0, 1.0);
-  Eigen::Matrix<double, n, n + 3> b;
+  Eigen::Matrix<double, n, 20> b;  // full blocks of columns and a few left over
   for (auto& v : b.reshaped()) v = d(rng);
-  Eigen::Matrix<double, n, n + 3> x = b;
+  Eigen::Matrix<double, n, 20> x = b;
   bodies.solve_negated(x);
   const auto m = kane::mass_matrix<Sys>(ev).M;
   CHECK((m * x + b).cwiseAbs().maxCoeff() < 1e-12 * (1 + (m * x).cwiseAbs().maxCoeff()));
 }
 
-TEST_CASE("articulated bodies about O solve M X = B: two branches, a tree with a fixed tool, 21 links",
+TEST_CASE("articulated bodies about O solve M X = B: two branches, a tree with a fixed tool",
           "[recursive][derivatives]") {
   std::mt19937 rng(29);
   for (int k = 0; k < 3; ++k) {
     check_articulated_solve<forked::system, forked::evaluator, forked::state>(rng);
     check_articulated_solve<tree::system, tree::evaluator, tree::state>(rng);
-    check_articulated_solve<chain::system, chain::evaluator, chain::state>(rng);
   }
 }
 
