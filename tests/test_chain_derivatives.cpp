@@ -7,6 +7,7 @@
 
 #include <kane/kane.hpp>
 
+#include "differences.hpp"
 #include "recursive_models.hpp"
 
 namespace {
@@ -15,20 +16,6 @@ using model = recursive::chain::system<n>;
 using state = recursive::chain::state<n>;
 using evaluator = recursive::chain::evaluator<n>;
 
-template <bool Speed, class G>
-auto central(const state& s, std::size_t j, G g) {
-  const double h = 1e-6;
-  state a = s, b = s;
-  (Speed ? a.u[j] : a.q[j]) += h;
-  (Speed ? b.u[j] : b.q[j]) -= h;
-  evaluator ea, eb;
-  ea.update(a), eb.update(b);
-  return ((g(ea) - g(eb)) / (2 * h)).eval();
-}
-template <class M, class R>
-double relative(const M& a, const R& b) {
-  return (a - b).cwiseAbs().maxCoeff() / (1 + b.cwiseAbs().maxCoeff());
-}
 }  // namespace
 
 TEST_CASE("dynamics derivatives: the 48-link chain against central differences", "[derivatives]") {
@@ -45,8 +32,8 @@ TEST_CASE("dynamics derivatives: the 48-link chain against central differences",
   Eigen::Matrix<double, int(n), int(n)> tq, tu, aq, au;
   for (std::size_t j = 0; j < n; ++j) {
     const auto c = Eigen::Index(j);
-    tq.col(c) = central<false>(s, j, tau), tu.col(c) = central<true>(s, j, tau);
-    aq.col(c) = central<false>(s, j, ud), au.col(c) = central<true>(s, j, ud);
+    tq.col(c) = central<evaluator, false>(s, j, tau), tu.col(c) = central<evaluator, true>(s, j, tau);
+    aq.col(c) = central<evaluator, false>(s, j, ud), au.col(c) = central<evaluator, true>(s, j, ud);
   }
   CHECK(relative(id.dtau_dq, tq) < 1e-7);
   CHECK(relative(id.dtau_du, tu) < 1e-7);

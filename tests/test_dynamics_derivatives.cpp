@@ -11,6 +11,7 @@
 #include <kane/kane.hpp>
 
 #include "../examples/models/arm6_dynamics.hpp"
+#include "differences.hpp"
 #include "recursive_models.hpp"
 
 namespace {
@@ -40,21 +41,6 @@ using arm_state = kane::state<double, 6, 6, 0, 6>;
 using arm_evaluator = kane::evaluator<arm_state, kane::frames<models::arm6::B6>, kane::level::acceleration,
                                       kane::qdot_speeds<6>>;
 
-// Column j of d g / dq (Speed: d g / du) by central differences of g(evaluator).
-template <class Ev, bool Speed, class St, class G>
-auto central(const St& s, std::size_t j, G g) {
-  const double h = 1e-6;
-  St a = s, b = s;
-  (Speed ? a.u[j] : a.q[j]) += h;
-  (Speed ? b.u[j] : b.q[j]) -= h;
-  Ev ea, eb;
-  ea.update(a), eb.update(b);
-  return ((g(ea) - g(eb)) / (2 * h)).eval();
-}
-template <class M, class R>
-double relative(const M& a, const R& b) {
-  return (a - b).cwiseAbs().maxCoeff() / (1 + b.cwiseAbs().maxCoeff());
-}
 // Every derivative against central differences (1e-7 relative); M against mass_matrix.
 template <class Sys, class Ev, class St>
 void check_differences(const St& s) {

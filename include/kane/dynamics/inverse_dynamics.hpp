@@ -5,9 +5,9 @@
 //   kane::forcing<Sys>(ev)           f alone (tau at u' = 0 is -f, the bias)
 //
 // For a system of joint form (joint_form.hpp) tau and f come from one outward and
-// one inward pass (rnea.hpp) and M from composite bodies (crba.hpp); otherwise
-// from Kane's sums (sums.hpp). Each returns a named result (results.hpp): {tau, status} and
-// {f, status}; when the status is not ok the numbers are NaN.
+// one inward pass (rnea.hpp); otherwise from Kane's sums of f alone (sums.hpp), with the
+// state's u' in the accelerations for tau: M is not formed. Each returns a named result (results.hpp): {tau,
+// status} and {f, status}; when the status is not ok the numbers are NaN.
 #pragma once
 
 #include <cstddef>
@@ -38,14 +38,14 @@ Out inverse_at(const Ev& ev) {
     using JF = joint_form_of<Sys, Ev>;
     const body_frames<JF, Ev> bf(ev);
     joint_forces<Rates, JF, Sys, Sign>(bf, ev, tau);
-  } else {
-    const auto e = mass_matrix_and_forcing_at<Sys, rates::of_state>(ev);
-    if constexpr (Rest && Negated)
+  } else if constexpr (admitted<Sys, speeds_of<Ev>>()) {
+    // f with the bias accelerations (Rest), or with the state's u' in them: -tau, no M
+    const auto e = equations_along < Sys, Rest ? rates::of_state : rates::at_rest,
+               parts::forcing > (ev, all_speeds<n>{});
+    if constexpr (Negated)
       tau = e.f;
-    else if constexpr (Rest)
-      tau = -e.f;
     else
-      tau = e.M * speed_rates(ev) - e.f;
+      tau = -e.f;
   }
   const solve_status status = finished(tau, ev.status());
   return {tau, status};

@@ -56,8 +56,9 @@ constexpr bool inputs_fit() {
     if (In::slots[k] > (In::of_state[k] ? St::nr : St::np)) return false;
   return true;
 }
+// Input k is direction first + k; those in [lo, hi) are seeded at their place after lo.
 template <class In, class J, class St>
-void seed_inputs(St& s, std::size_t first) {
+void seed_inputs(St& s, std::size_t first, std::size_t lo = 0, std::size_t hi = std::size_t(-1)) {
   static_assert(inputs_fit<In, St>(),
                 "kane: an input of linearize is beyond the state; declare the state with NR (inputs) or NP "
                 "(parameters) >= its index");
@@ -69,7 +70,7 @@ void seed_inputs(St& s, std::size_t first) {
         return s.p[In::slots[k] - 1];
     }
     ();
-    x = J::variable(x.v, first + k);
+    if (first + k >= lo && first + k < hi) x = J::variable(x.v, first + k - lo);
   });
 }
 template <class Ev, class In>

@@ -1,5 +1,5 @@
 // Linearization of Kane's equations about a state, exact (forward-mode jets
-// through the same evaluator; no differences):
+// through the same evaluator, or analytical derivatives; no differences):
 //
 //   auto lin = kane::linearize<Sys, Ev>(s);                 // x = (q, u)
 //   auto lin = kane::linearize<Sys, Ev, kane::inputs<kane::r<1>>>(s);  // B = df/dr
@@ -27,6 +27,7 @@
 #include "kane/dynamics/constrained_motion.hpp"
 #include "kane/dynamics/motion.hpp"
 #include "kane/evaluation/configuration.hpp"
+#include "kane/linearization/batched_linearization.hpp"
 #include "kane/linearization/held_coordinates.hpp"
 #include "kane/linearization/jet.hpp"
 #include "kane/linearization/linear_model.hpp"
@@ -134,28 +135,10 @@ using equations_of =
 // x = (q, u) of an unconstrained system; the derivatives of x' = (W u + X, M^-1 f).
 template <System Sys, Evaluator Ev, class In = inputs<>>
 detail::model_of<Ev, In> linearize(const typename Ev::state_type& s) {
-  using S = typename Ev::scalar;
-  constexpr std::size_t nq = Ev::state_type::nq, nu = Ev::nu, nx = nq + nu, n = nx + In::n;
   if constexpr (detail::analytical_linearization<Sys, Ev>())
     return detail::linearize_tree<Sys, Ev, In>(s);
-  else {
-    using J = jet<S, n>;
-    auto js = detail::lift<n>(s);
-    detail::seed_inputs<In, J>(js, nx);
-    motion<Sys, typename detail::rebind_evaluator<Ev, J>::type> rhs(js);
-    std::array<J, nx> x, dx;
-    for (std::size_t i = 0; i < nq; ++i) x[i] = J::variable(s.q[i], i);
-    for (std::size_t i = 0; i < nu; ++i) x[nq + i] = J::variable(s.u[i], nq + i);
-    rhs(x, dx, js.t);
-    detail::model_of<Ev, In> out;
-    for (std::size_t i = 0; i < nx; ++i) {
-      out.rate(Eigen::Index(i)) = dx[i].v;
-      for (std::size_t j = 0; j < nx; ++j) out.A(Eigen::Index(i), Eigen::Index(j)) = dx[i].part(j);
-      for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(i), Eigen::Index(k)) = dx[i].part(nx + k);
-    }
-    out.status = rhs.status();
-    return out;
-  }
+  else
+    return detail::linearize_in_batches<Sys, Ev, In>(s);
 }
 
 // x = (q_ind, u_ind) of a nonholonomic system NH with holonomic constraints H.

@@ -217,8 +217,8 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
 // M and f along the columns Cols. rates::at_rest: the caller's state has u' = 0 (the
 // right-hand sides of motion.hpp), so the bias accelerations are the evaluator's
 // (a - v u' would multiply by zeros). parts::mass_matrix: M alone (f stays 0: no
-// velocity, acceleration or load is read). parts::forcing: where M is known, f alone (forcing_only),
-// not checked (the caller checks u' = M^-1 f).
+// velocity, acceleration or load is read). parts::forcing: f alone (forcing_only); where M is known,
+// not checked (the caller checks u' = M^-1 f). With rates::at_rest at a state of any u', f is -tau.
 template <class Sys, rates Rates, parts Parts = parts::both, class Ev, class Cols>
 auto equations_along(const Ev& ev, const Cols& cols) {
   using S = typename Ev::scalar;
@@ -232,10 +232,10 @@ auto equations_along(const Ev& ev, const Cols& cols) {
     else
       return false;
   }();
-  using result = std::conditional_t<known && !has(Parts, parts::mass_matrix), forcing_only<S, n>,
-                                    equations_of_motion<S, n>>;
+  constexpr bool with_m = has(Parts, parts::mass_matrix);
+  using result = std::conditional_t<with_m, equations_of_motion<S, n>, forcing_only<S, n>>;
   result out = [&] {
-    if constexpr (known && !has(Parts, parts::mass_matrix))
+    if constexpr (!with_m)
       return result{Eigen::Matrix<S, int(n), 1>::Zero(), ev.status()};
     else if constexpr (known)  // symmetric: rows or columns alike
       return result{
@@ -251,12 +251,11 @@ auto equations_along(const Ev& ev, const Cols& cols) {
     detail::with_common_subexpressions(system_terms<R, Sp>(typename Sys::items{}), ev, [&](const auto& e) {
       add_items<Sys, Rates, known ? parts::forcing : Parts>(out, e, cols, ud);
     });
-  if constexpr (!known) out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
-  if constexpr (known &&
-                !has(Parts, parts::mass_matrix))  // the caller checks M^-1 f: a NaN or inf of f reaches it
+  if constexpr (!known && with_m) out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
+  if constexpr (known && !with_m)  // the caller checks M^-1 f: a NaN or inf of f reaches it
     return out;
   const bool finite = [&] {  // numbers: M's diagonal suffices (M = sum m V^T V + W^T I W)
-    if constexpr (known)
+    if constexpr (known || !with_m)
       return detail::all_finite_matrix(out.f);
     else if constexpr (std::is_floating_point_v<S>)
       return detail::finite_diagonal(out.M) && detail::all_finite_matrix(out.f);
