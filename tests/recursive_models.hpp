@@ -2,10 +2,7 @@
 // an oblique axis, a particle, a force and torques; and random states.
 #pragma once
 
-#include <cstddef>
 #include <random>
-#include <type_traits>
-#include <utility>
 
 #include <kane/kane.hpp>
 
@@ -48,51 +45,6 @@ using system = kane::system<
 using state = kane::state<double, 4>;
 using evaluator = kane::evaluator<state, kane::frames<T, D>, kane::level::acceleration, kane::qdot_speeds<4>>;
 }  // namespace tree
-
-// An n-link spatial chain (n <= 48): joint i turns about z, y, x, z, ... of the previous body;
-// joint i + 1 sits L_i along b_i x, link i's mass centre at its middle with a full inertia.
-namespace chain {
-constexpr double length(std::size_t i) { return 0.1 + 0.05 * double((i * 7) % 5); }
-constexpr double mass(std::size_t i) { return 0.4 + 0.2 * double((i * 3) % 7); }
-template <std::size_t I>  // I11, I22, I33, I12, I23, I31 of link I
-constexpr double inertia(std::size_t k) {
-  const double m = mass(I);
-  const double j[6] = {m * (0.006 + 0.001 * double(I % 3)),       m * (0.008 + 0.001 * double((I * 5) % 4)),
-                       m * (0.009 + 0.001 * double((I * 2) % 5)), m * 0.0005 * (double(I % 5) - 2),
-                       m * 0.0004 * (double((I * 3) % 5) - 2),    m * 0.0003 * (double((I * 4) % 5) - 2)};
-  return j[k];
-}
-template <std::size_t I>
-using axis_of = std::conditional_t<I % 3 == 1, kane::axis::z,
-                                   std::conditional_t<I % 3 == 2, kane::axis::y, kane::axis::x>>;
-template <std::size_t I>
-struct B : kane::frame<B<I - 1>, kane::simple<axis_of<I>, kane::coordinate<I>>> {};
-template <>
-struct B<0> : kane::root_frame {};
-template <std::size_t I>  // joint I
-struct J : kane::point<J<I - 1>, literal(length(I - 1)) * e<B<I - 1>, 1>> {};
-template <>
-struct J<1> : kane::origin<B<0>> {};
-template <std::size_t I>
-struct C : kane::point<J<I>, literal(length(I) / 2) * e<B<I>, 1>> {};
-template <std::size_t I>
-using link = kane::rigid_body<
-    B<I>, C<I>, literal(mass(I)),
-    kane::inertia<B<I>, C<I>, literal(inertia<I>(0)), literal(inertia<I>(1)), literal(inertia<I>(2)),
-                  literal(inertia<I>(3)), literal(inertia<I>(4)), literal(inertia<I>(5))>>;
-template <class>
-struct links;
-template <std::size_t... I>
-struct links<std::index_sequence<I...>> {
-  using type = kane::system<link<I + 1>..., kane::gravity<literal(-9.81) * e<B<0>, 3>>>;
-};
-template <std::size_t N>
-using system = typename links<std::make_index_sequence<N>>::type;
-template <std::size_t N>
-using state = kane::state<double, N>;
-template <std::size_t N>
-using evaluator = kane::evaluator<state<N>, kane::frames<B<N>>, kane::level::pose, kane::qdot_speeds<N>>;
-}  // namespace chain
 
 // q, u and u' drawn from [-2, 2]
 template <class St>

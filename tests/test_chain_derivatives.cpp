@@ -7,14 +7,15 @@
 
 #include <kane/kane.hpp>
 
+#include "../benchmarks/chain_dynamics/chain_model.hpp"
 #include "differences.hpp"
 #include "recursive_models.hpp"
 
 namespace {
 constexpr std::size_t n = 48;
-using model = recursive::chain::system<n>;
-using state = recursive::chain::state<n>;
-using evaluator = recursive::chain::evaluator<n>;
+using model = chain_model::system<n>;
+using state = chain_model::state<n>;
+using evaluator = chain_model::evaluator<n>;
 
 }  // namespace
 

@@ -111,3 +111,40 @@ TEST_CASE("constrained_motion: project closes the loop that integration lets dri
   CHECK(f.project<fb::loop>(three).status == kane::solve_status::wrong_size);
   CHECK((three.array() == 0.5).all());
 }
+
+TEST_CASE("linearize: the four-bar's directions one at a time give the same A, B, M, C and K") {
+  fourbar_state s;
+  s.p = {1.0, 2.2, 1.8, 2.5, 0.7, 1.3, 0.9, 9.81, 0.05};
+  s.q = {0.9, 0.6, 1.9};
+  s.u = {0.8, 0, 0};
+  fourbar_evaluator ev;
+  REQUIRE(kane::solve_configuration<fb::loop>(ev, s).status == kane::solve_status::ok);
+  using In = kane::inputs<fp<5>>;
+  namespace kd = kane::detail;
+  const auto near = [](const auto& a, const auto& b) {
+    return (a - b).cwiseAbs().maxCoeff() <= 1e-13 * (1 + b.cwiseAbs().maxCoeff());
+  };
+  // without an input the dependent coordinates' jets come from the loop's partial derivatives
+  const auto all = kane::linearize_constrained<fourbar_system, fb::rates, fourbar_evaluator, fb::loop>(s);
+  const auto one =
+      kd::constrained_in_batches<fourbar_system, fb::rates, fourbar_evaluator, fb::loop, kane::inputs<>, 1>(
+          s);
+  REQUIRE(one.status == kane::solve_status::ok);
+  CHECK(near(one.A, all.A));
+  CHECK(near(one.rate, all.rate));
+  // with one, from a Newton step on jets
+  const auto all_t =
+      kane::linearize_constrained<fourbar_system, fb::rates, fourbar_evaluator, fb::loop, In>(s);
+  const auto one_t =
+      kd::constrained_in_batches<fourbar_system, fb::rates, fourbar_evaluator, fb::loop, In, 1>(s);
+  CHECK(near(one_t.A, all_t.A));
+  CHECK(near(one_t.B, all_t.B));
+  const auto eq = kane::linearize_equations<fourbar_system, fb::rates, fourbar_evaluator, fb::loop, In>(s);
+  const auto eq1 = kd::equations_in_batches<fourbar_system, fb::rates, fourbar_evaluator, fb::loop, In, 1>(s);
+  REQUIRE(eq1.status == kane::solve_status::ok);
+  CHECK(near(eq1.M, eq.M));
+  CHECK(near(eq1.C, eq.C));
+  CHECK(near(eq1.K, eq.K));
+  CHECK(near(eq1.B, eq.B));
+  CHECK(eq.B(0, 0) != 0);
+}

@@ -16,6 +16,7 @@
 
 #include "kane/dynamics/inverse_dynamics.hpp"
 #include "kane/dynamics/mass_matrix_and_forcing.hpp"
+#include "kane/evaluation/reads.hpp"
 #include "kane/linearization/jet.hpp"
 #include "kane/linearization/lift.hpp"
 #include "kane/linearization/linear_model.hpp"
@@ -35,6 +36,22 @@ auto& speeds_of_state(St& s) {
   else
     return s.u;
 }
+
+// What tau at u' reads of the acceleration level: for Kane's sums a few angular accelerations
+// and q'' (evaluation/reads.hpp), else all of them, as motion.hpp reads.
+template <class Sys, class Ev>
+struct residual_reads {
+  static constexpr auto reads = [] {
+    if constexpr (recursive_form<Sys, Ev>)
+      return acceleration_reads<size<typename Ev::closure>::value, Ev::state_type::nq>{
+          every<size<typename Ev::closure>::value>(), every<Ev::state_type::nq>()};
+    else
+      return acceleration_reads_of<Ev>(
+          decltype(system_terms<typename Ev::root, speeds_of<Ev>>(typename Sys::items{})){});
+  }();
+  static constexpr auto alpha = reads.alpha;
+  static constexpr auto qdd = reads.qdd;
+};
 
 template <class Sys, class Ev, class In>
 model_of<Ev, In> linearize_in_batches(const typename Ev::state_type& s) {
@@ -81,7 +98,7 @@ model_of<Ev, In> linearize_in_batches(const typename Ev::state_type& s) {
     }
     seed_inputs<In, J>(js, nx, lo, hi);
     typename rebind_evaluator<Ev, J>::type jev;
-    jev.update(js);
+    jev.template update_for<residual_reads<Sys, Ev>>(js);
     const auto jqd = jev.coordinate_rates();
     const auto tau = inverse_dynamics<Sys>(jev);
     if (tau.status != solve_status::ok) status = tau.status;

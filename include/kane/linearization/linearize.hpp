@@ -59,8 +59,9 @@ constexpr auto independent_coordinates() {
 }
 // At s, which closes H: dq_dep = -J_dep^-1 J_ind dq_ind (the implicit function theorem), J the
 // symbolic partial derivatives of H evaluated by one pose pass on numbers, added to q_dep's jets.
+// Only the directions in [lo, hi) are carried, at their place after lo.
 template <class H, class Ev, auto Slots, class JSt>
-solve_status dependent_jets(const typename Ev::state_type& s, JSt& js) {
+solve_status dependent_jets(const typename Ev::state_type& s, JSt& js, std::size_t lo, std::size_t hi) {
   using S = typename Ev::scalar;
   using J = typename JSt::scalar;
   using Sys = newton_system<H>;
@@ -77,13 +78,14 @@ solve_status dependent_jets(const typename Ev::state_type& s, JSt& js) {
   solve_status status = ev.status();
   static_for<qi.size()>([&](auto t) {
     if constexpr (Slots.slot[t] == no_slot) return;  // H does not hold q_t
+    if (Slots.slot[t] < lo || Slots.slot[t] >= hi) return;
     table<S, m, 1> f, x;
     static_for<m>(
         [&](auto k) { f[k][0] = eval_scalar(diff(std::get<k>(H::equations), coordinate<qi[t]>{}), ev); });
     const solve_status solved = substitute_structured<Sys>(jac, factors, f, x);
     if (status == solve_status::ok) status = solved;
     static_for<m>(
-        [&](auto j) { js.q[H::dependents[j] - 1] -= J::variable(S(0), Slots.slot[t]) * J(x[j][0]); });
+        [&](auto j) { js.q[H::dependents[j] - 1] -= J::variable(S(0), Slots.slot[t] - lo) * J(x[j][0]); });
   });
   return status;
 }
@@ -93,34 +95,42 @@ solve_status dependent_jets(const typename Ev::state_type& s, JSt& js) {
 template <class Sys, class NH, class Ev, class H>
 inline constexpr auto directions =
     coordinate_slots<independent_coordinates<H, Ev::state_type::nq>(), coordinates_held<Sys, NH, Ev, H>()>();
-template <class Sys, class NH, class Ev, class H, class In>
-auto constrained_point(const typename Ev::state_type& s, solve_status& status) {
+// The directions in [lo, lo + B) are carried by jets of B, at their place after lo.
+template <class Sys, class NH, class Ev, class H, class In, std::size_t B>
+auto constrained_point(const typename Ev::state_type& s, solve_status& status, std::size_t lo) {
   constexpr std::size_t nq = Ev::state_type::nq;
   constexpr auto qi = independent_coordinates<H, nq>();
   constexpr auto qs = directions<Sys, NH, Ev, H>;
-  constexpr std::size_t nx = qs.n + NH::p, n = nx + In::n;
-  using J = jet<typename Ev::scalar, n>;
+  constexpr std::size_t nx = qs.n + NH::p;
+  using J = jet<typename Ev::scalar, B>;
   using JEv = typename rebind_evaluator<Ev, J>::type;
+  const std::size_t hi = lo + B;
+  const auto seeded = [&](std::size_t d, auto value) {
+    return d >= lo && d < hi ? J::variable(value, d - lo) : J(value);
+  };
   struct {
-    decltype(lift<n>(s)) js;
+    decltype(lift<B>(s)) js;
     std::array<J, nq + NH::p> x;
-  } out{lift<n>(s), {}};  // built and returned in place
+  } out{lift<B>(s), {}};  // built and returned in place
   auto& [js, x] = out;
   for (std::size_t k = 0; k < qi.size(); ++k)
-    if (qs.slot[k] != no_slot) js.q[qi[k] - 1] = J::variable(s.q[qi[k] - 1], qs.slot[k]);
-  seed_inputs<In, J>(js, nx);
+    if (qs.slot[k] != no_slot) js.q[qi[k] - 1] = seeded(qs.slot[k], s.q[qi[k] - 1]);
+  seed_inputs<In, J>(js, nx, lo, hi);
   status = solve_status::ok;
   if constexpr (!std::is_void_v<H> && In::n == 0) {
-    status = dependent_jets<H, Ev, qs>(s, js);
+    status = dependent_jets<H, Ev, qs>(s, js, lo, hi);
   } else if constexpr (!std::is_void_v<H>) {  // q_dep -= J^-1 f on jets (inputs may enter f)
     JEv ev;
     const auto r = solve_configuration<H>(ev, js, {J(-1), 1});
     if (r.status != solve_status::not_converged) status = r.status;
   }
   for (std::size_t i = 0; i < nq; ++i) x[i] = js.q[i];
-  for (std::size_t k = 0; k < NH::p; ++k) x[nq + k] = J::variable(s.u[NH::independents[k] - 1], qs.n + k);
+  for (std::size_t k = 0; k < NH::p; ++k) x[nq + k] = seeded(qs.n + k, s.u[NH::independents[k] - 1]);
   return out;
 }
+// The jets' size of a batch of a linearization in n directions.
+template <std::size_t N, std::size_t Batch>
+inline constexpr std::size_t batch_of = N < Batch ? N : Batch;
 // The results' types, declared so that a call does not instantiate the model to learn them.
 template <class NH, class Ev, class H, class In>
 using constrained_model_of =
@@ -141,76 +151,102 @@ detail::model_of<Ev, In> linearize(const typename Ev::state_type& s) {
     return detail::linearize_in_batches<Sys, Ev, In>(s);
 }
 
+namespace detail {
+// linearize_constrained with the directions in batches of jets of Batch
+template <class Sys, class NH, class Ev, class H, class In, std::size_t Batch>
+constrained_model_of<NH, Ev, H, In> constrained_in_batches(const typename Ev::state_type& s) {
+  using S = typename Ev::scalar;
+  constexpr std::size_t nq = Ev::state_type::nq;
+  constexpr auto qi = independent_coordinates<H, nq>();
+  constexpr auto qs = directions<Sys, NH, Ev, H>;
+  constexpr std::size_t nx = qi.size() + NH::p, nj = qs.n + NH::p, n = nj + In::n, b = batch_of<n, Batch>;
+  using J = jet<S, b>;
+  constrained_model_of<NH, Ev, H, In> out;
+  out.A.setZero();  // the columns of held coordinates
+  out.status = solve_status::ok;
+  for (std::size_t lo = 0; lo < n; lo += b) {
+    solve_status status;
+    auto [js, x] = constrained_point<Sys, NH, Ev, H, In, b>(s, status, lo);
+    constrained_motion<Sys, NH, typename rebind_evaluator<Ev, J>::type> rhs(js);
+    std::array<J, nq + NH::p> dx;
+    rhs(x, dx, js.t);
+    if (out.status == solve_status::ok) out.status = status != solve_status::ok ? status : rhs.status();
+    for (std::size_t i = 0; i < nx; ++i) {
+      const J& r = i < qi.size() ? dx[qi[i] - 1] : dx[nq + i - qi.size()];
+      out.rate(Eigen::Index(i)) = r.v;
+      for (std::size_t j = 0; j < nx; ++j) {
+        const std::size_t d = j < qi.size() ? qs.slot[j] : qs.n + j - qi.size();
+        if (d != no_slot && d >= lo && d < lo + b) out.A(Eigen::Index(i), Eigen::Index(j)) = r.part(d - lo);
+      }
+      for (std::size_t k = 0; k < In::n; ++k)
+        if (nj + k >= lo && nj + k < lo + b) out.B(Eigen::Index(i), Eigen::Index(k)) = r.part(nj + k - lo);
+    }
+  }
+  return out;
+}
+
+// linearize_equations with the directions in batches of jets of Batch
+template <class Sys, class NH, class Ev, class H, class In, std::size_t Batch>
+equations_of<NH, Ev, H, In> equations_in_batches(const typename Ev::state_type& s) {
+  using S = typename Ev::scalar;
+  constexpr std::size_t nq = Ev::state_type::nq, p = NH::p;
+  constexpr auto qi = independent_coordinates<H, nq>();
+  constexpr auto qs = directions<Sys, NH, Ev, H>;
+  constexpr std::size_t nj = qs.n + p, n = nj + In::n, b = batch_of<n, Batch>;
+  using J = jet<S, b>;
+  equations_of<NH, Ev, H, In> out;
+  out.K.setZero();  // the columns of held coordinates
+  out.status = solve_status::ok;
+  Eigen::Matrix<S, int(p), 1> ud;
+  for (std::size_t lo = 0; lo < n; lo += b) {
+    solve_status status;
+    auto [js, x] = constrained_point<Sys, NH, Ev, H, In, b>(s, status, lo);
+    // the state at x (u_dep = A u_ind + B, u' = 0), then M~ and f~ on jets, once
+    js.ud = {};
+    typename rebind_evaluator<Ev, J>::type ev;
+    const auto sol = update_at_independent_speeds<NH>(ev, js, x);
+    const auto eq = reduced_mass_matrix_and_forcing_at<Sys, NH, rates::at_rest>(ev, sol).reduced;
+    if (lo == 0) {  // u_ind' at s: M~ u' = f~ on the numbers
+      equations_of_motion<S, p> at{{}, {}, eq.status};
+      for (std::size_t r = 0; r < p; ++r) {
+        at.f(Eigen::Index(r)) = eq.f(Eigen::Index(r)).v;
+        for (std::size_t c = 0; c < p; ++c)
+          out.M(Eigen::Index(r), Eigen::Index(c)) = at.M(Eigen::Index(r), Eigen::Index(c)) =
+              eq.M(Eigen::Index(r), Eigen::Index(c)).v;
+      }
+      const auto solved = speed_derivatives(at);
+      ud = solved.ud;
+      out.status = status != solve_status::ok ? status : solved.status;
+    }
+    const auto in_batch = [&](std::size_t d) { return d != no_slot && d >= lo && d < lo + b; };
+    for (std::size_t r = 0; r < p; ++r) {
+      J res = -eq.f(Eigen::Index(r));
+      for (std::size_t c = 0; c < p; ++c)
+        res += eq.M(Eigen::Index(r), Eigen::Index(c)) * J(ud(Eigen::Index(c)));
+      for (std::size_t j = 0; j < qi.size(); ++j)
+        if (in_batch(qs.slot[j])) out.K(Eigen::Index(r), Eigen::Index(j)) = res.part(qs.slot[j] - lo);
+      for (std::size_t c = 0; c < p; ++c)
+        if (in_batch(qs.n + c)) out.C(Eigen::Index(r), Eigen::Index(c)) = res.part(qs.n + c - lo);
+      for (std::size_t k = 0; k < In::n; ++k)
+        if (in_batch(nj + k)) out.B(Eigen::Index(r), Eigen::Index(k)) = -res.part(nj + k - lo);
+    }
+  }
+  return out;
+}
+}  // namespace detail
+
 // x = (q_ind, u_ind) of a nonholonomic system NH with holonomic constraints H.
 template <System Sys, Nonholonomic NH, Evaluator Ev, class H = void, class In = inputs<>>
 requires(std::is_void_v<H> || Holonomic<H>) detail::constrained_model_of<NH, Ev, H, In> linearize_constrained(
     const typename Ev::state_type& s) {
-  using S = typename Ev::scalar;
-  constexpr std::size_t nq = Ev::state_type::nq;
-  constexpr auto qi = detail::independent_coordinates<H, nq>();
-  constexpr auto qs = detail::directions<Sys, NH, Ev, H>;
-  constexpr std::size_t nx = qi.size() + NH::p, nj = qs.n + NH::p;
-  using J = jet<S, nj + In::n>;
-  solve_status status;
-  auto [js, x] = detail::constrained_point<Sys, NH, Ev, H, In>(s, status);
-  constrained_motion<Sys, NH, typename detail::rebind_evaluator<Ev, J>::type> rhs(js);
-  std::array<J, nq + NH::p> dx;
-  rhs(x, dx, js.t);
-  detail::constrained_model_of<NH, Ev, H, In> out;
-  for (std::size_t i = 0; i < nx; ++i) {
-    const J& r = i < qi.size() ? dx[qi[i] - 1] : dx[nq + i - qi.size()];
-    out.rate(Eigen::Index(i)) = r.v;
-    for (std::size_t j = 0; j < nx; ++j) {
-      const std::size_t d = j < qi.size() ? qs.slot[j] : qs.n + j - qi.size();
-      out.A(Eigen::Index(i), Eigen::Index(j)) = d == detail::no_slot ? S(0) : r.part(d);
-    }
-    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(i), Eigen::Index(k)) = r.part(nj + k);
-  }
-  out.status = status != solve_status::ok ? status : rhs.status();
-  return out;
+  return detail::constrained_in_batches<Sys, NH, Ev, H, In, detail::linearize_batch>(s);
 }
 
 // M u' + C u + K q_ind = B r: Kane's reduced equations linearized about s, u' held.
 template <System Sys, Nonholonomic NH, Evaluator Ev, class H = void, class In = inputs<>>
 requires(std::is_void_v<H> || Holonomic<H>) detail::equations_of<NH, Ev, H, In> linearize_equations(
     const typename Ev::state_type& s) {
-  using S = typename Ev::scalar;
-  constexpr std::size_t nq = Ev::state_type::nq, p = NH::p;
-  constexpr auto qi = detail::independent_coordinates<H, nq>();
-  constexpr auto qs = detail::directions<Sys, NH, Ev, H>;
-  constexpr std::size_t nj = qs.n + p;
-  using J = jet<S, nj + In::n>;
-  solve_status status;
-  auto [js, x] = detail::constrained_point<Sys, NH, Ev, H, In>(s, status);
-  // the state at x (u_dep = A u_ind + B, u' = 0), then M~ and f~ on jets, once
-  js.ud = {};
-  typename detail::rebind_evaluator<Ev, J>::type ev;
-  const auto sol = detail::update_at_independent_speeds<NH>(ev, js, x);
-  const auto eq =
-      detail::reduced_mass_matrix_and_forcing_at<Sys, NH, detail::rates::at_rest>(ev, sol).reduced;
-  // u_ind' at s: M~ u' = f~ on the numbers
-  equations_of_motion<S, p> at{{}, {}, eq.status};
-  for (std::size_t r = 0; r < p; ++r) {
-    at.f(Eigen::Index(r)) = eq.f(Eigen::Index(r)).v;
-    for (std::size_t c = 0; c < p; ++c)
-      at.M(Eigen::Index(r), Eigen::Index(c)) = eq.M(Eigen::Index(r), Eigen::Index(c)).v;
-  }
-  const auto [ud, solved] = speed_derivatives(at);
-  detail::equations_of<NH, Ev, H, In> out;
-  for (std::size_t r = 0; r < p; ++r) {
-    J res = -eq.f(Eigen::Index(r));
-    for (std::size_t c = 0; c < p; ++c) {
-      const J& m = eq.M(Eigen::Index(r), Eigen::Index(c));
-      out.M(Eigen::Index(r), Eigen::Index(c)) = m.v;
-      res += m * J(ud(Eigen::Index(c)));
-    }
-    for (std::size_t j = 0; j < qi.size(); ++j)
-      out.K(Eigen::Index(r), Eigen::Index(j)) = qs.slot[j] == detail::no_slot ? S(0) : res.part(qs.slot[j]);
-    for (std::size_t c = 0; c < p; ++c) out.C(Eigen::Index(r), Eigen::Index(c)) = res.part(qs.n + c);
-    for (std::size_t k = 0; k < In::n; ++k) out.B(Eigen::Index(r), Eigen::Index(k)) = -res.part(nj + k);
-  }
-  out.status = status != solve_status::ok ? status : solved;
-  return out;
+  return detail::equations_in_batches<Sys, NH, Ev, H, In, detail::linearize_batch>(s);
 }
 
 }  // namespace kane
