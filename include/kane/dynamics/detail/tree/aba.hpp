@@ -116,18 +116,30 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
         cw[g] = u * cross_along<K>(w[g], kg), cv[g] = u * cross_along<K>(v[g], kg);
       }
     });
-  std::array<composite_inertia<S>, nf> rigid;
-  own_inertias<JF, Sys>(bf, ev, rigid);
-  std::array<vec, nf> ff, fn;
-  own_loads<JF, Sys>(bf, ev, ff, fn);
+  // each frame's own items: their inertias (a table of numbers where literals give them), their loads
+  using known = known_inertias<JF, Sys, body_frames<JF, Ev>>;
+  constexpr bool loaded = loads_below_root<JF, Sys>;
+  std::array<composite_inertia<S>, known::value ? 1 : nf> rigid;
+  if constexpr (!known::value) own_inertias<JF, Sys>(bf, ev, rigid);
+  std::array<vec, loaded ? nf : 1> ff, fn;
+  if constexpr (loaded) own_loads<JF, Sys>(bf, ev, ff, fn);
   for (std::size_t g = 1; g < nf; ++g) {  // I = [i [h]; -[h] m 1], p = v x* I v - f_ext
-    const composite_inertia<S>& q = rigid[g];
+    const composite_inertia<S> q = [&] {
+      if constexpr (known::value) {
+        const composite_inertia<double>& o = known::own[g];
+        return composite_inertia<S>{S(o.mass),
+                                    {S(o.h.x), S(o.h.y), S(o.h.z)},
+                                    {S(o.i[0]), S(o.i[1]), S(o.i[2]), S(o.i[3]), S(o.i[4]), S(o.i[5])}};
+      } else
+        return rigid[g];
+    }();
     articulated<S>& y = x[g];
     y.a = q.i;
     y.b = {vec{S(0), -q.h.z, q.h.y}, vec{q.h.z, S(0), -q.h.x}, vec{-q.h.y, q.h.x, S(0)}};  // [h]
     y.c = {q.mass, q.mass, q.mass, S(0), S(0), S(0)};
     const vec hh = sym_times(q.i, w[g]) + cross3(q.h, v[g]), ll = q.mass * v[g] - cross3(q.h, w[g]);
-    y.n = fn[g] + cross3(w[g], hh) + cross3(v[g], ll), y.f = ff[g] + cross3(w[g], ll);
+    y.n = cross3(w[g], hh) + cross3(v[g], ll), y.f = cross3(w[g], ll);
+    if constexpr (loaded) y.n = y.n + fn[g], y.f = y.f + ff[g];
   }
   bool ok = true;
   for (std::size_t g = nf - 1; g > 0; --g)  // leaves first

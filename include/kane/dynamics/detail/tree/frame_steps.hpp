@@ -142,6 +142,13 @@ KANE_ALWAYS_INLINE void own_inertias(const body_frames<JF, Ev>& bf, const Ev& ev
   }
 }
 
+// Some frame below the root has applied loads (own_loads)
+template <class JF, class Sys>
+inline constexpr bool loads_below_root =
+    []<class... X, std::size_t... I>(list<X...>, std::index_sequence<I...>) {
+      return ((!is_gravity<X> && !is_body<X> && !is_particle<X> && JF::table.item_frame[I] > 0) || ...);
+    }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
+
 // Each frame's applied loads negated, -f_ext: the force f and its moment n about the frame's origin,
 // in its components.
 template <class JF, class Sys, class Ev>
