@@ -1,7 +1,7 @@
-// A floating base on Euler parameters with body rates, carrying two spatial arms of two links
-// (11 coordinates, 10 speeds): a free body that is not of joint form, so its dynamics take Kane's
-// sums and its linearization jets in batches. Inputs: a thrust along b3 and a torque pair at each
-// shoulder.
+// A floating base on Euler parameters with body rates, carrying two spatial arms of `links` links
+// (one link: 9 coordinates, 8 speeds; eight: 23 and 22). A free body is not of joint form, so its
+// dynamics take Kane's sums and its linearization jets in batches. Inputs: a thrust along b3 and a
+// torque pair at each shoulder.
 #pragma once
 
 #include <cstddef>
@@ -16,7 +16,7 @@ using kane::e;
 using kane::literal;
 template <std::size_t I>
 using q = kane::coordinate<I>;
-inline constexpr std::size_t links = 2;
+inline constexpr std::size_t links = 1;
 
 struct N : kane::root_frame {};
 struct B : kane::frame<N, kane::euler_parameters<q<1>, q<2>, q<3>, q<4>>> {};

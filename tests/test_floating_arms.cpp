@@ -1,5 +1,5 @@
-// A floating base on Euler parameters with body rates carrying two 2-link arms (floating_arms.hpp,
-// 10 speeds, Kane's sums): kane::linearize against central differences of kane::motion (1e-7
+// A floating base on Euler parameters with body rates carrying two one-link arms (floating_arms.hpp,
+// 8 speeds, Kane's sums): kane::linearize against central differences of kane::motion (1e-7
 // relative) and against jets of one direction carried through kane::motion, M on jets (1e-10);
 // kane::inverse_dynamics (f with the state's u', M not formed) against M u' - f.
 #include <catch2/catch.hpp>
@@ -41,8 +41,7 @@ vector_x rates(const fa::state& s, const std::array<double, nx>& x, const std::a
 }
 }  // namespace
 
-TEST_CASE("linearize: a floating base with two 2-link arms against central differences and jets",
-          "[linearize]") {
+TEST_CASE("linearize: a floating base with two arms against central differences and jets", "[linearize]") {
   const fa::state s = sample(5);
   const auto lin = kane::linearize<fa::system, fa::evaluator, fa::inputs>(s);
   REQUIRE(lin.status == kane::solve_status::ok);
