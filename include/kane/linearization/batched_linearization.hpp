@@ -4,7 +4,7 @@
 // batches of linearize_batch, each batch one evaluation on jets of that size: jets of q' = W u + X and
 // of tau = M u' - f at that u' (inverse_dynamics.hpp), so that M is never formed on jets and
 //   du'/dx = -M^-1 dtau/dx,   du'/dr = -M^-1 dtau/dr.
-// Every object is O(n) jets of a fixed size: the model's size bounds neither a jet nor the stack.
+// A jet holds 8 derivatives whatever the model, an evaluation O(n) jets; M and A are numbers.
 #pragma once
 
 #include <cstddef>
