@@ -6,8 +6,8 @@
 //
 // For a system of joint form (joint_form.hpp) tau and f come from one outward and
 // one inward pass (rnea.hpp); otherwise from Kane's sums of f alone (sums.hpp), with the
-// state's u' in the accelerations for tau: M is not formed. Each returns a named result (results.hpp): {tau,
-// status} and {f, status}; when the status is not ok the numbers are NaN.
+// state's u' in the accelerations for tau: M is not formed. Each returns a named result
+// (results.hpp): {tau, status} and {f, status}; when the status is not ok the numbers are NaN.
 #pragma once
 
 #include <cstddef>
@@ -40,8 +40,8 @@ Out inverse_at(const Ev& ev) {
     joint_forces<Rates, JF, Sys, Sign>(bf, ev, tau);
   } else if constexpr (admitted<Sys, speeds_of<Ev>>()) {
     // f with the bias accelerations (Rest), or with the state's u' in them: -tau, no M
-    const auto e = equations_along < Sys, Rest ? rates::of_state : rates::at_rest,
-               parts::forcing > (ev, all_speeds<n>{});
+    constexpr rates in_f = Rest ? rates::of_state : rates::at_rest;
+    const auto e = equations_along<Sys, in_f, parts::forcing>(ev, all_speeds<n>{});
     if constexpr (Negated)
       tau = e.f;
     else
