@@ -38,15 +38,20 @@ std::array<double, 4> fourbar_rate(fourbar_state s) {
   f(x, dx, 0.0);
   return dx;
 }
+// The four-bar at the crank angle 0.9 and rate u1, the loop closed (q2, q3 from a guess).
+fourbar_state closed_fourbar(double u1) {
+  fourbar_state s;
+  s.p = {1.0, 2.2, 1.8, 2.5, 0.7, 1.3, 0.9, 9.81, 0.05};
+  s.q = {0.9, 0.6, 1.9};
+  s.u = {u1, 0, 0};
+  fourbar_evaluator ev;
+  REQUIRE(kane::solve_configuration<fb::loop>(ev, s).status == kane::solve_status::ok);
+  return s;
+}
 }  // namespace
 
 TEST_CASE("linearize: a closed loop (four-bar) with and without an input, against central differences") {
-  fourbar_state s;
-  s.p = {1.0, 2.2, 1.8, 2.5, 0.7, 1.3, 0.9, 9.81, 0.05};
-  s.q = {0.9, 0.6, 1.9};  // a guess; q2, q3 close the loop below
-  s.u = {0.8, 0, 0};
-  fourbar_evaluator ev;
-  REQUIRE(kane::solve_configuration<fb::loop>(ev, s).status == kane::solve_status::ok);
+  fourbar_state s = closed_fourbar(0.8);
   // x = (q1, u1): q2, q3 from the loop (one pass on numbers, or a Newton step on jets with an input)
   const auto lin = kane::linearize_constrained<fourbar_system, fb::rates, fourbar_evaluator, fb::loop>(s);
   const auto lin_t = kane::linearize_constrained<fourbar_system, fb::rates, fourbar_evaluator, fb::loop,
@@ -79,12 +84,7 @@ TEST_CASE("linearize: a closed loop (four-bar) with and without an input, agains
 }
 
 TEST_CASE("constrained_motion: project closes the loop that integration lets drift") {
-  fourbar_state s;
-  s.p = {1.0, 2.2, 1.8, 2.5, 0.7, 1.3, 0.9, 9.81, 0.05};
-  s.q = {0.9, 0.6, 1.9};
-  s.u = {2.0, 0, 0};
-  fourbar_evaluator ev;
-  REQUIRE(kane::solve_configuration<fb::loop>(ev, s).status == kane::solve_status::ok);
+  fourbar_state s = closed_fourbar(2.0);
   kane::constrained_motion<fourbar_system, fb::rates, fourbar_evaluator> f(s);
   const auto gap = [&](const std::array<double, 4>& x) {  // max |f_k| of the loop at x's q
     fourbar_state t = s;
@@ -113,12 +113,7 @@ TEST_CASE("constrained_motion: project closes the loop that integration lets dri
 }
 
 TEST_CASE("linearize: the four-bar's directions one at a time: A, and the second-order form") {
-  fourbar_state s;
-  s.p = {1.0, 2.2, 1.8, 2.5, 0.7, 1.3, 0.9, 9.81, 0.05};
-  s.q = {0.9, 0.6, 1.9};
-  s.u = {0.8, 0, 0};
-  fourbar_evaluator ev;
-  REQUIRE(kane::solve_configuration<fb::loop>(ev, s).status == kane::solve_status::ok);
+  fourbar_state s = closed_fourbar(0.8);
   using In = kane::inputs<fp<5>>;
   namespace kd = kane::detail;
   const auto near = [](const auto& a, const auto& b) {
