@@ -19,12 +19,12 @@
 #include <cstddef>
 #include <type_traits>
 
+#include "kane/dynamics/detail/method.hpp"
 #include "kane/dynamics/detail/rates_function.hpp"
 #include "kane/dynamics/detail/system_rules.hpp"
 #include "kane/dynamics/forward_dynamics.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
 #include "kane/dynamics/system_evaluator.hpp"
-#include "kane/evaluation/reads.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -67,7 +67,7 @@ class motion
   template <class X>
   Ev evaluator(const X& x, scalar time) const {
     state_type s = s_;
-    auto& u = speeds_in(s);
+    auto& u = detail::speeds_of_state<Ev>(s);
     if (detail::fits<size>(x)) {
       for (std::size_t i = 0; i < nq; ++i) s.q[i] = x[i];
       for (std::size_t i = 0; i < nu; ++i) u[i] = x[nq + i];
@@ -86,43 +86,26 @@ class motion
   }
 
  private:
-  // where x's speeds go in a state: u, or q' without a speed set (what such an evaluator reads)
-  static auto& speeds_in(state_type& s) {
-    if constexpr (std::is_void_v<typename Ev::speed_set>)
-      return s.qd;
-    else
-      return s.u;
-  }
   template <class X, class DX>
   void step(const X& x, DX& dxdt, scalar time) {
     if (!detail::size_fits<size, scalar>(x, dxdt)) {
       status_ = solve_status::wrong_size;
       return;
     }
-    auto& u = speeds_in(s_);
+    auto& u = detail::speeds_of_state<Ev>(s_);
     detail::copy_wide<nq>(s_.q.data(), x, 0);
     detail::copy_wide<nu>(u.data(), x, nq);
     s_.t = time;
     Ev ev;
     if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
       return;
-    else if constexpr (detail::recursive_form<Sys, Ev>)
-      ev.template update_for<detail::every_read<Ev>>(s_);
-    else  // Kane's sums read a few angular accelerations and q'' (evaluation/reads.hpp)
-      ev.template update_for<equation_reads>(s_);
+    else
+      ev.template update_for<detail::equation_reads<Sys, Ev, true>>(s_);
     const auto [ud, status] = detail::forward_at<Sys, detail::rates::at_rest>(ev);
     status_ = status;
     detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status == solve_status::ok);
     for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = ud(Eigen::Index(i));
   }
-
-  struct equation_reads {
-    static constexpr auto reads = detail::acceleration_reads_of<Ev>(
-        decltype(detail::system_terms<typename Ev::root, detail::speeds_of<Ev>>(typename Sys::items{})){});
-    static constexpr auto alpha = reads.alpha;
-    static constexpr auto qdd = reads.qdd;
-    static constexpr bool rest = true;  // u' = 0
-  };
 };
 
 }  // namespace kane

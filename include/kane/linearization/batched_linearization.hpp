@@ -14,9 +14,10 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
+#include "kane/dynamics/detail/method.hpp"
+#include "kane/dynamics/detail/rates_function.hpp"
 #include "kane/dynamics/inverse_dynamics.hpp"
 #include "kane/dynamics/mass_matrix_and_forcing.hpp"
-#include "kane/evaluation/reads.hpp"
 #include "kane/linearization/jet.hpp"
 #include "kane/linearization/lift.hpp"
 #include "kane/linearization/linear_model.hpp"
@@ -27,31 +28,6 @@ namespace kane::detail {
 
 // The directions of one evaluation on jets.
 inline constexpr std::size_t linearize_batch = 8;
-
-// Where x's speeds go in a state: u, or q' without a speed set (motion.hpp).
-template <class Ev, class St>
-auto& speeds_of_state(St& s) {
-  if constexpr (std::is_void_v<typename Ev::speed_set>)
-    return s.qd;
-  else
-    return s.u;
-}
-
-// What tau at u' reads of the acceleration level: for Kane's sums a few angular accelerations
-// and q'' (evaluation/reads.hpp), else all of them, as motion.hpp reads.
-template <class Sys, class Ev>
-struct residual_reads {
-  static constexpr auto reads = [] {
-    if constexpr (recursive_form<Sys, Ev>)
-      return acceleration_reads<size<typename Ev::closure>::value, Ev::state_type::nq>{
-          every<size<typename Ev::closure>::value>(), every<Ev::state_type::nq>()};
-    else
-      return acceleration_reads_of<Ev>(
-          decltype(system_terms<typename Ev::root, speeds_of<Ev>>(typename Sys::items{})){});
-  }();
-  static constexpr auto alpha = reads.alpha;
-  static constexpr auto qdd = reads.qdd;
-};
 
 template <class Sys, class Ev, class In>
 model_of<Ev, In> linearize_in_batches(const typename Ev::state_type& s) {
@@ -98,7 +74,7 @@ model_of<Ev, In> linearize_in_batches(const typename Ev::state_type& s) {
     }
     seed_inputs<In, J>(js, nx, lo, hi);
     typename rebind_evaluator<Ev, J>::type jev;
-    jev.template update_for<residual_reads<Sys, Ev>>(js);
+    jev.template update_for<equation_reads<Sys, Ev, false>>(js);
     const auto jqd = jev.coordinate_rates();
     const auto tau = inverse_dynamics<Sys>(jev);
     if (tau.status != solve_status::ok) status = tau.status;

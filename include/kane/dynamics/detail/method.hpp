@@ -5,10 +5,13 @@
 #pragma once
 
 #include <cstddef>
+#include <type_traits>
 
 #include "kane/dynamics/detail/sums/known_mass_matrix.hpp"
+#include "kane/dynamics/detail/sums/terms.hpp"
 #include "kane/dynamics/detail/system_rules.hpp"
 #include "kane/dynamics/detail/tree/joint_form.hpp"
+#include "kane/evaluation/reads.hpp"
 #include "kane/evaluation/tables.hpp"
 
 namespace kane::detail {
@@ -35,5 +38,26 @@ constexpr bool known_masses() {
   else
     return known_mass_matrix<Sys, typename Ev::root, speeds_of<Ev>>.known;
 }
+
+// The acceleration level that the equations of Sys read, for Ev's update_for: every angular
+// acceleration and q'' for the recursive passes, those of the terms for Kane's sums
+// (evaluation/reads.hpp). Rest: u' = 0, not read from the state (motion.hpp).
+struct resting {
+  static constexpr bool rest = true;
+};
+struct moving {};
+template <class Sys, class Ev, bool Rest>
+struct equation_reads : std::conditional_t<Rest, resting, moving> {
+  static constexpr auto reads = [] {
+    if constexpr (recursive_form<Sys, Ev>)
+      return acceleration_reads<size<typename Ev::closure>::value, Ev::state_type::nq>{
+          every<size<typename Ev::closure>::value>(), every<Ev::state_type::nq>()};
+    else
+      return acceleration_reads_of<Ev>(
+          decltype(system_terms<typename Ev::root, speeds_of<Ev>>(typename Sys::items{})){});
+  }();
+  static constexpr auto alpha = reads.alpha;
+  static constexpr auto qdd = reads.qdd;
+};
 
 }  // namespace kane::detail

@@ -48,6 +48,14 @@ struct every_read {
   static constexpr auto qdd = every<Ev::state_type::nq>();
   static constexpr bool rest = true;
 };
+// Where x's speeds go in a state: u, or q' without a speed set (what such an evaluator reads).
+template <class Ev, class St>
+auto& speeds_of_state(St& s) {
+  if constexpr (std::is_void_v<typename Ev::speed_set>)
+    return s.qd;
+  else
+    return s.u;
+}
 // x and dxdt hold Size entries: known at compile time (sizes_checked), or by size() at run time
 // (a container without size() is taken at its word). Otherwise the call reads nothing, writes NaN
 // into as many entries of dxdt as it has, up to Size, and says wrong_size.
