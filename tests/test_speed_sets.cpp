@@ -222,10 +222,8 @@ TEST_CASE("speed sets: sums of coordinate rates give the exact q'") {
 
 TEST_CASE("speed sets: random sums and multiples of up to six coordinate rates") {
   std::mt19937 rng(46);
-  check_random_sets<2, 1, 2>(rng);
-  check_random_sets<3, 4>(rng);
+  check_random_sets<2, 1>(rng);
   check_random_sets<4, 7>(rng);
-  check_random_sets<5, 9>(rng);
   check_random_sets<6, 11>(rng);
 }
 

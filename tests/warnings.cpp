@@ -1,8 +1,7 @@
 // The whole public API instantiated in float and double, checked with -fsyntax-only under
 //   -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion -Wold-style-cast -Werror
-// by the suite's compiler and by clang++ when found (tests warnings.<compiler>.<scalar>).
-// Nothing runs: the explicit instantiations at the end instantiate every body (one scalar per
-// test).
+// by the suite's compiler and by clang++ when found (tests warnings.<compiler>).
+// Nothing runs: the explicit instantiations at the end instantiate every body.
 #include <array>
 #include <cstddef>
 #include <sstream>
@@ -294,7 +293,7 @@ S all(const state6<S>& s, const kane::state<S, 6>& s6) {
          spins_and_attitudes(s6) + dynamics(s6) + S(printing(s).size());
 }
 
-// One scalar when KANE_WARNINGS_SCALAR names it (the suite's two units), else both.
+// One scalar when KANE_WARNINGS_SCALAR names it, else both (the suite's tests).
 #ifdef KANE_WARNINGS_SCALAR
 template KANE_WARNINGS_SCALAR all<KANE_WARNINGS_SCALAR>(const state6<KANE_WARNINGS_SCALAR>&,
                                                         const kane::state<KANE_WARNINGS_SCALAR, 6>&);
