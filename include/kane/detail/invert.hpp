@@ -15,6 +15,7 @@
 
 #include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
+#include "kane/detail/packet.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -180,21 +181,28 @@ bool solve_negated(const Eigen::Matrix<S, N, N>& m, X&... x) {
       } else
         l[std::size_t(i * n + j)] = s * inv[std::size_t(j)];
     }
-  const auto solve = [&](auto& b) {
-    for (Eigen::Index c = 0; c < b.cols(); ++c) {
-      S* y = &b(0, c);
-      for (int i = 0; i < n; ++i) {  // L y = b
-        S s = y[i];
-        for (int k = 0; k < i; ++k) s -= l[std::size_t(i * n + k)] * y[k];
-        y[i] = s * inv[std::size_t(i)];
-      }
-      for (int i = n - 1; i >= 0; --i) {  // L^T x = y, negated
-        S s = y[i];
-        for (int k = i + 1; k < n; ++k) s -= l[std::size_t(k * n + i)] * y[k];
-        y[i] = s * inv[std::size_t(i)];
-      }
-      for (int i = 0; i < n; ++i) y[i] = -y[i];
+  // V columns from c0 at a time, each number a packet of V (packet.hpp)
+  const auto columns = [&]<std::size_t V>(auto& b, std::size_t c0, index_c<V>) {
+    std::array<packet<S, V>, std::size_t(n)> y;
+    for (int i = 0; i < n; ++i) {  // L y = b
+      packet<S, V> s;
+      for (std::size_t k = 0; k < V; ++k) s[k] = b(i, Eigen::Index(c0 + k));
+      for (int k = 0; k < i; ++k) s -= l[std::size_t(i * n + k)] * y[std::size_t(k)];
+      y[std::size_t(i)] = s * inv[std::size_t(i)];
     }
+    for (int i = n - 1; i >= 0; --i) {  // L^T x = y
+      packet<S, V> s = y[std::size_t(i)];
+      for (int k = i + 1; k < n; ++k) s -= l[std::size_t(k * n + i)] * y[std::size_t(k)];
+      y[std::size_t(i)] = s * inv[std::size_t(i)];
+    }
+    for (int i = 0; i < n; ++i)
+      for (std::size_t k = 0; k < V; ++k) b(i, Eigen::Index(c0 + k)) = -y[std::size_t(i)][k];
+  };
+  const auto solve = [&](auto& b) {
+    constexpr std::size_t W = packet_width<S>;
+    const auto cols = std::size_t(b.cols()), full = cols - cols % W;
+    for (std::size_t c0 = 0; c0 < full; c0 += W) columns(b, c0, index_c<W>{});
+    for (std::size_t c0 = full; c0 < cols; ++c0) columns(b, c0, index_c<1>{});
   };
   (solve(x), ...);
   return true;

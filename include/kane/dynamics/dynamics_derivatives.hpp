@@ -102,7 +102,7 @@ forward_dynamics_derivatives(const Ev& ev) {
       Eigen::Matrix<S, int(n), int(n)> m;
       Eigen::Matrix<S, int(n), 1> tau;
       pass.outward(ev, out.ud);
-      pass.inward(tau, m, out.dud_dq, out.dud_du);
+      pass.template inward<n <= detail::articulated_above>(tau, m, out.dud_dq, out.dud_du);
       if constexpr (n <= detail::articulated_above) {
         if (!detail::solve_negated(m, out.dud_dq, out.dud_du)) out.status = solve_status::singular;
       } else {

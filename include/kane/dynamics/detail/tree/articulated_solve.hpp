@@ -3,7 +3,7 @@
 // items: U = I^A S, D = S.U, I^A of the parent += I^A - U U^T / D. Then for each column b,
 // inward: u_r = b_r - S.p, p of the parent += p + U u_r / D; outward from a_O = 0:
 // x_r = (u_r - U.a') / D, a = a' + S x_r. Cost: O(n) a column, against O(n^2) for a
-// factored M; the columns go W at a time, each step a loop over them.
+// factored M; the columns go W at a time, each number a packet of W.
 #pragma once
 
 #include <array>
@@ -12,6 +12,8 @@
 #include <Eigen/Core>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/list.hpp"
+#include "kane/detail/packet.hpp"
 #include "kane/dynamics/detail/tree/composite_inertia.hpp"
 #include "kane/dynamics/detail/tree/spatial.hpp"
 
@@ -23,11 +25,7 @@ template <class JF, class S>
 class articulated_solve {
   static constexpr auto& t = JF::table;
   static constexpr std::size_t nf = JF::nf, n = JF::n;
-#ifdef __AVX__
-  static constexpr std::size_t W = 4;
-#else
-  static constexpr std::size_t W = 8;
-#endif
+  static constexpr std::size_t W = packet_width<S>;
   using six = std::array<S, 6>;
   // Frame g hands its sum to the next frame in registers when that frame is its parent (inward: g - 1;
   // outward: a child at g + 1); a frame with another child keeps its sum in memory.
@@ -93,50 +91,55 @@ class articulated_solve {
 
  private:
   template <std::size_t V>
-  using rows = std::array<std::array<S, V>, 6>;  // six components of V columns
+  using pack = packet<S, V>;  // one number of V columns
   template <std::size_t V>
-  static void add(rows<V>& to, const rows<V>& from) {
-    for (std::size_t i = 0; i < 6; ++i)
-      for (std::size_t k = 0; k < V; ++k) to[i][k] += from[i][k];
+  using rows = std::array<pack<V>, 6>;  // six components of V columns
+  template <std::size_t V>
+  KANE_ALWAYS_INLINE static rows<V> zeros() {
+    rows<V> z;
+    static_for_inline<6>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { z[i] = zero_packet<S, V>(); });
+    return z;
+  }
+  template <std::size_t V>
+  KANE_ALWAYS_INLINE static void add(rows<V>& to, const rows<V>& from) {
+    static_for_inline<6>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { to[i] += from[i]; });
+  }
+  template <std::size_t V>  // c += a x
+  KANE_ALWAYS_INLINE static void add_times(rows<V>& c, const six& a, const pack<V>& x) {
+    static_for_inline<6>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { c[i] += a[i] * x; });
+  }
+  template <std::size_t V>
+  KANE_ALWAYS_INLINE static pack<V> dot(const six& a, const rows<V>& c) {
+    return (a[0] * c[0] + a[1] * c[1]) + (a[2] * c[2] + a[3] * c[3]) + (a[4] * c[4] + a[5] * c[5]);
   }
   template <std::size_t V, class X>
   void columns(X& x, std::size_t c0) const {
     std::array<rows<V>, nf> p;  // p inward, then a outward, kept where the tree branches
-    std::array<std::array<S, V>, n> ur;
+    std::array<pack<V>, n> ur;
     for (std::size_t g = 0; g < nf; ++g)
-      if (shape.kept[g]) p[g] = rows<V>{};
-    rows<V> c{};  // p of the frame after g when g is its parent, carried
+      if (shape.kept[g]) p[g] = zeros<V>();
+    rows<V> c = zeros<V>();  // p of the frame after g when g is its parent, carried
     for (std::size_t g = nf - 1; g > 0; --g) {
-      if (shape.kept[g]) add(c, p[g]);
+      if (shape.kept[g]) add<V>(c, p[g]);
       const int r = t.speed[g];
       if (r >= 0) {
         const auto j = std::size_t(r);
-        const six& sj = s_[j];
-        std::array<S, V>& uu = ur[j];
-        for (std::size_t k = 0; k < V; ++k)
-          uu[k] = -x(Eigen::Index(j), Eigen::Index(c0 + k)) -
-                  ((sj[0] * c[0][k] + sj[1] * c[1][k]) + (sj[2] * c[2][k] + sj[3] * c[3][k]) +
-                   (sj[4] * c[4][k] + sj[5] * c[5][k]));
-        for (std::size_t i = 0; i < 6; ++i)
-          for (std::size_t k = 0; k < V; ++k) c[i][k] += ud_[j][i] * uu[k];
+        pack<V> b;
+        for (std::size_t k = 0; k < V; ++k) b[k] = x(Eigen::Index(j), Eigen::Index(c0 + k));
+        ur[j] = -b - dot<V>(s_[j], c);
+        add_times<V>(c, ud_[j], ur[j]);
       }
-      if (!shape.carried[g]) add(p[std::size_t(t.parent[g])], c), c = rows<V>{};
+      if (!shape.carried[g]) add<V>(p[std::size_t(t.parent[g])], c), c = zeros<V>();
     }
-    c = rows<V>{}, p[0] = rows<V>{};  // a of the frame before g when it is g's parent, carried; a_O = 0
+    c = zeros<V>(), p[0] = zeros<V>();  // a of the frame before g when it is g's parent, carried; a_O = 0
     for (std::size_t g = 1; g < nf; ++g) {
       if (!shape.carried[g]) c = p[std::size_t(t.parent[g])];
       const int r = t.speed[g];
       if (r >= 0) {
         const auto j = std::size_t(r);
-        const six& sj = s_[j];
-        const six& uj = ud_[j];
-        for (std::size_t k = 0; k < V; ++k) {
-          const S xr = ur[j][k] * inv_d_[j] -
-                       ((uj[0] * c[0][k] + uj[1] * c[1][k]) + (uj[2] * c[2][k] + uj[3] * c[3][k]) +
-                        (uj[4] * c[4][k] + uj[5] * c[5][k]));
-          x(Eigen::Index(j), Eigen::Index(c0 + k)) = xr;
-          for (std::size_t i = 0; i < 6; ++i) c[i][k] += sj[i] * xr;
-        }
+        const pack<V> xr = ur[j] * inv_d_[j] - dot<V>(ud_[j], c);
+        for (std::size_t k = 0; k < V; ++k) x(Eigen::Index(j), Eigen::Index(c0 + k)) = xr[k];
+        add_times<V>(c, s_[j], xr);
       }
       if (shape.kept[g]) p[g] = c;
     }

@@ -99,11 +99,20 @@ struct tree_partials {
       b[g] = variation_of(own[g], v[g], l);
     }
   }
-  // tau, M, dtau/dq and dtau/du.
-  template <class Tau, class Square>
+  // Speeds on one path from the root: every pair of speeds is related, each entry written.
+  static constexpr bool one_path = [] {
+    for (std::size_t r = 0; r < n; ++r)
+      if (t.parent_speed[r] != int(r) - 1) return false;
+    return true;
+  }();
+  // tau, M (when Mass), dtau/dq and dtau/du.
+  template <bool Mass = true, class Tau, class Square>
   KANE_ALWAYS_INLINE void inward(Tau& tau, Square& m, Square& dq, Square& du) {
     y = own;
-    m.setZero(), dq.setZero(), du.setZero();
+    if constexpr (!one_path) {
+      dq.setZero(), du.setZero();
+      if constexpr (Mass) m.setZero();
+    }
     for (std::size_t g = nf - 1; g > 0; --g) {
       const auto p = std::size_t(t.parent[g]);
       const int r = t.speed[g];
@@ -119,7 +128,7 @@ struct tree_partials {
         for (int c = r; c >= 0; c = t.parent_speed[std::size_t(c)]) {
           const auto j = std::size_t(c);
           const auto l = Eigen::Index(c);
-          m(k, l) = m(l, k) = dot6(ys, screw[j]);
+          if constexpr (Mass) m(k, l) = m(l, k) = dot6(ys, screw[j]);
           dq(k, l) = dot6(ys, da[j]) + dot3(bs, dv[j].w);
           du(k, l) = S(2) * dot6(ys, dv[j]) + dot3(bs, screw[j].w);
           if (c != r) dq(l, k) = dot6(screw[j], fq), du(l, k) = dot6(screw[j], fu);

@@ -1,0 +1,50 @@
+// A packet: the numbers of a few columns that one vector register holds, for loops that treat
+// columns alike (articulated_solve.hpp). g++ and clang++ take their vector extension for float and
+// double; other scalars and compilers take Eigen's fixed-size array.
+#pragma once
+
+#include <cstddef>
+#include <type_traits>
+
+#include <Eigen/Core>
+
+namespace kane::detail {
+
+// The bytes of the widest vector register the target enables.
+inline constexpr std::size_t register_bytes =
+#if defined(__AVX512F__)
+    64;
+#elif defined(__AVX__)
+    32;
+#else
+    16;
+#endif
+
+// The numbers of S in one register: 1 where S is not float or double.
+template <class S>
+inline constexpr std::size_t packet_width = std::is_floating_point_v<S>&& register_bytes > sizeof(S)
+                                                ? register_bytes / sizeof(S)
+                                                : 1;
+
+template <class S, std::size_t V, bool Vector = std::is_floating_point_v<S>>
+struct packet_of {
+  using type = Eigen::Array<S, int(V), 1>;
+};
+#if defined(__GNUC__)
+template <class S, std::size_t V>
+struct packet_of<S, V, true> {
+  typedef S type __attribute__((vector_size(sizeof(S) * V)));
+};
+#endif
+// V numbers of S: + - * elementwise, * by a number of S, p[k] the k-th.
+template <class S, std::size_t V>
+using packet = typename packet_of<S, V>::type;
+
+template <class S, std::size_t V>
+packet<S, V> zero_packet() {
+  packet<S, V> p;
+  for (std::size_t k = 0; k < V; ++k) p[k] = S(0);
+  return p;
+}
+
+}  // namespace kane::detail
