@@ -27,6 +27,14 @@ class articulated_solve {
   static constexpr std::size_t nf = JF::nf, n = JF::n;
   static constexpr std::size_t W = packet_width<S>;
   using six = std::array<S, 6>;
+  template <std::size_t V>
+  using pack = packet<S, V>;  // one number of V columns
+  template <std::size_t V>
+  using rows = std::array<pack<V>, 6>;  // six components of V columns
+  // S and U / D also as packets of W equal numbers, below AVX-512 (there a product broadcasts a number
+  // from memory itself)
+  static constexpr bool spread = W > 1 && register_bytes < 64;
+  static constexpr std::size_t B = spread ? W : 1;
   // Frame g hands its sum to the next frame in registers when that frame is its parent (inward: g - 1;
   // outward: a child at g + 1); a frame with another child keeps its sum in memory.
   struct tree_shape {
@@ -40,6 +48,7 @@ class articulated_solve {
     return z;
   }();
   std::array<six, n> s_{}, ud_{};  // S and U / D of each speed
+  std::array<rows<B>, n> sw_{}, uw_{};
   std::array<S, n> inv_d_{};
   bool ok_ = true;
 
@@ -73,6 +82,9 @@ class articulated_solve {
         ok_ = ok_ && d > S(0);
         inv_d_[j] = S(1) / d, s_[j] = sj;
         for (std::size_t i = 0; i < 6; ++i) ud_[j][i] = inv_d_[j] * u(Eigen::Index(i));
+        if constexpr (spread)
+          for (std::size_t i = 0; i < 6; ++i)
+            for (std::size_t k = 0; k < W; ++k) sw_[j][i][k] = s_[j][i], uw_[j][i][k] = ud_[j][i];
         ia[g].noalias() -= (inv_d_[j] * u) * u.transpose();
       }
       ia[p] += ia[g];
@@ -91,10 +103,6 @@ class articulated_solve {
 
  private:
   template <std::size_t V>
-  using pack = packet<S, V>;  // one number of V columns
-  template <std::size_t V>
-  using rows = std::array<pack<V>, 6>;  // six components of V columns
-  template <std::size_t V>
   KANE_ALWAYS_INLINE static rows<V> zeros() {
     rows<V> z;
     static_for_inline<6>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { z[i] = zero_packet<S, V>(); });
@@ -104,13 +112,28 @@ class articulated_solve {
   KANE_ALWAYS_INLINE static void add(rows<V>& to, const rows<V>& from) {
     static_for_inline<6>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { to[i] += from[i]; });
   }
-  template <std::size_t V>  // c += a x
-  KANE_ALWAYS_INLINE static void add_times(rows<V>& c, const six& a, const pack<V>& x) {
+  template <std::size_t V, class A>  // c += a x
+  KANE_ALWAYS_INLINE static void add_times(rows<V>& c, const A& a, const pack<V>& x) {
     static_for_inline<6>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { c[i] += a[i] * x; });
   }
-  template <std::size_t V>
-  KANE_ALWAYS_INLINE static pack<V> dot(const six& a, const rows<V>& c) {
+  template <std::size_t V, class A>
+  KANE_ALWAYS_INLINE static pack<V> dot(const A& a, const rows<V>& c) {
     return (a[0] * c[0] + a[1] * c[1]) + (a[2] * c[2] + a[3] * c[3]) + (a[4] * c[4] + a[5] * c[5]);
+  }
+  // S and U / D of u_j for V columns
+  template <std::size_t V>
+  KANE_ALWAYS_INLINE const auto& screw(std::size_t j) const {
+    if constexpr (spread && V == W)
+      return sw_[j];
+    else
+      return s_[j];
+  }
+  template <std::size_t V>
+  KANE_ALWAYS_INLINE const auto& scaled(std::size_t j) const {
+    if constexpr (spread && V == W)
+      return uw_[j];
+    else
+      return ud_[j];
   }
   template <std::size_t V, class X>
   void columns(X& x, std::size_t c0) const {
@@ -126,8 +149,8 @@ class articulated_solve {
         const auto j = std::size_t(r);
         pack<V> b;
         for (std::size_t k = 0; k < V; ++k) b[k] = x(Eigen::Index(j), Eigen::Index(c0 + k));
-        ur[j] = -b - dot<V>(s_[j], c);
-        add_times<V>(c, ud_[j], ur[j]);
+        ur[j] = -b - dot<V>(screw<V>(j), c);
+        add_times<V>(c, scaled<V>(j), ur[j]);
       }
       if (!shape.carried[g]) add<V>(p[std::size_t(t.parent[g])], c), c = zeros<V>();
     }
@@ -137,9 +160,9 @@ class articulated_solve {
       const int r = t.speed[g];
       if (r >= 0) {
         const auto j = std::size_t(r);
-        const pack<V> xr = ur[j] * inv_d_[j] - dot<V>(ud_[j], c);
+        const pack<V> xr = ur[j] * inv_d_[j] - dot<V>(scaled<V>(j), c);
         for (std::size_t k = 0; k < V; ++k) x(Eigen::Index(j), Eigen::Index(c0 + k)) = xr[k];
-        add_times<V>(c, s_[j], xr);
+        add_times<V>(c, screw<V>(j), xr);
       }
       if (shape.kept[g]) p[g] = c;
     }
