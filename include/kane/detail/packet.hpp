@@ -4,9 +4,12 @@
 #pragma once
 
 #include <cstddef>
+#include <cstring>
 #include <type_traits>
 
 #include <Eigen/Core>
+
+#include "kane/detail/inline.hpp"
 
 namespace kane::detail {
 
@@ -41,10 +44,34 @@ template <class S, std::size_t V>
 using packet = typename packet_of<S, V>::type;
 
 template <class S, std::size_t V>
-packet<S, V> zero_packet() {
-  packet<S, V> p;
+KANE_ALWAYS_INLINE packet<S, V> zero_packet() {
+  packet<S, V> p{};
   for (std::size_t k = 0; k < V; ++k) p[k] = S(0);
   return p;
+}
+// V numbers all x
+template <std::size_t V, class S>
+KANE_ALWAYS_INLINE packet<S, V> splat(const S& x) {
+  packet<S, V> p{};
+  for (std::size_t k = 0; k < V; ++k) p[k] = x;
+  return p;
+}
+// V numbers one after the other in memory, at any alignment
+template <std::size_t V, class S>
+KANE_ALWAYS_INLINE packet<S, V> load_packet(const S* from) {
+  packet<S, V> p{};
+  if constexpr (std::is_floating_point_v<S>)
+    std::memcpy(&p, from, sizeof(p));
+  else
+    for (std::size_t k = 0; k < V; ++k) p[k] = from[k];
+  return p;
+}
+template <std::size_t V, class S>
+KANE_ALWAYS_INLINE void store_packet(const packet<S, V>& p, S* to) {
+  if constexpr (std::is_floating_point_v<S>)
+    std::memcpy(to, &p, sizeof(p));
+  else
+    for (std::size_t k = 0; k < V; ++k) to[k] = p[k];
 }
 
 }  // namespace kane::detail

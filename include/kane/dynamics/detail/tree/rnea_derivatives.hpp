@@ -25,6 +25,8 @@
 #include <Eigen/Core>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/list.hpp"
+#include "kane/detail/packet.hpp"
 #include "kane/detail/v3.hpp"
 #include "kane/dynamics/detail/tree/body_frames.hpp"
 #include "kane/dynamics/detail/tree/composite_inertia.hpp"
@@ -105,6 +107,9 @@ struct tree_partials {
       if (t.parent_speed[r] != int(r) - 1) return false;
     return true;
   }();
+  // From this many speeds on one path, the columns of the derivatives go in packets (column).
+  static constexpr std::size_t packed_from = 12;
+  static constexpr bool packed = one_path && n >= packed_from;
   // tau, M (when Mass), dtau/dq and dtau/du.
   template <bool Mass = true, class Tau, class Square>
   KANE_ALWAYS_INLINE void inward(Tau& tau, Square& m, Square& dq, Square& du) {
@@ -113,6 +118,10 @@ struct tree_partials {
       dq.setZero(), du.setZero();
       if constexpr (Mass) m.setZero();
     }
+    [[maybe_unused]] std::array<std::array<S, n>, 9> ysb;  // packed: Y S and B^T S of each speed
+    [[maybe_unused]] std::array<std::array<S, n>, 6> sc;   // and S, by component
+    if constexpr (packed)
+      for (std::size_t j = 0; j < n; ++j) put(sc, j, screw[j]);
     for (std::size_t g = nf - 1; g > 0; --g) {
       const auto p = std::size_t(t.parent[g]);
       const int r = t.speed[g];
@@ -125,17 +134,85 @@ struct tree_partials {
             times(y[g], da[std::size_t(r)]) + b[g].times(dv[std::size_t(r)]) + cross_force(s, f[g]);
         const spatial<S> fu = S(2) * times(y[g], dv[std::size_t(r)]) + b[g].times(s);
         tau(k) = dot6(s, f[g]);
-        for (int c = r; c >= 0; c = t.parent_speed[std::size_t(c)]) {
-          const auto j = std::size_t(c);
-          const auto l = Eigen::Index(c);
-          if constexpr (Mass) m(k, l) = m(l, k) = dot6(ys, screw[j]);
-          dq(k, l) = dot6(ys, da[j]) + dot3(bs, dv[j].w);
-          du(k, l) = S(2) * dot6(ys, dv[j]) + dot3(bs, screw[j].w);
-          if (c != r) dq(l, k) = dot6(screw[j], fq), du(l, k) = dot6(screw[j], fu);
-        }
+        if constexpr (packed) {
+          put(ysb, std::size_t(r), ys);
+          ysb[6][std::size_t(r)] = bs.x, ysb[7][std::size_t(r)] = bs.y, ysb[8][std::size_t(r)] = bs.z;
+          column<Mass>(std::size_t(r), fq, fu, m, dq, du, sc, ysb);
+        } else
+          for (int c = r; c >= 0; c = t.parent_speed[std::size_t(c)]) {
+            const auto j = std::size_t(c);
+            const auto l = Eigen::Index(c);
+            if constexpr (Mass) m(k, l) = m(l, k) = dot6(ys, screw[j]);
+            dq(k, l) = dot6(ys, da[j]) + dot3(bs, dv[j].w);
+            du(k, l) = S(2) * dot6(ys, dv[j]) + dot3(bs, screw[j].w);
+            if (c != r) dq(l, k) = dot6(screw[j], fq), du(l, k) = dot6(screw[j], fu);
+          }
       }
       if (p > 0) add_to(y[p], y[g]), add_to(b[p], b[g]), f[p] = f[p] + f[g];
     }
+    if constexpr (packed && Mass)
+      for (Eigen::Index c = 1; c < Eigen::Index(n); ++c)
+        for (Eigen::Index r = 0; r < c; ++r) m(r, c) = m(c, r);
+  }
+
+ private:
+  template <std::size_t N>
+  static void put(std::array<std::array<S, n>, N>& to, std::size_t j, const spatial<S>& x) {
+    to[0][j] = x.w.x, to[1][j] = x.w.y, to[2][j] = x.w.z, to[3][j] = x.v.x, to[4][j] = x.v.y,
+    to[5][j] = x.v.z;
+  }
+  // a_0 x_0 + ... for packets x of V rows from k; the coefficients as packets when V = W
+  template <std::size_t N, std::size_t V, std::size_t R, class C>
+  KANE_ALWAYS_INLINE static packet<S, V> sum(const std::array<std::array<S, n>, R>& x, std::size_t k,
+                                             const C& a) {
+    static_assert(N <= R);
+    packet<S, V> out = load_packet<V>(&x[0][k]) * a[0];
+    static_for_inline<N - 1>(
+        [&](auto i) KANE_ALWAYS_INLINE_LAMBDA { out += load_packet<V>(&x[i + 1][k]) * a[i + 1]; });
+    return out;
+  }
+  // Column r of one path, its rows contiguous (column-major), W at a time:
+  // rows k >= r (the speeds below, summed): dq = Y_k S_k . da_r + B_k^T S_k . dv_r.w,
+  // du = Y_k S_k . 2 dv_r + B_k^T S_k . S_r.w, M = Y_k S_k . S_r; rows l < r: S_l . fq_r, S_l . fu_r.
+  template <bool Mass, class Square>
+  KANE_ALWAYS_INLINE void column(std::size_t r, const spatial<S>& fq, const spatial<S>& fu, Square& m,
+                                 Square& dq, Square& du, const std::array<std::array<S, n>, 6>& sc,
+                                 const std::array<std::array<S, n>, 9>& ysb) const {
+    static_assert(!Square::IsRowMajor);
+    constexpr std::size_t W = packet_width<S>;
+    const spatial<S>&s = screw[r], &va = da[r], &vv = dv[r];
+    const S two(2);
+    const std::array<S, 9> aq{va.w.x, va.w.y, va.w.z, va.v.x, va.v.y, va.v.z, vv.w.x, vv.w.y, vv.w.z},
+        au{two * vv.w.x, two * vv.w.y, two * vv.w.z, two * vv.v.x, two * vv.v.y,
+           two * vv.v.z, s.w.x,        s.w.y,        s.w.z};
+    const std::array<S, 6> am{s.w.x, s.w.y, s.w.z, s.v.x, s.v.y, s.v.z},
+        fqa{fq.w.x, fq.w.y, fq.w.z, fq.v.x, fq.v.y, fq.v.z},
+        fua{fu.w.x, fu.w.y, fu.w.z, fu.v.x, fu.v.y, fu.v.z};
+    const auto spread = [](const auto& a) {  // the coefficients as packets
+      std::array<packet<S, W>, std::tuple_size_v<std::remove_cvref_t<decltype(a)>>> p;
+      for (std::size_t i = 0; i < p.size(); ++i) p[i] = splat<W>(a[i]);
+      return p;
+    };
+    const auto pq = spread(aq), pu = spread(au), pm = spread(am), pfq = spread(fqa), pfu = spread(fua);
+    S *q = &dq(0, Eigen::Index(r)), *u = &du(0, Eigen::Index(r)), *mm = &m(0, Eigen::Index(r));
+    const auto below = [&](std::size_t k, auto v, const auto& cq, const auto& cu, const auto& cm)
+                           KANE_ALWAYS_INLINE_LAMBDA {
+                             constexpr std::size_t V = decltype(v)::value;
+                             store_packet<V>(sum<9, V>(ysb, k, cq), q + k);
+                             store_packet<V>(sum<9, V>(ysb, k, cu), u + k);
+                             if constexpr (Mass) store_packet<V>(sum<6, V>(ysb, k, cm), mm + k);
+                           };
+    const auto above = [&](std::size_t l, auto v, const auto& cq, const auto& cu) KANE_ALWAYS_INLINE_LAMBDA {
+      constexpr std::size_t V = decltype(v)::value;
+      store_packet<V>(sum<6, V>(sc, l, cq), q + l);
+      store_packet<V>(sum<6, V>(sc, l, cu), u + l);
+    };
+    std::size_t k = r;
+    for (; k + W <= n; k += W) below(k, index_c<W>{}, pq, pu, pm);
+    for (; k < n; ++k) below(k, index_c<1>{}, aq, au, am);
+    std::size_t l = 0;
+    for (; l + W <= r; l += W) above(l, index_c<W>{}, pfq, pfu);
+    for (; l < r; ++l) above(l, index_c<1>{}, fqa, fua);
   }
 };
 
