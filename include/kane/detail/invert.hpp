@@ -185,7 +185,7 @@ bool solve_negated(const Eigen::Matrix<S, N, N>& m, X&... x) {
   const auto columns = [&]<std::size_t V>(auto& b, std::size_t c0, index_c<V>) {
     std::array<packet<S, V>, std::size_t(n)> y;
     for (int i = 0; i < n; ++i) {  // L y = b
-      packet<S, V> s;
+      packet<S, V> s{};
       for (std::size_t k = 0; k < V; ++k) s[k] = b(i, Eigen::Index(c0 + k));
       for (int k = 0; k < i; ++k) s -= l[std::size_t(i * n + k)] * y[std::size_t(k)];
       y[std::size_t(i)] = s * inv[std::size_t(i)];

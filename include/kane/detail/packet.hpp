@@ -1,6 +1,7 @@
-// A packet: the numbers of a few columns that one vector register holds, for loops that treat
-// columns alike (articulated_solve.hpp). g++ and clang++ take their vector extension for float and
-// double; other scalars and compilers take Eigen's fixed-size array.
+// A packet: the numbers of a few columns or rows that one vector register holds, for loops that
+// treat them alike (the solves of invert.hpp and articulated_solve.hpp, the columns of
+// rnea_derivatives.hpp). g++ and clang++ take their vector extension for float and double; other
+// scalars and compilers take Eigen's fixed-size array.
 #pragma once
 
 #include <cstddef>

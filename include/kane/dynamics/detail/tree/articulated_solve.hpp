@@ -120,20 +120,14 @@ class articulated_solve {
   KANE_ALWAYS_INLINE static pack<V> dot(const A& a, const rows<V>& c) {
     return (a[0] * c[0] + a[1] * c[1]) + (a[2] * c[2] + a[3] * c[3]) + (a[4] * c[4] + a[5] * c[5]);
   }
-  // S and U / D of u_j for V columns
+  // S (or U / D) of u_j for V columns: its packets when they are stored
   template <std::size_t V>
-  KANE_ALWAYS_INLINE const auto& screw(std::size_t j) const {
+  KANE_ALWAYS_INLINE static const auto& of(const std::array<six, n>& one, const std::array<rows<B>, n>& wide,
+                                           std::size_t j) {
     if constexpr (spread && V == W)
-      return sw_[j];
+      return wide[j];
     else
-      return s_[j];
-  }
-  template <std::size_t V>
-  KANE_ALWAYS_INLINE const auto& scaled(std::size_t j) const {
-    if constexpr (spread && V == W)
-      return uw_[j];
-    else
-      return ud_[j];
+      return one[j];
   }
   template <std::size_t V, class X>
   void columns(X& x, std::size_t c0) const {
@@ -149,8 +143,8 @@ class articulated_solve {
         const auto j = std::size_t(r);
         pack<V> b;
         for (std::size_t k = 0; k < V; ++k) b[k] = x(Eigen::Index(j), Eigen::Index(c0 + k));
-        ur[j] = -b - dot<V>(screw<V>(j), c);
-        add_times<V>(c, scaled<V>(j), ur[j]);
+        ur[j] = -b - dot<V>(of<V>(s_, sw_, j), c);
+        add_times<V>(c, of<V>(ud_, uw_, j), ur[j]);
       }
       if (!shape.carried[g]) add<V>(p[std::size_t(t.parent[g])], c), c = zeros<V>();
     }
@@ -160,9 +154,9 @@ class articulated_solve {
       const int r = t.speed[g];
       if (r >= 0) {
         const auto j = std::size_t(r);
-        const pack<V> xr = ur[j] * inv_d_[j] - dot<V>(scaled<V>(j), c);
+        const pack<V> xr = ur[j] * inv_d_[j] - dot<V>(of<V>(ud_, uw_, j), c);
         for (std::size_t k = 0; k < V; ++k) x(Eigen::Index(j), Eigen::Index(c0 + k)) = xr[k];
-        add_times<V>(c, screw<V>(j), xr);
+        add_times<V>(c, of<V>(s_, sw_, j), xr);
       }
       if (shape.kept[g]) p[g] = c;
     }
