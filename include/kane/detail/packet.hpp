@@ -44,12 +44,6 @@ struct packet_of<S, V, true> {
 template <class S, std::size_t V>
 using packet = typename packet_of<S, V>::type;
 
-template <class S, std::size_t V>
-KANE_ALWAYS_INLINE packet<S, V> zero_packet() {
-  packet<S, V> p{};
-  for (std::size_t k = 0; k < V; ++k) p[k] = S(0);
-  return p;
-}
 // V numbers all x
 template <std::size_t V, class S>
 KANE_ALWAYS_INLINE packet<S, V> splat(const S& x) {

@@ -83,8 +83,7 @@ class articulated_solve {
         inv_d_[j] = S(1) / d, s_[j] = sj;
         for (std::size_t i = 0; i < 6; ++i) ud_[j][i] = inv_d_[j] * u(Eigen::Index(i));
         if constexpr (spread)
-          for (std::size_t i = 0; i < 6; ++i)
-            for (std::size_t k = 0; k < W; ++k) sw_[j][i][k] = s_[j][i], uw_[j][i][k] = ud_[j][i];
+          for (std::size_t i = 0; i < 6; ++i) sw_[j][i] = splat<W>(s_[j][i]), uw_[j][i] = splat<W>(ud_[j][i]);
         ia[g].noalias() -= (inv_d_[j] * u) * u.transpose();
       }
       ia[p] += ia[g];
@@ -105,7 +104,7 @@ class articulated_solve {
   template <std::size_t V>
   KANE_ALWAYS_INLINE static rows<V> zeros() {
     rows<V> z;
-    static_for_inline<6>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { z[i] = zero_packet<S, V>(); });
+    static_for_inline<6>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { z[i] = splat<V>(S(0)); });
     return z;
   }
   template <std::size_t V>
