@@ -1,7 +1,8 @@
 // Kane's equations regrouped over the tree (composite bodies, inward sums,
 // articulated bodies) against a second method: Newton-Euler written by hand for
 // the 6R arm, Kane's sums over the partial velocities for a tree with branches,
-// fixed rotations, a particle, a force and torques, and M^-1 f for a 21-link chain.
+// fixed rotations, a particle, a force and torques, and for a floating base on a free joint
+// carrying two arms, and M^-1 f for a 21-link chain.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -13,6 +14,8 @@
 #include <kane/kane.hpp>
 
 #include "../examples/models/arm6_dynamics.hpp"
+#include "differences.hpp"
+#include "floating_arms.hpp"
 #include "recursive_models.hpp"
 
 namespace {
@@ -354,4 +357,45 @@ TEST_CASE("dynamics derivatives: a speed that moves no mass gives singular and N
   const auto id = kane::inverse_dynamics_derivatives<massless_speed>(ev);
   CHECK(id.status == kane::solve_status::ok);  // tau and its derivatives need no inverse
   CHECK(std::abs(id.M(3, 3)) < 1e-15);
+}
+
+namespace {
+namespace fa = floating_arms;
+// a state of the floating base: unit Euler parameters, random rates and accelerations
+template <class State>
+State floating_state(unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(-1.0, 1.0);
+  State s;
+  for (auto& x : s.q) x = d(rng);
+  for (auto& x : s.u) x = d(rng);
+  for (auto& x : s.ud) x = d(rng);
+  const double norm = std::sqrt(s.q[0] * s.q[0] + s.q[1] * s.q[1] + s.q[2] * s.q[2] + s.q[3] * s.q[3]);
+  for (std::size_t i = 0; i < 4; ++i) s.q[i] /= norm;
+  s.r = {70.0, 0.4, -0.3};
+  return s;
+}
+}  // namespace
+
+TEMPLATE_TEST_CASE_SIG("the recursive passes with a free joint equal Kane's sums", "[recursive]",
+                       ((std::size_t Links), Links), 1, 2) {
+  using model = fa::model<Links>;
+  using system = typename model::system;
+  using evaluator = typename model::evaluator;
+  static_assert(kane::detail::recursive_form<system, evaluator> &&
+                kane::detail::free_joint<system, evaluator>);
+  for (unsigned seed : {3u, 8u}) {
+    const auto s = floating_state<typename model::state>(seed);
+    evaluator ev;
+    ev.update(s);
+    const auto fast = kane::mass_matrix_and_forcing<system>(ev);
+    REQUIRE(fast.status == kane::solve_status::ok);
+    const auto sums = kane::detail::equations_along<system, kane::detail::rates::of_state>(
+        ev, kane::detail::all_speeds<model::state::nu>{});
+    CHECK(relative(fast.M, sums.M) < 1e-14);
+    CHECK(relative(fast.f, sums.f) < 1e-13);
+    Eigen::Matrix<double, int(model::state::nu), 1> ud;
+    for (std::size_t i = 0; i < model::state::nu; ++i) ud(Eigen::Index(i)) = s.ud[i];
+    CHECK(relative(kane::inverse_dynamics<system>(ev).tau, sums.M * ud - sums.f) < 1e-13);
+  }
 }

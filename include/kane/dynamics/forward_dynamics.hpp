@@ -31,7 +31,8 @@ template <class Sys, rates Rates, class Ev>
 forward_result<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
   using S = typename Ev::scalar;
   constexpr std::size_t n = Ev::nu;
-  if constexpr (recursive_form<Sys, Ev> && (n > articulated_above) && std::is_floating_point_v<S>) {
+  if constexpr (recursive_form<Sys, Ev> && !free_joint<Sys, Ev> && (n > articulated_above) &&
+                std::is_floating_point_v<S>) {
     static_assert(system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
     using JF = joint_form_of<Sys, Ev>;
     Eigen::Matrix<S, int(n), 1> ud;

@@ -67,7 +67,9 @@ template <class... P>
 struct own_facts<list<P...>> {
   static constexpr std::array<std::array<entry, 3>, sizeof...(P)> pattern{
       own_pattern<std::remove_cv_t<decltype(P::position)>>()...};
-  static constexpr bool known = (known_vector<std::remove_cv_t<decltype(P::position)>>() && ...);
+  static constexpr bool known =
+      ((known_vector<std::remove_cv_t<decltype(P::position)>>() || translated<P>() != 0) &&
+       ...);  // a free joint's origin: a frame's origin, never read
   static constexpr std::array<std::array<double, 3>, sizeof...(P)> value{known_or_zero(P::position)...};
 };
 

@@ -9,7 +9,9 @@
 //   I_P += E I E^T + (2 t.h' + m |t|^2) 1 - (t h' + h' t) - m t t,  h_P += h' + m t,
 // h' = E h. The column of u_s is the force (I_o k_s, k_s x h), carried up frame
 // by frame (n -> E n + t x E f, f -> E f) and read along each axis above.
-// Cost: O(n) to accumulate, O(depth) per column.
+// A free joint (joint_form.hpp) reads its block from Ic about its origin o: I_o, the
+// force h x (E^T r_j) of a translation along r_j, and m 1; a column arriving at its frame
+// reads n and E f. Cost: O(n) to accumulate, O(depth) per column.
 #pragma once
 
 #include <array>
@@ -59,6 +61,10 @@ KANE_ALWAYS_INLINE void column_up(const BF& bf, v3<S> n, v3<S> f, Out& M, Eigen:
       using R = frame_at<JF, std::size_t(p)>;
       const S x = dot_along<joint_axis_pattern<R>()>(n, joint_axis_in_frame<R, S>());
       M(Eigen::Index(r), s) = x, M(s, Eigen::Index(r)) = x;
+    } else if constexpr (p == t.free) {  // u_1..3: n; u_4..6: E f
+      const v3<S> fo = all_zero(P) ? v3<S>{S(0), S(0), S(0)} : std::get<std::size_t(p)>(bf.e).up(f);
+      const std::array<S, 6> x{n.x, n.y, n.z, fo.x, fo.y, fo.z};
+      for (std::size_t k = 0; k < 6; ++k) M(Eigen::Index(k), s) = x[k], M(s, Eigen::Index(k)) = x[k];
     }
     column_up<JF, std::size_t(p), BF::turned_pattern(F, P)>(bf, n, f, M, s);
   }
@@ -92,7 +98,12 @@ struct root_screws {
         constexpr std::size_t r = std::size_t(t.speed[f]);
         k[r] = to_root<F>(joint_axis_in_frame<F, S>(), ev);
         m[r] = cross3(origin[f], k[r]);
-      }
+      } else if constexpr (int(f) == t.free)  // (b_i, o x b_i), (0, r_i)
+        for (std::size_t i = 0; i < 3; ++i) {
+          const v3<S> unit{S(i == 0), S(i == 1), S(i == 2)};
+          k[i] = to_root<F>(unit, ev), m[i] = cross3(origin[f], k[i]);
+          k[3 + i] = {S(0), S(0), S(0)}, m[3 + i] = unit;
+        }
     });
   }
   // v (in F's components) in the root's
@@ -178,6 +189,20 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
           const S e = dot3(screws.k[std::size_t(r)], nw) + dot3(screws.m[std::size_t(r)], fw);
           M(Eigen::Index(r), Eigen::Index(s)) = e, M(Eigen::Index(s), Eigen::Index(r)) = e;
         }
+      }
+    }
+    if constexpr (int(f) == t.free) {  // I_o; (h x E^T r_j); m 1
+      const auto& e = std::get<f>(bf.e);
+      for (std::size_t a = 0; a < 3; ++a)
+        for (std::size_t b = 0; b < 3; ++b) {
+          M(Eigen::Index(a), Eigen::Index(b)) = x.i[sym_index[a][b]];
+          M(Eigen::Index(3 + a), Eigen::Index(3 + b)) = a == b ? x.mass : S(0);
+        }
+      for (std::size_t j = 0; j < 3; ++j) {
+        const vec hr = cross3(x.h, e.down(vec{S(j == 0), S(j == 1), S(j == 2)}));
+        const std::array<S, 3> y{hr.x, hr.y, hr.z};
+        for (std::size_t a = 0; a < 3; ++a)
+          M(Eigen::Index(a), Eigen::Index(3 + j)) = y[a], M(Eigen::Index(3 + j), Eigen::Index(a)) = y[a];
       }
     }
     if constexpr (t.parent[f] > 0)

@@ -1,14 +1,15 @@
 // When Kane's sums regroup over the tree (crba.hpp, rnea.hpp): the joint form
 // of a system, decided at compile time.
 //
-// Every speed u_r = q_r' turns exactly one edge of the frame tree, a simple rotation by q_r
-// about an axis k_r (other edges turn by constant angles); every point of the system is a chain
-// of vectors, each fixed in a frame, from the root's origin, down one path of the tree. Then for
-// every item below the edge of u_r, w_r = k_r and v_r(P) = k_r x (P - X_r) = k_r x P + X_r x k_r,
-// X_r the point of the chain where its vectors below the edge begin; when all items below the
-// edge share X_r, u_r's partial velocities are one screw S_r = (k_r, X_r x k_r) and the
-// composite-body sums hold. The tables are constexpr arrays of indices: their cost grows like
-// the model, not its square.
+// Every speed u_r = q_c' turns exactly one edge of the frame tree, a simple rotation by q_c
+// about an axis k_r (other edges turn by constant angles), but for at most one free joint below
+// the root (speed_layout.hpp); every point of the system is a chain of vectors, each fixed in a
+// frame, from the root's origin, down one path of the tree (the free joint's origin moves along
+// the root's axes). Then for every item below the edge of u_r, w_r = k_r and
+// v_r(P) = k_r x (P - X_r) = k_r x P + X_r x k_r, X_r the point of the chain where its vectors
+// below the edge begin; when all items below the edge share X_r, u_r's partial velocities are
+// one screw S_r = (k_r, X_r x k_r) and the composite-body sums hold. The tables are constexpr
+// arrays of indices: their cost grows like the model, not its square.
 #pragma once
 
 #include <array>
@@ -19,6 +20,8 @@
 #include "kane/detail/tree.hpp"
 #include "kane/dynamics/bodies.hpp"
 #include "kane/dynamics/detail/tree/fixed_vectors.hpp"
+#include "kane/dynamics/detail/tree/joint_table.hpp"
+#include "kane/dynamics/detail/tree/speed_layout.hpp"
 #include "kane/kinematics/derivative.hpp"
 #include "kane/kinematics/edges.hpp"
 #include "kane/kinematics/point.hpp"
@@ -33,10 +36,13 @@ template <class F>
 struct frame_or_void {
   using type = std::conditional_t<std::is_same_v<F, no_frame>, void, F>;
 };
-// The frame the vector from P's predecessor to P is fixed in (no_frame for an origin).
+// The frame the vector from P's predecessor to P is fixed in (no_frame for an origin), or the
+// frame along whose axes a free joint's coordinates move P (speed_layout.hpp).
 template <class P>
 struct segment_frame {
-  using type = typename fixed_frame_of<std::remove_cv_t<decltype(P::position)>>::type;
+  using V = std::remove_cv_t<decltype(P::position)>;
+  using type = std::conditional_t<translation<V>::coordinate != 0, typename translation<V>::frame,
+                                  typename fixed_frame_of<V>::type>;
 };
 template <class F>
 struct segment_frame<origin<F>> {
@@ -96,76 +102,6 @@ constexpr int edge_kind() {
     return constant_edge<F>() ? 0 : -1;
 }
 
-// What the recursive sums need of the items of Sys, in a tree of root R, with n speeds u_r = q_r'.
-template <std::size_t NF, std::size_t NP, std::size_t NI, std::size_t N>
-struct joint_table {
-  bool holds = false;
-  std::array<int, NF> parent{};       // index of the tree parent (-1: the root)
-  std::array<int, NF> speed{};        // r - 1 of the edge's q_r (-1: a constant edge)
-  std::array<int, NP> from{};         // index of the predecessor point (-1: the origin)
-  std::array<int, NP> segment{};      // frame of the vector to the point (-1: none)
-  std::array<int, NP> attach{};       // the deepest frame of the point's chain (0: the root)
-  std::array<int, NI> item_frame{};   // the frame whose edges move the item (-1: not moved)
-  std::array<int, NI> item_point{};   // its point (-1: none)
-  std::array<int, N> joint_frame{};   // the frame turned by u_r
-  std::array<int, N> joint_point{};   // X_r, a point index (-1: no point below the edge)
-  std::array<int, N> parent_speed{};  // the nearest speed above u_r's edge (-1: none)
-  // Body coordinates: every frame F has an origin o_F (X_r of its edge, its parent's for a
-  // constant edge, O for the root); every point P is located from o_G in G's components
-  // (G = frame[P]); o_F from o_P in P's, an item of F from o_F in F's.
-  bool local = false;
-  std::array<int, NF> origin{};
-  std::array<int, NP> frame{};
-
-  std::array<int, NF> depth{};  // edges from the root
-
-  constexpr bool below(int f, int g) const {  // g is f or an ancestor of f
-    if (f < 0 || g < 0) return false;
-    while (depth[std::size_t(f)] > depth[std::size_t(g)]) f = parent[std::size_t(f)];
-    return f == g;
-  }
-  // The point where the chain of P (its frames down one path through g) first has a vector fixed
-  // at or below frame g (P if none): the vectors at or below g are the chain's last ones.
-  constexpr int joint_of(int p, int g) const {
-    int x = p;
-    for (int c = p; c >= 0 && from[std::size_t(c)] >= 0; c = from[std::size_t(c)]) {
-      const int s = segment[std::size_t(c)];
-      if (s >= 0 && depth[std::size_t(s)] < depth[std::size_t(g)]) break;
-      if (s >= 0) x = from[std::size_t(c)];
-    }
-    return x;
-  }
-};
-
-template <class T>
-constexpr bool local_origins(T& t) {
-  bool ok = true;
-  for (std::size_t f = 1; f < t.origin.size(); ++f) {
-    const int r = t.speed[f];
-    t.origin[f] = r >= 0 ? t.joint_point[std::size_t(r)] : t.origin[std::size_t(t.parent[f])];
-    ok = ok && t.origin[f] >= 0;
-  }
-  for (std::size_t p = 0; p < t.frame.size() && ok; ++p) {
-    const int from = t.from[p], g = t.segment[p];
-    if (from < 0)
-      t.frame[p] = 0;
-    else if (g < 0)
-      t.frame[p] = t.frame[std::size_t(from)];
-    else {
-      ok = from == t.origin[std::size_t(g)] || t.frame[std::size_t(from)] == g;
-      t.frame[p] = g;
-    }
-  }
-  for (std::size_t f = 1; f < t.origin.size() && ok; ++f) {
-    const int o = t.origin[f], op = t.origin[std::size_t(t.parent[f])];
-    ok = o == op || t.frame[std::size_t(o)] == t.parent[f];
-  }
-  for (std::size_t i = 0; i < t.item_frame.size() && ok; ++i) {
-    const int f = t.item_frame[i], p = t.item_point[i];
-    ok = f <= 0 || p < 0 || p == t.origin[std::size_t(f)] || t.frame[std::size_t(p)] == f;
-  }
-  return ok;
-}
 // Facts of the frames, points and items: arrays filled by pack expansions.
 template <class P, class Points>
 constexpr int from_index() {
@@ -173,6 +109,13 @@ constexpr int from_index() {
     return -1;
   else
     return index_in<typename P::from>(Points{});
+}
+template <class P>
+constexpr std::size_t translated() {
+  if constexpr (requires { typename P::fixed_frame; })
+    return 0;
+  else
+    return translation<std::remove_cv_t<decltype(P::position)>>::coordinate;
 }
 template <class P, class R>
 constexpr bool origin_of() {  // an origin fixed in R, or no origin
@@ -202,6 +145,7 @@ template <class... P, class FL, class R>
 struct point_facts<list<P...>, FL, R> {
   static constexpr std::array<int, sizeof...(P)> from{from_index<P, list<P...>>()...};
   static constexpr std::array<bool, sizeof...(P)> origin{origin_of<P, R>()...};
+  static constexpr std::array<std::size_t, sizeof...(P)> moved{translated<P>()...};
   static constexpr std::array<int, sizeof...(P)> segment{
       index_or_none<typename segment_frame<P>::type, FL>()...};
 };
@@ -237,7 +181,9 @@ struct joint_form {
 
   static constexpr auto table = [] {
     joint_table<nf, np, ni, n> t;
-    if constexpr (!fixed_segments || !std::is_same_v<Sp, qdot_speeds<n>>)
+    constexpr std::size_t nq = Sp::rows;
+    constexpr auto layout = layout_of<Sp, R, frame_list, nq>::value;
+    if constexpr (!fixed_segments || !layout.holds)
       return t;
     else {
       using frames = frame_facts<frame_list>;
@@ -245,25 +191,36 @@ struct joint_form {
       using its = item_facts<items, all_points, frame_list>;
       bool ok = true;
       std::array<int, n> edges{};
+      t.free = layout.free;
       for (std::size_t i = 0; i < nf; ++i) {
         const int kind = frames::kind[i];
         t.parent[i] = frames::parent[i];
         t.depth[i] = i == 0 ? 0 : t.depth[std::size_t(t.parent[i])] + 1;
-        t.speed[i] = kind - 1;
-        ok = ok && kind >= 0 && kind <= int(n) && (i == 0) == (t.parent[i] < 0);
-        if (kind > 0) ++edges[std::size_t(kind - 1)], t.joint_frame[std::size_t(kind - 1)] = int(i);
+        const int r = kind > 0 && kind <= int(nq) ? layout.rate[std::size_t(kind - 1)] : -1;
+        t.speed[i] = r;
+        ok = ok && (i == 0) == (t.parent[i] < 0);
+        if (int(i) == t.free)
+          for (std::size_t k = 0; k < 6; ++k) ++edges[k], t.joint_frame[k] = int(i);
+        else
+          ok = ok && kind >= 0 && (kind == 0 || r >= 0);
+        if (r >= 0) ++edges[std::size_t(r)], t.joint_frame[std::size_t(r)] = int(i);
       }
       for (int e : edges) ok = ok && e == 1;
-      for (std::size_t i = 0; i < np; ++i) {  // one origin, fixed in R
+      for (std::size_t i = 0; i < np; ++i) {  // one origin, fixed in R; the free joint's origin
         t.from[i] = pts::from[i], t.segment[i] = pts::segment[i];
         ok = ok && pts::origin[i] && (t.from[i] >= 0 || i == 0);
+        if (pts::moved[i] != 0) {
+          ok = ok && t.free >= 0 && t.free_point < 0 && pts::moved[i] == layout.position && t.from[i] == 0 &&
+               t.segment[i] == 0;
+          t.free_point = int(i);
+        }
       }
       if (!ok) return t;
       // the frames of each chain down one path: attach is the deepest
       for (std::size_t p = 0; p < np; ++p) {
         const int f = t.from[p] < 0 ? 0 : t.attach[std::size_t(t.from[p])], g = t.segment[p];
         ok = ok && (g < 0 || t.below(g, f));
-        t.attach[p] = g < 0 ? f : g;
+        t.attach[p] = int(p) == t.free_point ? t.free : g < 0 ? f : g;
       }
       for (std::size_t i = 0; i < ni; ++i) {
         const int p = its::point[i], f = its::frame[i];
@@ -285,9 +242,10 @@ struct joint_form {
         }
         t.joint_point[r] = x;
         int a = t.parent[std::size_t(g)];
-        while (a >= 0 && t.speed[std::size_t(a)] < 0) a = t.parent[std::size_t(a)];
-        t.parent_speed[r] = a < 0 ? -1 : t.speed[std::size_t(a)];
+        while (a >= 0 && t.speed[std::size_t(a)] < 0 && a != t.free) a = t.parent[std::size_t(a)];
+        t.parent_speed[r] = g == t.free ? int(r) - 1 : a < 0 ? -1 : a == t.free ? 5 : t.speed[std::size_t(a)];
       }
+      if (t.free >= 0) ok = ok && t.free_point >= 0 && t.joint_point[0] == t.free_point;
       t.holds = ok;
       if (ok) t.local = local_origins(t);
       return t;

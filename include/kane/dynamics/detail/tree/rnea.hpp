@@ -8,6 +8,8 @@
 // u (E^T w_P) x k, a_F = E^T (a_P + alpha_P x t + w_P x (w_P x t)), a_O = -g
 // (gravity as an acceleration of the base); per item f = m a_C - R,
 // n = I alpha + w x I w - T + c x f about o_F; inward: f_P += E f, n_P += E n + t x E f.
+// A free joint (joint_form.hpp) starts the pass with w = u_1..3, alpha = u_1..3' and
+// a = E^T (a_O + u_4..6') and ends it with tau_1..3 = n, tau_4..6 = E f.
 // At u' = 0 (Rest) tau = -f. Cost: O(n).
 #pragma once
 
@@ -100,7 +102,13 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
     constexpr auto O = BF::offset_pattern(g);
     const auto& e = std::get<g>(bf.e);
     const vec& o = bf.offset[g];
-    if constexpr (p == 0) {  // the root does not turn: a = E^T a_O, w = u k, alpha = u' k
+    if constexpr (int(g) == t.free) {  // w = u_1..3, alpha = u_1..3', a = E^T (a_O + u_4..6')
+      vec ao = a[0];
+      if constexpr (!Rest) ao = ao + vec{joint_rate<2>(ev, 3), joint_rate<2>(ev, 4), joint_rate<2>(ev, 5)};
+      a[g] = e.down(ao);
+      w[g] = {joint_rate<1>(ev, 0), joint_rate<1>(ev, 1), joint_rate<1>(ev, 2)};
+      alpha[g] = Rest ? zero : vec{joint_rate<2>(ev, 0), joint_rate<2>(ev, 1), joint_rate<2>(ev, 2)};
+    } else if constexpr (p == 0) {  // the root does not turn: a = E^T a_O, w = u k, alpha = u' k
       a[g] = e.template down_along<G>(a[0]);
       if constexpr (r < 0)
         w[g] = zero, alpha[g] = zero;
@@ -185,6 +193,10 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
       using F = frame_at<JF, g>;
       const S x = dot_along<joint_axis_pattern<F>()>(n[g], joint_axis_in_frame<F, S>());
       tau(Eigen::Index(r)) = Negated ? -x : x;
+    } else if constexpr (int(g) == t.free) {  // n about the origin in F's components, f in the root's
+      const vec fo = std::get<g>(bf.e).up(f[g]);
+      const std::array<S, 6> x{n[g].x, n[g].y, n[g].z, fo.x, fo.y, fo.z};
+      for (std::size_t k = 0; k < 6; ++k) tau(Eigen::Index(k)) = Negated ? -x[k] : x[k];
     }
     if constexpr (p > 0) {
       constexpr auto O = BF::offset_pattern(g);
