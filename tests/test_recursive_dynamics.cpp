@@ -230,6 +230,31 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("the tree with its joints' rates in another order as speeds: M and f regrouped equal Kane's sums",
+          "[recursive]") {
+  using speeds =
+      kane::speeds<kane::dt(tree::q3{}), kane::dt(tree::q1{}), kane::dt(tree::q4{}), kane::dt(tree::q2{})>;
+  using evaluator =
+      kane::evaluator<tree::state, kane::frames<tree::T, tree::D>, kane::level::acceleration, speeds>;
+  static_assert(kane::detail::recursive_form<tree::system, evaluator> &&
+                !kane::detail::analytical_derivatives<tree::system, evaluator>());
+  std::mt19937 rng(12);
+  for (int k = 0; k < 10; ++k) {
+    const auto s = random_state<tree::state>(rng);
+    evaluator ev;
+    ev.update(s);
+    const auto fast = kane::mass_matrix_and_forcing<tree::system>(ev);
+    const auto sums = kane::detail::equations_along<tree::system, kane::detail::rates::of_state>(
+        ev, kane::detail::all_speeds<4>{});
+    REQUIRE(fast.status == kane::solve_status::ok);
+    CHECK((fast.M - sums.M).cwiseAbs().maxCoeff() < 1e-13);
+    CHECK((fast.f - sums.f).cwiseAbs().maxCoeff() < 1e-12);
+    const Eigen::Map<const Eigen::Matrix<double, 4, 1>> ud(s.ud.data());
+    CHECK((kane::inverse_dynamics<tree::system>(ev).tau - (sums.M * ud - sums.f)).cwiseAbs().maxCoeff() <
+          1e-12);
+  }
+}
+
 TEST_CASE("21 links: u' by articulated bodies equals M^-1 f by composite bodies and inward sums",
           "[recursive]") {
   std::mt19937 rng(13);
