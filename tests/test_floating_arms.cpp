@@ -1,7 +1,8 @@
 // A floating base on Euler parameters with body rates carrying two spatial arms (floating_arms.hpp):
 // with eight-link arms (22 speeds, a free joint), kane::linearize against central differences of
 // kane::motion (1e-7 relative) and against jets of one direction carried through kane::motion
-// (1e-10); kane::inverse_dynamics on Kane's sums (rates in N's components, not a free joint)
+// (1e-10), M against the Hessian of the kinetic energy and x' against the conservation of energy;
+// kane::inverse_dynamics on Kane's sums (rates in N's components, not a free joint)
 // against M u' - f.
 #include <catch2/catch.hpp>
 
@@ -96,6 +97,60 @@ TEST_CASE("linearize: a floating base with two eight-link arms against central d
     for (std::size_t i = 0; i < nx; ++i) along(Eigen::Index(i)) = jdx[i].part(0);
     CHECK(relative(A::vector_x(lin.A * dir.head<int(nx)>() + lin.B * dir.tail<int(nr)>()), along) < 1e-10);
   }
+}
+
+TEST_CASE(
+    "a floating base with two eight-link arms: M is the Hessian of T, and T + V is conserved without inputs",
+    "[dynamics]") {
+  using model = fa::model<8>;
+  using A = arms<model>;
+  constexpr std::size_t nq = A::nq, nu = A::nu, nx = A::nx;
+  auto s = sample_arms<model::state>(7);
+  s.r = {0.0, 0.0, 0.0};
+  model::evaluator ev;
+  ev.update(s);
+  const auto e = kane::mass_matrix_and_forcing<model::system>(ev);
+  REQUIRE(e.status == kane::solve_status::ok);
+  // T at the speeds v: M_ij = T(e_i + e_j) - T(e_i) - T(e_j)
+  const auto energy = [&](const auto& v) {
+    model::state at = s;
+    at.u = v;
+    model::evaluator x;
+    x.update(at);
+    return kane::kinetic_energy<model::system>(x);
+  };
+  Eigen::Matrix<double, int(nu), int(nu)> hessian;
+  std::array<double, nu> single{};
+  for (std::size_t i = 0; i < nu; ++i) {
+    std::array<double, nu> v{};
+    v[i] = 1.0;
+    single[i] = energy(v);
+  }
+  for (std::size_t i = 0; i < nu; ++i)
+    for (std::size_t j = 0; j < nu; ++j) {
+      std::array<double, nu> v{};
+      v[i] += 1.0, v[j] += 1.0;
+      hessian(Eigen::Index(i), Eigen::Index(j)) = i == j ? 2 * single[i] : energy(v) - single[i] - single[j];
+    }
+  CHECK(relative(e.M, hessian) < 1e-13);
+
+  // d(T + V)/dt along x' of kane::motion, by a central difference along x'
+  std::array<double, nx> x{};
+  for (std::size_t i = 0; i < nq; ++i) x[i] = s.q[i];
+  for (std::size_t i = 0; i < nu; ++i) x[nq + i] = s.u[i];
+  const A::vector_x rate = A::rates(s, x, s.r);
+  const auto total = [&](double h) {
+    model::state at = s;
+    for (std::size_t i = 0; i < nq; ++i) at.q[i] = x[i] + h * rate(Eigen::Index(i));
+    for (std::size_t i = 0; i < nu; ++i) at.u[i] = x[nq + i] + h * rate(Eigen::Index(nq + i));
+    model::evaluator y;
+    y.update(at);
+    return kane::kinetic_energy<model::system>(y) + kane::potential_energy<model::system>(y);
+  };
+  const double h = 1e-5, power = (total(h) - total(-h)) / (2 * h);
+  Eigen::Matrix<double, int(nu), 1> u;
+  for (std::size_t i = 0; i < nu; ++i) u(Eigen::Index(i)) = s.u[i];
+  CHECK(std::abs(power) < 1e-7 * (1 + std::abs(u.dot(e.f))));
 }
 
 TEST_CASE("inverse dynamics on Kane's sums: tau = M u' - f, zero at u' = M^-1 f", "[dynamics]") {
