@@ -91,23 +91,34 @@ forward_dynamics_derivatives(const Ev& ev) {
   constexpr std::size_t n = Ev::nu;
   forward_derivatives<S, n> out;
   if constexpr (detail::analytical_derivatives<Sys, Ev>()) {
-    // u' from forward dynamics; one pass gives M and dtau/dx at u'; du'/dx = -M^-1 dtau/dx by plain
-    // loops for a few speeds, by articulated bodies above.
-    const auto fd = forward_dynamics<Sys>(ev);
-    out.ud = fd.ud, out.status = fd.status;
-    if (out.status == solve_status::ok) {
-      using JF = detail::joint_form_of<Sys, Ev>;
+    // u' first; one pass gives M and dtau/dx at u'; du'/dx = -M^-1 dtau/dx by plain loops for a few
+    // speeds, by articulated bodies above, which also give u' = M^-1 f.
+    using JF = detail::joint_form_of<Sys, Ev>;
+    if constexpr (n <= detail::articulated_above) {
+      const auto fd = forward_dynamics<Sys>(ev);
+      out.ud = fd.ud, out.status = fd.status;
+      if (out.status == solve_status::ok) {
+        const detail::body_frames<JF, Ev> bf(ev);
+        detail::tree_partials<JF, Sys, Ev> pass(bf, ev);
+        Eigen::Matrix<S, int(n), int(n)> m;
+        Eigen::Matrix<S, int(n), 1> tau;
+        pass.outward(ev, out.ud);
+        pass.template inward<true>(tau, m, out.dud_dq, out.dud_du);
+        if (!detail::solve_negated(m, out.dud_dq, out.dud_du)) out.status = solve_status::singular;
+      }
+    } else {
       const detail::body_frames<JF, Ev> bf(ev);
       detail::tree_partials<JF, Sys, Ev> pass(bf, ev);
-      Eigen::Matrix<S, int(n), int(n)> m;
-      Eigen::Matrix<S, int(n), 1> tau;
-      pass.outward(ev, out.ud);
-      pass.template inward<n <= detail::articulated_above>(tau, m, out.dud_dq, out.dud_du);
-      if constexpr (n <= detail::articulated_above) {
-        if (!detail::solve_negated(m, out.dud_dq, out.dud_du)) out.status = solve_status::singular;
-      } else {
-        const detail::articulated_solve<JF, S> bodies(pass.own, pass.screw);
-        if (!bodies.ok()) out.status = solve_status::singular;
+      const detail::articulated_solve<JF, S> bodies(pass.own, pass.screw);
+      out.status = ev.status();
+      if (out.status == solve_status::ok && !bodies.ok()) out.status = solve_status::singular;
+      if (out.status == solve_status::ok) {
+        detail::joint_forces<detail::rates::at_rest, JF, Sys>(bf, ev, out.ud);  // -f
+        bodies.solve_negated(out.ud);
+        Eigen::Matrix<S, int(n), int(n)> m;
+        Eigen::Matrix<S, int(n), 1> tau;
+        pass.outward(ev, out.ud);
+        pass.template inward<false>(tau, m, out.dud_dq, out.dud_du);
         bodies.solve_negated(out.dud_dq), bodies.solve_negated(out.dud_du);
       }
     }
