@@ -199,10 +199,7 @@ bool solve_negated(const Eigen::Matrix<S, N, N>& m, X&... x) {
       for (std::size_t k = 0; k < V; ++k) b(i, Eigen::Index(c0 + k)) = -y[std::size_t(i)][k];
   };
   const auto solve = [&](auto& b) {
-    constexpr std::size_t W = packet_width<S>;
-    const auto cols = std::size_t(b.cols()), full = cols - cols % W;
-    for (std::size_t c0 = 0; c0 < full; c0 += W) columns(b, c0, index_c<W>{});
-    for (std::size_t c0 = full; c0 < cols; ++c0) columns(b, c0, index_c<1>{});
+    in_packets<packet_width<S>>(0, std::size_t(b.cols()), [&](std::size_t c0, auto v) { columns(b, c0, v); });
   };
   (solve(x), ...);
   return true;

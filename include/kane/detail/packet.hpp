@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/list.hpp"
 
 namespace kane::detail {
 
@@ -67,6 +68,15 @@ KANE_ALWAYS_INLINE void store_packet(const packet<S, V>& p, S* to) {
     std::memcpy(to, &p, sizeof(p));
   else
     for (std::size_t k = 0; k < V; ++k) to[k] = p[k];
+}
+
+// f(i, index_c<V>{}) for i from begin to end in steps of V: packets of W, then what is left in packets
+// of W / 2, W / 4, ..., 1 (at most one of each)
+template <std::size_t W, class F>
+KANE_ALWAYS_INLINE void in_packets(std::size_t begin, std::size_t end, F&& f) {
+  std::size_t i = begin;
+  for (; i + W <= end; i += W) f(i, index_c<W>{});
+  if constexpr (W > 1) in_packets<W / 2>(i, end, f);
 }
 
 }  // namespace kane::detail

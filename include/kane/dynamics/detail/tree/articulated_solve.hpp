@@ -3,7 +3,7 @@
 // items: U = I^A S, D = S.U, I^A of the parent += I^A - U U^T / D. Then for each column b,
 // inward: u_r = b_r - S.p, p of the parent += p + U u_r / D; outward from a_O = 0:
 // x_r = (u_r - U.a') / D, a = a' + S x_r. Cost: O(n) a column, against O(n^2) for a
-// factored M; the columns go W at a time, each number a packet of W.
+// factored M; the columns go W at a time, each number a packet of W, the rest in narrower packets.
 #pragma once
 
 #include <array>
@@ -92,12 +92,11 @@ class articulated_solve {
   // M is positive definite.
   bool ok() const { return ok_; }
 
-  // x = -M^-1 x, W columns at a time
+  // x = -M^-1 x, W columns at a time, then W / 2, ...
   template <class X>
   void solve_negated(X& x) const {
-    const auto cols = std::size_t(x.cols()), full = cols - cols % W;
-    for (std::size_t c0 = 0; c0 < full; c0 += W) columns<W>(x, c0);
-    for (std::size_t c0 = full; c0 < cols; ++c0) columns<1>(x, c0);
+    in_packets<W>(0, std::size_t(x.cols()),
+                  [&](std::size_t c0, auto v) { columns<decltype(v)::value>(x, c0); });
   }
 
  private:

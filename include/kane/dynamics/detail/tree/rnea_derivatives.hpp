@@ -207,12 +207,25 @@ struct tree_partials {
       store_packet<V>(sum<6, V>(sc, l, cq), q + l);
       store_packet<V>(sum<6, V>(sc, l, cu), u + l);
     };
-    std::size_t k = r;
-    for (; k + W <= n; k += W) below(k, index_c<W>{}, pq, pu, pm);
-    for (; k < n; ++k) below(k, index_c<1>{}, aq, au, am);
-    std::size_t l = 0;
-    for (; l + W <= r; l += W) above(l, index_c<W>{}, pfq, pfu);
-    for (; l < r; ++l) above(l, index_c<1>{}, fqa, fua);
+    // the coefficients for packets of V: spread above, as numbers for 1, spread here for the rest
+    const auto of = [&](auto v, const auto& wide, const auto& one) KANE_ALWAYS_INLINE_LAMBDA {
+      constexpr std::size_t V = decltype(v)::value;
+      if constexpr (V == W)
+        return wide;
+      else if constexpr (V == 1)
+        return one;
+      else {
+        std::array<packet<S, V>, std::tuple_size_v<std::remove_cvref_t<decltype(one)>>> p;
+        for (std::size_t i = 0; i < p.size(); ++i) p[i] = splat<V>(one[i]);
+        return p;
+      }
+    };
+    in_packets<W>(r, n, [&](std::size_t k, auto v) KANE_ALWAYS_INLINE_LAMBDA {
+      below(k, v, of(v, pq, aq), of(v, pu, au), of(v, pm, am));
+    });
+    in_packets<W>(0, r, [&](std::size_t l, auto v) KANE_ALWAYS_INLINE_LAMBDA {
+      above(l, v, of(v, pfq, fqa), of(v, pfu, fua));
+    });
   }
 };
 
