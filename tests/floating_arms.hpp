@@ -4,7 +4,9 @@
 // along b3 and a torque pair at each shoulder.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+#include <random>
 #include <type_traits>
 
 #include <kane/kane.hpp>
@@ -80,4 +82,19 @@ struct model {
   using evaluator = kane::system_evaluator<system, speeds>;
   using inputs = kane::inputs<kane::r<1>, kane::r<2>, kane::r<3>>;
 };
+
+// A state: unit Euler parameters, q, u and u' in -1..1, a thrust and two shoulder torques.
+template <class State>
+State sample(unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(-1.0, 1.0);
+  State s;
+  for (auto& x : s.q) x = d(rng);
+  for (auto& x : s.u) x = d(rng);
+  for (auto& x : s.ud) x = d(rng);
+  const double norm = std::sqrt(s.q[0] * s.q[0] + s.q[1] * s.q[1] + s.q[2] * s.q[2] + s.q[3] * s.q[3]);
+  for (std::size_t i = 0; i < 4; ++i) s.q[i] /= norm;
+  s.r = {70.0, 0.4, -0.3};
+  return s;
+}
 }  // namespace floating_arms

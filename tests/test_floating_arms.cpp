@@ -19,20 +19,6 @@
 namespace {
 namespace fa = floating_arms;
 
-template <class State>
-State sample_arms(unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> d(-1.0, 1.0);
-  State s;
-  for (auto& x : s.q) x = d(rng);
-  for (auto& x : s.u) x = d(rng);
-  for (auto& x : s.ud) x = d(rng);
-  const double norm = std::sqrt(s.q[0] * s.q[0] + s.q[1] * s.q[1] + s.q[2] * s.q[2] + s.q[3] * s.q[3]);
-  for (std::size_t i = 0; i < 4; ++i) s.q[i] /= norm;
-  s.r = {70.0, 0.4, -0.3};
-  return s;
-}
-
 template <class Model>
 struct arms {
   using state = typename Model::state;
@@ -56,7 +42,7 @@ TEST_CASE("linearize: a floating base with two eight-link arms against central d
   using A = arms<model>;
   constexpr std::size_t nq = A::nq, nu = A::nu, nx = A::nx, nr = A::nr;
   STATIC_REQUIRE(nu == 22);
-  const auto s = sample_arms<model::state>(5);
+  const auto s = fa::sample<model::state>(5);
   const auto lin = kane::linearize<model::system, model::evaluator, model::inputs>(s);
   REQUIRE(lin.status == kane::solve_status::ok);
   std::array<double, nx> x{};
@@ -105,7 +91,7 @@ TEST_CASE(
   using model = fa::model<8>;
   using A = arms<model>;
   constexpr std::size_t nq = A::nq, nu = A::nu, nx = A::nx;
-  auto s = sample_arms<model::state>(7);
+  auto s = fa::sample<model::state>(7);
   s.r = {0.0, 0.0, 0.0};
   model::evaluator ev;
   ev.update(s);
@@ -163,7 +149,7 @@ TEST_CASE("inverse dynamics on Kane's sums: tau = M u' - f, zero at u' = M^-1 f"
   using evaluator = kane::system_evaluator<system, speeds>;
   static_assert(!kane::detail::recursive_form<system, evaluator>);
   constexpr std::size_t nu = evaluator::nu;
-  auto s = sample_arms<kane::state_of<system, speeds>>(11);
+  auto s = fa::sample<kane::state_of<system, speeds>>(11);
   evaluator ev;
   ev.update(s);
   const auto e = kane::mass_matrix_and_forcing<system>(ev);

@@ -230,6 +230,25 @@ TEST_CASE(
   }
 }
 
+namespace {
+// M, f and inverse dynamics by the recursive passes against Kane's sums at the state s (relative)
+template <class Sys, class Ev, class State>
+void against_sums(const State& s, double tolerance_m, double tolerance_f) {
+  constexpr std::size_t n = Ev::nu;
+  Ev ev;
+  ev.update(s);
+  const auto fast = kane::mass_matrix_and_forcing<Sys>(ev);
+  REQUIRE(fast.status == kane::solve_status::ok);
+  const auto sums =
+      kane::detail::equations_along<Sys, kane::detail::rates::of_state>(ev, kane::detail::all_speeds<n>{});
+  CHECK(relative(fast.M, sums.M) < tolerance_m);
+  CHECK(relative(fast.f, sums.f) < tolerance_f);
+  Eigen::Matrix<double, int(n), 1> ud;
+  for (std::size_t i = 0; i < n; ++i) ud(Eigen::Index(i)) = s.ud[i];
+  CHECK(relative(kane::inverse_dynamics<Sys>(ev).tau, sums.M * ud - sums.f) < tolerance_f);
+}
+}  // namespace
+
 TEST_CASE("the tree with its joints' rates in another order as speeds: M and f regrouped equal Kane's sums",
           "[recursive]") {
   using speeds =
@@ -239,20 +258,8 @@ TEST_CASE("the tree with its joints' rates in another order as speeds: M and f r
   static_assert(kane::detail::recursive_form<tree::system, evaluator> &&
                 !kane::detail::analytical_derivatives<tree::system, evaluator>());
   std::mt19937 rng(12);
-  for (int k = 0; k < 10; ++k) {
-    const auto s = random_state<tree::state>(rng);
-    evaluator ev;
-    ev.update(s);
-    const auto fast = kane::mass_matrix_and_forcing<tree::system>(ev);
-    const auto sums = kane::detail::equations_along<tree::system, kane::detail::rates::of_state>(
-        ev, kane::detail::all_speeds<4>{});
-    REQUIRE(fast.status == kane::solve_status::ok);
-    CHECK((fast.M - sums.M).cwiseAbs().maxCoeff() < 1e-13);
-    CHECK((fast.f - sums.f).cwiseAbs().maxCoeff() < 1e-12);
-    const Eigen::Map<const Eigen::Matrix<double, 4, 1>> ud(s.ud.data());
-    CHECK((kane::inverse_dynamics<tree::system>(ev).tau - (sums.M * ud - sums.f)).cwiseAbs().maxCoeff() <
-          1e-12);
-  }
+  for (int k = 0; k < 10; ++k)
+    against_sums<tree::system, evaluator>(random_state<tree::state>(rng), 1e-13, 1e-12);
 }
 
 TEST_CASE("21 links: u' by articulated bodies equals M^-1 f by composite bodies and inward sums",
@@ -384,23 +391,7 @@ TEST_CASE("dynamics derivatives: a speed that moves no mass gives singular and N
   CHECK(std::abs(id.M(3, 3)) < 1e-15);
 }
 
-namespace {
 namespace fa = floating_arms;
-// a state of the floating base: unit Euler parameters, random rates and accelerations
-template <class State>
-State floating_state(unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> d(-1.0, 1.0);
-  State s;
-  for (auto& x : s.q) x = d(rng);
-  for (auto& x : s.u) x = d(rng);
-  for (auto& x : s.ud) x = d(rng);
-  const double norm = std::sqrt(s.q[0] * s.q[0] + s.q[1] * s.q[1] + s.q[2] * s.q[2] + s.q[3] * s.q[3]);
-  for (std::size_t i = 0; i < 4; ++i) s.q[i] /= norm;
-  s.r = {70.0, 0.4, -0.3};
-  return s;
-}
-}  // namespace
 
 TEMPLATE_TEST_CASE_SIG("the recursive passes with a free joint equal Kane's sums", "[recursive]",
                        ((std::size_t Links), Links), 1, 2) {
@@ -409,18 +400,6 @@ TEMPLATE_TEST_CASE_SIG("the recursive passes with a free joint equal Kane's sums
   using evaluator = typename model::evaluator;
   static_assert(kane::detail::recursive_form<system, evaluator> &&
                 kane::detail::free_joint<system, evaluator>);
-  for (unsigned seed : {3u, 8u}) {
-    const auto s = floating_state<typename model::state>(seed);
-    evaluator ev;
-    ev.update(s);
-    const auto fast = kane::mass_matrix_and_forcing<system>(ev);
-    REQUIRE(fast.status == kane::solve_status::ok);
-    const auto sums = kane::detail::equations_along<system, kane::detail::rates::of_state>(
-        ev, kane::detail::all_speeds<model::state::nu>{});
-    CHECK(relative(fast.M, sums.M) < 1e-14);
-    CHECK(relative(fast.f, sums.f) < 1e-13);
-    Eigen::Matrix<double, int(model::state::nu), 1> ud;
-    for (std::size_t i = 0; i < model::state::nu; ++i) ud(Eigen::Index(i)) = s.ud[i];
-    CHECK(relative(kane::inverse_dynamics<system>(ev).tau, sums.M * ud - sums.f) < 1e-13);
-  }
+  for (unsigned seed : {3u, 8u})
+    against_sums<system, evaluator>(fa::sample<typename model::state>(seed), 1e-14, 1e-13);
 }
