@@ -22,6 +22,7 @@
 // case cut_names_no_mass: kane: cut<P, Items...> names no body .by its frame. or particle .by its point. of the system
 // case derivatives_of_world_load: analytical_derivatives_need_loads_fixed_in_their_bodies<kane::force<.*Bo
 // case derivatives_without_joint_form: analytical_derivatives_need_a_tree_of_simple_rotations_with_u_equal_to_q_dot<
+// case derivatives_of_reordered_rates: analytical_derivatives_need_a_tree_of_simple_rotations_with_u_equal_to_q_dot<
 // case cut_of_a_vector: kane: cut<P, Items...> takes the frames of the part's bodies and the points of its particles
 #include <array>
 
@@ -202,9 +203,14 @@ using steered = kane::system<body, tip, push, kane::gravity<-p<8> * e<N, 3>>>;  
 #else
 using steered = kane::system<body, tip, kane::force<Bo, p<7> * e<B, 1>>, kane::gravity<-p<8> * e<N, 3>>>;
 #endif
+#ifdef KANE_CASE_derivatives_of_reordered_rates
+using steering_speeds = kane::speeds<kane::dt(q<2>{}), kane::dt(q<1>{})>;  // the recursive passes, u != q'
+#else
+using steering_speeds = kane::qdot_speeds<2>;
+#endif
 double derivative() {
   kane::state<double, 2, 2, 9> s;
-  kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, kane::qdot_speeds<2>> ev;
+  kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, steering_speeds> ev;
   ev.update(s);
 #ifdef KANE_CASE_derivatives_without_joint_form
   return kane::forward_dynamics_derivatives<rolling_sys>(ev).dud_dq(0, 0);  // Bv is known by its velocity
