@@ -192,6 +192,7 @@ struct joint_form {
       bool ok = true;
       std::array<int, n> edges{};
       t.free = layout.free;
+      int free_point = -1;  // the free joint's origin
       for (std::size_t i = 0; i < nf; ++i) {
         const int kind = frames::kind[i];
         t.parent[i] = frames::parent[i];
@@ -210,9 +211,9 @@ struct joint_form {
         t.from[i] = pts::from[i], t.segment[i] = pts::segment[i];
         ok = ok && pts::origin[i] && (t.from[i] >= 0 || i == 0);
         if (pts::moved[i] != 0) {
-          ok = ok && t.free >= 0 && t.free_point < 0 && pts::moved[i] == layout.position && t.from[i] == 0 &&
+          ok = ok && t.free >= 0 && free_point < 0 && pts::moved[i] == layout.position && t.from[i] == 0 &&
                t.segment[i] == 0;
-          t.free_point = int(i);
+          free_point = int(i);
         }
       }
       if (!ok) return t;
@@ -220,7 +221,7 @@ struct joint_form {
       for (std::size_t p = 0; p < np; ++p) {
         const int f = t.from[p] < 0 ? 0 : t.attach[std::size_t(t.from[p])], g = t.segment[p];
         ok = ok && (g < 0 || t.below(g, f));
-        t.attach[p] = int(p) == t.free_point ? t.free : g < 0 ? f : g;
+        t.attach[p] = int(p) == free_point ? t.free : g < 0 ? f : g;
       }
       for (std::size_t i = 0; i < ni; ++i) {
         const int p = its::point[i], f = its::frame[i];
@@ -245,7 +246,7 @@ struct joint_form {
         while (a >= 0 && t.speed[std::size_t(a)] < 0 && a != t.free) a = t.parent[std::size_t(a)];
         t.parent_speed[r] = g == t.free ? int(r) - 1 : a < 0 ? -1 : a == t.free ? 5 : t.speed[std::size_t(a)];
       }
-      if (t.free >= 0) ok = ok && t.free_point >= 0 && t.joint_point[0] == t.free_point;
+      if (t.free >= 0) ok = ok && free_point >= 0 && t.joint_point[0] == free_point;
       t.holds = ok;
       if (ok) t.local = local_origins(t);
       return t;

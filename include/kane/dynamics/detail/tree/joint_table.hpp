@@ -25,8 +25,8 @@ struct joint_table {
   std::array<int, N> joint_point{};   // X_r, a point index (-1: no point below the edge)
   std::array<int, N> parent_speed{};  // the nearest speed above u_r's edge (-1: none)
   // A free joint (speed_layout.hpp): its frame, a child of the root, moved by u_1..u_6 about its
-  // origin, the point at position_coordinates (-1: none). Its edge's speed is -1.
-  int free = -1, free_point = -1;
+  // origin X_1, the point at position_coordinates (-1: none). Its edge's speed is -1.
+  int free = -1;
   // Body coordinates: every frame F has an origin o_F (X_r of its edge, its parent's for a
   // constant edge, O for the root); every point P is located from o_G in G's components
   // (G = frame[P]); o_F from o_P in P's, an item of F from o_F in F's.
