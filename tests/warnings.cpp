@@ -1,6 +1,6 @@
-// The whole public API instantiated in float and double, checked with -fsyntax-only under
+// The whole public API instantiated in float or double, checked with -fsyntax-only under
 //   -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion -Wold-style-cast -Werror
-// by the suite's compiler and by clang++ when found (tests warnings.<compiler>).
+// by the suite's compiler in float and by clang++ in double when found (tests warnings.<compiler>).
 // Nothing runs: the explicit instantiations at the end instantiate every body.
 #include <array>
 #include <cstddef>

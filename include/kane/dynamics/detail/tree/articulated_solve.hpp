@@ -139,7 +139,7 @@ class articulated_solve {
       const int r = t.speed[g];
       if (r >= 0) {
         const auto j = std::size_t(r);
-        pack<V> b;
+        pack<V> b{};
         for (std::size_t k = 0; k < V; ++k) b[k] = x(Eigen::Index(j), Eigen::Index(c0 + k));
         ur[j] = -b - dot<V>(of<V>(s_, sw_, j), c);
         add_times<V>(c, of<V>(ud_, uw_, j), ur[j]);
