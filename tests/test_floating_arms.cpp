@@ -62,8 +62,9 @@ TEST_CASE("linearize: a floating base with two eight-link arms against central d
   CHECK(relative(lin.A, diff.leftCols<int(nx)>()) < 1e-7);
   CHECK(relative(lin.B, diff.rightCols<int(nr)>()) < 1e-7);
 
-  // one direction d of (x, r) on jets through kane::motion: u' = M^-1 f with M and f on jets
-  using J = kane::jet<double, 1>;
+  // one direction d of (x, r) on jets through kane::motion: u' = M^-1 f with M and f on jets (jets of
+  // kane::linearize's width, so that both share their evaluator)
+  using J = kane::jet<double, kane::detail::linearize_batch>;
   using jet_evaluator = kane::system_evaluator<model::system, model::speeds, kane::level::acceleration,
                                                kane::state_of<model::system, model::speeds, J>>;
   std::mt19937 rng(9);
@@ -71,7 +72,7 @@ TEST_CASE("linearize: a floating base with two eight-link arms against central d
   for (int k = 0; k < 2; ++k) {
     Eigen::Matrix<double, int(nx + nr), 1> dir;
     for (auto& v : dir) v = d(rng);
-    auto js = kane::detail::lift<1>(s);
+    auto js = kane::detail::lift<kane::detail::linearize_batch>(s);
     std::array<J, nx> jx, jdx;
     for (std::size_t i = 0; i < nx; ++i) jx[i] = x[i] + J::variable(0.0, 0) * dir(Eigen::Index(i));
     kane::motion<model::system, jet_evaluator> rhs(js);

@@ -393,13 +393,13 @@ TEST_CASE("dynamics derivatives: a speed that moves no mass gives singular and N
 
 namespace fa = floating_arms;
 
-TEMPLATE_TEST_CASE_SIG("the recursive passes with a free joint equal Kane's sums", "[recursive]",
-                       ((std::size_t Links), Links), 1, 2) {
-  using model = fa::model<Links>;
-  using system = typename model::system;
-  using evaluator = typename model::evaluator;
+TEST_CASE("the recursive passes with a free joint carrying two two-link arms equal Kane's sums",
+          "[recursive]") {
+  using model = fa::model<2>;
+  using system = model::system;
+  using evaluator = model::evaluator;
   static_assert(kane::detail::recursive_form<system, evaluator> &&
                 kane::detail::free_joint<system, evaluator>);
   for (unsigned seed : {3u, 8u})
-    against_sums<system, evaluator>(fa::sample<typename model::state>(seed), 1e-14, 1e-13);
+    against_sums<system, evaluator>(fa::sample<model::state>(seed), 1e-14, 1e-13);
 }

@@ -16,18 +16,43 @@ namespace kane::detail {
 template <std::size_t I>
 using index_c = std::integral_constant<std::size_t, I>;
 
+// Folds of at most this many terms: clang stops at 256 (-fbracket-depth), so longer loops go in chunks.
+inline constexpr std::size_t fold_chunk = 128;
+template <std::size_t N, std::size_t C>
+inline constexpr std::size_t chunk_size = N - C* fold_chunk < fold_chunk ? N - C* fold_chunk : fold_chunk;
+template <std::size_t From, class F, std::size_t... I>
+constexpr void static_for_from(F& f, std::index_sequence<I...>) {
+  (f(index_c<From + I>{}), ...);
+}
+template <std::size_t N, class F, std::size_t... C>
+constexpr void static_for_chunks(F& f, std::index_sequence<C...>) {
+  (static_for_from<C * fold_chunk>(f, std::make_index_sequence<chunk_size<N, C>>{}), ...);
+}
+template <std::size_t From, class F, std::size_t... I>
+KANE_ALWAYS_INLINE constexpr void static_for_inline_from(F& f, std::index_sequence<I...>) {
+  (f(index_c<From + I>{}), ...);
+}
+template <std::size_t N, class F, std::size_t... C>
+KANE_ALWAYS_INLINE constexpr void static_for_inline_chunks(F& f, std::index_sequence<C...>) {
+  (static_for_inline_from<C * fold_chunk>(f, std::make_index_sequence<chunk_size<N, C>>{}), ...);
+}
+
 // f(index_c<0>{}), ..., f(index_c<N - 1>{})
 template <std::size_t N, class F>
 constexpr void static_for(F&& f) {
-  [&]<std::size_t... I>(std::index_sequence<I...>) { (f(index_c<I>{}), ...); }
-  (std::make_index_sequence<N>{});
+  if constexpr (N <= fold_chunk)
+    static_for_from<0>(f, std::make_index_sequence<N>{});
+  else
+    static_for_chunks<N>(f, std::make_index_sequence<(N + fold_chunk - 1) / fold_chunk>{});
 }
 // The same inside always-inline code (inline.hpp), f an always-inline lambda: the loop is part of
 // its caller before any optimization (a plain call there could stay a call).
 template <std::size_t N, class F>
 KANE_ALWAYS_INLINE constexpr void static_for_inline(F&& f) {
-  [&]<std::size_t... I>(std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA { (f(index_c<I>{}), ...); }
-  (std::make_index_sequence<N>{});
+  if constexpr (N <= fold_chunk)
+    static_for_inline_from<0>(f, std::make_index_sequence<N>{});
+  else
+    static_for_inline_chunks<N>(f, std::make_index_sequence<(N + fold_chunk - 1) / fold_chunk>{});
 }
 // N trues (a computation that reads every frame or coordinate)
 template <std::size_t N>

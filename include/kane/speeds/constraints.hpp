@@ -121,14 +121,16 @@ struct constraint_system {
       return rest<K>();
   }
   static constexpr pattern<n, n> m = []<std::size_t... I>(std::index_sequence<I...>) {
+    const std::array<entry, n * n> e{entry_of<decltype(coefficient<I / n, NH::dependents[I % n]>())>()...};
     pattern<n, n> out{};
-    ((out[I / n][I % n] = entry_of<decltype(coefficient<I / n, NH::dependents[I % n]>())>()), ...);
+    for (std::size_t i = 0; i < n * n; ++i) out[i / n][i % n] = e[i];
     return out;
   }
   (std::make_index_sequence<n * n>{});
   static constexpr pattern<n, k> r = []<std::size_t... I>(std::index_sequence<I...>) {
+    const std::array<entry, n * k> e{entry_of<decltype(right<I / k, I % k>())>()...};
     pattern<n, k> out{};
-    ((out[I / k][I % k] = entry_of<decltype(right<I / k, I % k>())>()), ...);
+    for (std::size_t i = 0; i < n * k; ++i) out[i / k][i % k] = e[i];
     return out;
   }
   (std::make_index_sequence<n * k>{});

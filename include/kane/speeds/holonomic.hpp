@@ -63,8 +63,9 @@ struct holonomic<dependent_coordinates<D...>, F...> {
   }
   // the pattern of J: zero, one or other entries
   static constexpr detail::pattern<m, m> m_pattern = []<std::size_t... I>(std::index_sequence<I...>) {
+    const std::array<detail::entry, m * m> e{detail::entry_of<decltype(jacobian<I / m, I % m>())>()...};
     detail::pattern<m, m> out{};
-    ((out[I / m][I % m] = detail::entry_of<decltype(jacobian<I / m, I % m>())>()), ...);
+    for (std::size_t i = 0; i < m * m; ++i) out[i / m][i % m] = e[i];
     return out;
   }
   (std::make_index_sequence<m * m>{});

@@ -145,15 +145,19 @@ struct kde_system {
   using z_type = decltype(at_rest(std::get<R>(Sp::definitions)));
   // Y_rs holds no q': each row is linear in q'
   static constexpr bool linear = []<std::size_t... I>(std::index_sequence<I...>) {
-    return ((leaves_of<std::remove_cv_t<y_type<I / d, I % d>>>.rates == 0) && ... && true);
+    const std::array<bool, n * n> free{(leaves_of<std::remove_cv_t<y_type<I / d, I % d>>>.rates == 0)...};
+    for (const bool f : free)
+      if (!f) return false;
+    return true;
   }
   (std::make_index_sequence<n * n>{});
   static_assert(linear,
                 "kane: a generalized speed is linear in q': u_r = sum_s Y_rs(q, t) q_s' + Z_r(q, t), "
                 "with no q' in Y_rs; write u_r without products or functions of the rates");
   static constexpr pattern<n, n> m = []<std::size_t... I>(std::index_sequence<I...>) {
+    const std::array<entry, n * n> e{entry_of<y_type<I / d, I % d>>()...};
     pattern<n, n> p{};
-    ((p[I / d][I % d] = entry_of<y_type<I / d, I % d>>()), ...);
+    for (std::size_t i = 0; i < n * n; ++i) p[i / d][i % d] = e[i];
     return p;
   }
   (std::make_index_sequence<n * n>{});

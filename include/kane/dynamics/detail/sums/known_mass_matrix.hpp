@@ -66,13 +66,17 @@ constexpr known_columns<Sp::n> columns_known_in(const X& x) {
 }
 template <std::size_t N, class W>
 constexpr void add_products(known_table<N>& out, const known_columns<N>& v, const W& weight) {
+  std::array<bool, N> nonzero{};
+  for (std::size_t r = 0; r < N; ++r) nonzero[r] = v.c[r][0] != 0 || v.c[r][1] != 0 || v.c[r][2] != 0;
   for (std::size_t r = 0; r < N; ++r)
-    for (std::size_t s = 0; s < N; ++s)
-      for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t s = 0; s < N && nonzero[r]; ++s)
+      for (std::size_t i = 0; i < 3 && nonzero[s]; ++i)
         for (std::size_t j = 0; j < 3; ++j) out.m[r * N + s] += v.c[r][i] * weight(i, j) * v.c[s][j];
 }
+// the terms of item X; none once an item has made M unknown
 template <class R, class Sp, class X>
 constexpr void add_known_terms(known_table<Sp::n>& out) {
+  if (!out.known) return;
   if constexpr (is_particle<X> || is_body<X>) {
     using P = typename point_of_mass<X>::type;
     constexpr auto v = [] {  // in the root, else in the body's frame
@@ -163,20 +167,15 @@ template <auto T, class S, int N>
 KANE_ALWAYS_INLINE Eigen::Matrix<S, N, 1> times_known(const Eigen::Matrix<S, N, 1>& b) {
   constexpr std::size_t n = std::size_t(N);
   Eigen::Matrix<S, N, 1> x;
-  [&]<std::size_t... I>(std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA {
-    (
-        [&]() KANE_ALWAYS_INLINE_LAMBDA {
-          constexpr std::size_t r = I / n, c = I % n, first = first_nonzero(T, r);
-          if constexpr (first == n && c == 0)
-            x(Eigen::Index(r)) = S(0);
-          else if constexpr (c == first)
-            x(Eigen::Index(r)) = S(T.m[I]) * b(Eigen::Index(c));
-          else if constexpr (T.m[I] != 0)
-            x(Eigen::Index(r)) += S(T.m[I]) * b(Eigen::Index(c));
-        }(),
-        ...);
-  }
-  (std::make_index_sequence<n * n>{});
+  static_for_inline<n * n>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
+    constexpr std::size_t I = i, r = I / n, c = I % n, first = first_nonzero(T, r);
+    if constexpr (first == n && c == 0)
+      x(Eigen::Index(r)) = S(0);
+    else if constexpr (c == first)
+      x(Eigen::Index(r)) = S(T.m[I]) * b(Eigen::Index(c));
+    else if constexpr (T.m[I] != 0)
+      x(Eigen::Index(r)) += S(T.m[I]) * b(Eigen::Index(c));
+  });
   return x;
 }
 }  // namespace kane::detail

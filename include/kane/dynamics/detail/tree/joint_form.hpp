@@ -229,19 +229,30 @@ struct joint_form {
         t.item_point[i] = p;
         if (f >= 0 && p >= 0) ok = ok && t.below(f, t.attach[std::size_t(p)]);  // a body's centre
       }
-      // one joint point X_r for every item below the edge of u_r
-      for (std::size_t r = 0; r < n && ok; ++r) {
-        const int g = t.joint_frame[r];
-        int x = -1;
-        for (std::size_t i = 0; i < ni; ++i) {
-          const int p = t.item_point[i], f = t.item_frame[i];
-          if (p >= 0 && f >= 0 && t.below(f, g)) {
-            const int y = t.joint_of(p, g);
-            ok = ok && (x < 0 || x == y);
-            x = y;
+      // one joint point X_r for every item below the edge of u_r, g its frame: the point where the
+      // chain of the item's point p first has a vector fixed at or below g (p if none). The chain of p
+      // is walked once, for the frames g from the item's up.
+      std::array<int, n> x{};
+      x.fill(-1);
+      for (std::size_t i = 0; i < ni && ok; ++i) {
+        const int p = t.item_point[i], f = t.item_frame[i];
+        int c = p, y = p;
+        for (int g = p < 0 ? -1 : f; g >= 0; g = t.parent[std::size_t(g)]) {
+          for (; c >= 0 && t.from[std::size_t(c)] >= 0; c = t.from[std::size_t(c)]) {
+            const int s = t.segment[std::size_t(c)];
+            if (s >= 0 && t.depth[std::size_t(s)] < t.depth[std::size_t(g)]) break;
+            if (s >= 0) y = t.from[std::size_t(c)];
+          }
+          const int r0 = g == t.free ? 0 : t.speed[std::size_t(g)], r1 = g == t.free ? 6 : r0 + 1;
+          for (int r = r0; r >= 0 && r < r1; ++r) {
+            ok = ok && (x[std::size_t(r)] < 0 || x[std::size_t(r)] == y);
+            x[std::size_t(r)] = y;
           }
         }
-        t.joint_point[r] = x;
+      }
+      for (std::size_t r = 0; r < n && ok; ++r) {
+        const int g = t.joint_frame[r];
+        t.joint_point[r] = x[r];
         int a = t.parent[std::size_t(g)];
         while (a >= 0 && t.speed[std::size_t(a)] < 0 && a != t.free) a = t.parent[std::size_t(a)];
         t.parent_speed[r] = g == t.free ? int(r) - 1 : a < 0 ? -1 : a == t.free ? 5 : t.speed[std::size_t(a)];

@@ -41,17 +41,6 @@ struct joint_table {
     while (depth[std::size_t(f)] > depth[std::size_t(g)]) f = parent[std::size_t(f)];
     return f == g;
   }
-  // The point where the chain of P (its frames down one path through g) first has a vector fixed
-  // at or below frame g (P if none): the vectors at or below g are the chain's last ones.
-  constexpr int joint_of(int p, int g) const {
-    int x = p;
-    for (int c = p; c >= 0 && from[std::size_t(c)] >= 0; c = from[std::size_t(c)]) {
-      const int s = segment[std::size_t(c)];
-      if (s >= 0 && depth[std::size_t(s)] < depth[std::size_t(g)]) break;
-      if (s >= 0) x = from[std::size_t(c)];
-    }
-    return x;
-  }
 };
 
 template <class T>

@@ -193,7 +193,8 @@ struct tree_partials {
       for (std::size_t i = 0; i < p.size(); ++i) p[i] = splat<W>(a[i]);
       return p;
     };
-    const auto pq = spread(aq), pu = spread(au), pm = spread(am), pfq = spread(fqa), pfu = spread(fua);
+    const auto pq = spread(aq), pu = spread(au);
+    const auto pm = spread(am), pfq = spread(fqa), pfu = spread(fua);
     S *q = &dq(0, Eigen::Index(r)), *u = &du(0, Eigen::Index(r)), *mm = &m(0, Eigen::Index(r));
     const auto below = [&](std::size_t k, auto v, const auto& cq, const auto& cu, const auto& cm)
                            KANE_ALWAYS_INLINE_LAMBDA {
