@@ -102,7 +102,7 @@ awk -F, -v reps=$reps -v dir="$work" '
             I = impls[G, i]; sx = sy = sxx = sxy = c = 0
             for (k = 1; k <= np[G]; ++k) {
               P = probs[G, k]
-              if (P + 0 >= 12 && stats(ps[j] SUBSEP G SUBSEP P SUBSEP I)) { x = log(P + 0); y = log(med); sx += x; sy += y; sxx += x * x; sxy += x * y; ++c }
+              if (P ~ /^[0-9]+$/ && P + 0 >= 12 && stats(ps[j] SUBSEP G SUBSEP P SUBSEP I)) { x = log(P + 0); y = log(med); sx += x; sy += y; sxx += x * x; sxy += x * y; ++c }
             }
             if (c >= 2) s = s (s == "" ? "" : ", ") I sprintf(" n^%.2f", (c * sxy - sx * sy) / (c * sxx - sx * sx))
           }

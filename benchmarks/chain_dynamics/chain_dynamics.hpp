@@ -47,7 +47,7 @@ constexpr bool all_physical() {
 static_assert(all_physical());
 
 struct input {
-  std::array<double, max_n> q, qd;
+  std::array<double, max_n> q, qd, qdd;  // q'' for inverse dynamics
 };
 struct output {
   double qdd[max_n];
@@ -60,8 +60,20 @@ struct derivatives {
 // q'' of the first N links, the first N entries of q, q'
 template <std::size_t N>
 void kane_forward(const input&, output&);  // one translation unit per N
+// tau = M q'' - f and its derivatives by q and q' (column-major N x N) of the first N links
+struct torques {
+  double tau[max_n];
+};
+struct inverse_derivatives {
+  double tau[max_n];
+  double dq[max_n * max_n], du[max_n * max_n];
+};
 template <std::size_t N>
 void kane_derivatives(const input&, derivatives&);  // analytical, one translation unit per N
+template <std::size_t N>
+void kane_inverse(const input&, torques&);  // in kane_forward's unit
+template <std::size_t N>
+void kane_inverse_derivatives(const input&, inverse_derivatives&);  // in kane_derivatives' unit
 template <std::size_t N>
 void kdl_forward(const input&, output&);  // N = 6, 12, 24, 48
 template <std::size_t N>

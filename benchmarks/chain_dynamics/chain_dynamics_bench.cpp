@@ -2,7 +2,8 @@
 // kane beside Orocos KDL's ChainDynParam + LLT and a hand-written
 // articulated-body algorithm (O(n)); kane's code of each n is its own translation unit.
 // Its derivatives by q and q': kane's analytical ones beside central differences of kane's
-// forward dynamics (4n calls), the ratio users compare with.
+// forward dynamics (4n calls), the ratio users compare with; kane's inverse dynamics at a random q''
+// and its analytical derivatives.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -24,7 +25,7 @@ std::vector<input> inputs() {
   std::uniform_real_distribution<double> d(-3, 3);
   std::vector<input> in(64);
   for (auto& x : in)
-    for (std::size_t i = 0; i < max_n; ++i) x.q[i] = d(rng), x.qd[i] = d(rng);
+    for (std::size_t i = 0; i < max_n; ++i) x.q[i] = d(rng), x.qd[i] = d(rng), x.qdd[i] = d(rng);
   return in;
 }
 const std::vector<input> states = inputs();
@@ -74,6 +75,41 @@ void derivatives_agree(const input& in, const output& h) {
   std::copy(d.ud, d.ud + N, u.qdd);
   bench::require_agreement(difference<N>(u, h));
 }
+// tau at q'' = the hand ABA's is 0 (no joint torques), and the inverse derivatives agree with central
+// differences of kane_inverse to 1e-6 of the largest entry
+template <std::size_t N>
+void inverse_agrees(const input& in, const output& h) {
+  input at = in;
+  std::copy(h.qdd, h.qdd + N, at.qdd.begin());
+  torques t{};
+  kane_inverse<N>(at, t);
+  double scale = 1;
+  for (std::size_t k = 0; k < N; ++k) scale = std::fmax(scale, std::fabs(h.qdd[k]));
+  const double zero[max_n] = {};
+  bench::require_agreement(bench::max_diff(t.tau, zero, int(N)) / scale / ((N / 6.0) * (N / 6.0)));
+  static inverse_derivatives d;
+  static double cq[max_n * max_n], cu[max_n * max_n];
+  kane_inverse_derivatives<N>(in, d);
+  const double e = 1e-6;
+  for (std::size_t j = 0; j < N; ++j) {
+    torques a{}, b{};
+    input x = in;
+    x.q[j] = in.q[j] + e, kane_inverse<N>(x, a), x.q[j] = in.q[j] - e, kane_inverse<N>(x, b),
+    x.q[j] = in.q[j];
+    for (std::size_t i = 0; i < N; ++i) cq[j * N + i] = (a.tau[i] - b.tau[i]) / (2 * e);
+    x.qd[j] = in.qd[j] + e, kane_inverse<N>(x, a), x.qd[j] = in.qd[j] - e, kane_inverse<N>(x, b);
+    for (std::size_t i = 0; i < N; ++i) cu[j * N + i] = (a.tau[i] - b.tau[i]) / (2 * e);
+  }
+  const auto close = [](const double* x, const double* y) {
+    double s = 1;
+    for (std::size_t k = 0; k < N * N; ++k) s = std::fmax(s, std::fabs(y[k]));
+    return bench::max_diff(x, y, int(N * N)) / s;
+  };
+  if (!(close(d.dq, cq) < 1e-6 && close(d.du, cu) < 1e-6)) {
+    std::fprintf(stderr, "chain_dynamics/%zu: inverse derivatives and central differences disagree\n", N);
+    std::exit(1);
+  }
+}
 template <std::size_t N>
 void agree_at() {
   for (const auto& in : states) {
@@ -87,6 +123,7 @@ void agree_at() {
     output h{};
     hand_forward<N>(states[i], h);
     derivatives_agree<N>(states[i], h);
+    inverse_agrees<N>(states[i], h);
   }
 }
 template <std::size_t... N>
@@ -102,6 +139,9 @@ void rows() {
   benchmark::RegisterBenchmark((n + "/kdl").c_str(), bench::run<kdl_forward<N>, states>);
   benchmark::RegisterBenchmark((n + "/derivatives/kane").c_str(), bench::run<kane_derivatives<N>, states>);
   benchmark::RegisterBenchmark((n + "/central/kane").c_str(), bench::run<central<N>, states>);
+  benchmark::RegisterBenchmark((n + "/inverse/kane").c_str(), bench::run<kane_inverse<N>, states>);
+  benchmark::RegisterBenchmark((n + "/inverse_derivatives/kane").c_str(),
+                               bench::run<kane_inverse_derivatives<N>, states>);
 }
 template <std::size_t... N>
 bool register_rows(sizes<N...>) {

@@ -15,3 +15,12 @@ void chain_dynamics::kane_forward(const input& in, output& out) {
       kane::forward_dynamics<chain_model::system<N>>(ev).ud;
 }
 template void chain_dynamics::kane_forward<KANE_CHAIN_N>(const input&, output&);
+
+template <std::size_t N>
+void chain_dynamics::kane_inverse(const input& in, torques& out) {
+  typename chain_model::evaluator<N> ev;
+  ev.update(chain_model::state_of<N>(in));
+  Eigen::Map<Eigen::Matrix<double, int(N), 1>>(out.tau) =
+      kane::inverse_dynamics<chain_model::system<N>>(ev).tau;
+}
+template void chain_dynamics::kane_inverse<KANE_CHAIN_N>(const input&, torques&);

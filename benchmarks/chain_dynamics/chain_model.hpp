@@ -58,7 +58,7 @@ using evaluator = kane::evaluator<state<N>, kane::frames<B<N>>, kane::level::pos
 template <std::size_t N>
 state<N> state_of(const chain_dynamics::input& in) {
   state<N> s;
-  for (std::size_t i = 0; i < N; ++i) s.q[i] = in.q[i], s.u[i] = in.qd[i];
+  for (std::size_t i = 0; i < N; ++i) s.q[i] = in.q[i], s.u[i] = in.qd[i], s.ud[i] = in.qdd[i];
   return s;
 }
 }  // namespace chain_model
