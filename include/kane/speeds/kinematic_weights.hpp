@@ -145,9 +145,9 @@ struct kde_system {
   using z_type = decltype(at_rest(std::get<R>(Sp::definitions)));
   // Y_rs holds no q': each row is linear in q'
   static constexpr bool linear = []<std::size_t... I>(std::index_sequence<I...>) {
-    const std::array<bool, n * n> free{(leaves_of<std::remove_cv_t<y_type<I / d, I % d>>>.rates == 0)...};
-    for (const bool f : free)
-      if (!f) return false;
+    const std::array<bool, n * n> no_rates{(leaves_of<std::remove_cv_t<y_type<I / d, I % d>>>.rates == 0)...};
+    for (const bool none : no_rates)
+      if (!none) return false;
     return true;
   }
   (std::make_index_sequence<n * n>{});
