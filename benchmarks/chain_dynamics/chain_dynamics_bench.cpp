@@ -5,6 +5,7 @@
 // forward dynamics (4n calls), the ratio users compare with; kane's inverse dynamics at a random q''
 // and its analytical derivatives.
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
@@ -39,44 +40,50 @@ double difference(const output& a, const output& h) {
                                  })));
   return bench::max_diff(a.qdd, h.qdd, N) / scale / ((N / 6.0) * (N / 6.0));
 }
-// du'/dq and du'/du by central differences of kane_forward<N>: 4N calls
+// the derivatives of the values M of F's output by q and q' (column-major N x N), by central
+// differences of F: 4N calls
+template <std::size_t N, auto F, auto M>
+void central_of(const input& in, double* dq, double* du) {
+  const double h = 1e-6;
+  decltype(bench::output_of(F)) a, b;
+  input x = in;
+  const auto column = [&](std::array<double, max_n>& v, std::size_t j, double* out) {
+    const double v0 = v[j];
+    v[j] = v0 + h, F(x, a);
+    v[j] = v0 - h, F(x, b);
+    v[j] = v0;
+    for (std::size_t i = 0; i < N; ++i) out[j * N + i] = ((a.*M)[i] - (b.*M)[i]) / (2 * h);
+  };
+  for (std::size_t j = 0; j < N; ++j) column(x.q, j, dq), column(x.qd, j, du);
+}
+// du'/dq and du'/du by central differences of kane_forward<N>
 template <std::size_t N>
 void central(const input& in, derivatives& out) {
-  const double h = 1e-6;
-  output a, b;
-  input x = in;
-  for (std::size_t j = 0; j < N; ++j) {
-    x.q[j] = in.q[j] + h, kane_forward<N>(x, a);
-    x.q[j] = in.q[j] - h, kane_forward<N>(x, b);
-    x.q[j] = in.q[j];
-    for (std::size_t i = 0; i < N; ++i) out.dq[j * N + i] = (a.qdd[i] - b.qdd[i]) / (2 * h);
-    x.qd[j] = in.qd[j] + h, kane_forward<N>(x, a);
-    x.qd[j] = in.qd[j] - h, kane_forward<N>(x, b);
-    x.qd[j] = in.qd[j];
-    for (std::size_t i = 0; i < N; ++i) out.du[j * N + i] = (a.qdd[i] - b.qdd[i]) / (2 * h);
+  central_of<N, kane_forward<N>, &output::qdd>(in, out.dq, out.du);
+}
+// two N x N matrices agree to 1e-6 of the largest entry of y (at least 1), else the bench stops
+template <std::size_t N>
+void require_close(const double* x, const double* y, const char* what) {
+  double scale = 1;
+  for (std::size_t k = 0; k < N * N; ++k) scale = std::fmax(scale, std::fabs(y[k]));
+  if (!(bench::max_diff(x, y, int(N * N)) / scale < 1e-6)) {
+    std::fprintf(stderr, "chain_dynamics/%zu: %s and central differences disagree\n", N, what);
+    std::exit(1);
   }
 }
-// the analytical derivatives and the differences agree to 1e-6 of the largest entry
+// the analytical derivatives agree with the differences
 template <std::size_t N>
 void derivatives_agree(const input& in, const output& h) {
   static derivatives d, c;
   kane_derivatives<N>(in, d);
   central<N>(in, c);
-  const auto close = [](const double* x, const double* y) {
-    double scale = 1;
-    for (std::size_t k = 0; k < N * N; ++k) scale = std::fmax(scale, std::fabs(y[k]));
-    return bench::max_diff(x, y, int(N * N)) / scale;
-  };
-  if (!(close(d.dq, c.dq) < 1e-6 && close(d.du, c.du) < 1e-6)) {
-    std::fprintf(stderr, "chain_dynamics/%zu: derivatives and central differences disagree\n", N);
-    std::exit(1);
-  }
+  require_close<N>(d.dq, c.dq, "derivatives by q"), require_close<N>(d.du, c.du, "derivatives by q'");
   output u{};
   std::copy(d.ud, d.ud + N, u.qdd);
   bench::require_agreement(difference<N>(u, h));
 }
 // tau at q'' = the hand ABA's is 0 (no joint torques), and the inverse derivatives agree with central
-// differences of kane_inverse to 1e-6 of the largest entry
+// differences of kane_inverse
 template <std::size_t N>
 void inverse_agrees(const input& in, const output& h) {
   input at = in;
@@ -90,25 +97,9 @@ void inverse_agrees(const input& in, const output& h) {
   static inverse_derivatives d;
   static double cq[max_n * max_n], cu[max_n * max_n];
   kane_inverse_derivatives<N>(in, d);
-  const double e = 1e-6;
-  for (std::size_t j = 0; j < N; ++j) {
-    torques a{}, b{};
-    input x = in;
-    x.q[j] = in.q[j] + e, kane_inverse<N>(x, a), x.q[j] = in.q[j] - e, kane_inverse<N>(x, b),
-    x.q[j] = in.q[j];
-    for (std::size_t i = 0; i < N; ++i) cq[j * N + i] = (a.tau[i] - b.tau[i]) / (2 * e);
-    x.qd[j] = in.qd[j] + e, kane_inverse<N>(x, a), x.qd[j] = in.qd[j] - e, kane_inverse<N>(x, b);
-    for (std::size_t i = 0; i < N; ++i) cu[j * N + i] = (a.tau[i] - b.tau[i]) / (2 * e);
-  }
-  const auto close = [](const double* x, const double* y) {
-    double s = 1;
-    for (std::size_t k = 0; k < N * N; ++k) s = std::fmax(s, std::fabs(y[k]));
-    return bench::max_diff(x, y, int(N * N)) / s;
-  };
-  if (!(close(d.dq, cq) < 1e-6 && close(d.du, cu) < 1e-6)) {
-    std::fprintf(stderr, "chain_dynamics/%zu: inverse derivatives and central differences disagree\n", N);
-    std::exit(1);
-  }
+  central_of<N, kane_inverse<N>, &torques::tau>(in, cq, cu);
+  require_close<N>(d.dq, cq, "inverse derivatives by q"),
+      require_close<N>(d.du, cu, "inverse derivatives by q'");
 }
 template <std::size_t N>
 void agree_at() {
