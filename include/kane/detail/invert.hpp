@@ -164,44 +164,73 @@ bool solve_positive_definite(const Eigen::Matrix<S, N, N>& m, const Eigen::Matri
   return true;
 }
 
-// X = -M^-1 X for every column of each X, M = L L^T factored once by plain loops (for a few speeds,
-// where a blocked solver's bookkeeping outweighs its arithmetic); false where M is not positive definite.
+// X = -M^-1 X for every column of each X (N rows, fixed columns), M = L L^T factored once by plain loops (for
+// a few speeds, where a blocked solver's bookkeeping outweighs its arithmetic); false where M is not positive
+// definite. The columns of all X lie side by side in rows of packets, so one l_ik scales W columns.
 template <class S, int N, class... X>
 bool solve_negated(const Eigen::Matrix<S, N, N>& m, X&... x) {
-  constexpr int n = N;
-  std::array<S, std::size_t(n * n)> l{};
-  std::array<S, std::size_t(n)> inv{};
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j <= i; ++j) {
-      S s = m(i, j);
-      for (int k = 0; k < j; ++k) s -= l[std::size_t(i * n + k)] * l[std::size_t(j * n + k)];
-      if (i == j) {
-        if (!(s > S(0))) return false;
-        l[std::size_t(i * n + i)] = std::sqrt(s), inv[std::size_t(i)] = S(1) / l[std::size_t(i * n + i)];
-      } else
-        l[std::size_t(i * n + j)] = s * inv[std::size_t(j)];
+  constexpr std::size_t n = std::size_t(N), W = packet_width<S>;
+  constexpr std::size_t cols = (std::size_t(X::ColsAtCompileTime) + ... + 0);
+  constexpr std::size_t P = (cols + W - 1) / W, R = P * W;  // packets and numbers a row
+  std::array<S, n * n> l{};
+  std::array<S, n> inv{};
+  bool positive = true;
+  const auto entry = [&](std::size_t i, std::size_t j, auto&& sum) KANE_ALWAYS_INLINE_LAMBDA {
+    S s = m(Eigen::Index(i), Eigen::Index(j));
+    sum([&](std::size_t k) KANE_ALWAYS_INLINE_LAMBDA { s -= l[i * n + k] * l[j * n + k]; });
+    if (i != j)
+      l[i * n + j] = s * inv[j];
+    else {
+      positive = positive && s > S(0);
+      l[i * n + i] = std::sqrt(s), inv[i] = S(1) / l[i * n + i];
     }
-  // V columns from c0 at a time, each number a packet of V (packet.hpp)
-  const auto columns = [&]<std::size_t V>(auto& b, std::size_t c0, index_c<V>) {
-    std::array<packet<S, V>, std::size_t(n)> y;
-    for (int i = 0; i < n; ++i) {  // L y = b
-      packet<S, V> s{};
-      for (std::size_t k = 0; k < V; ++k) s[k] = b(i, Eigen::Index(c0 + k));
-      for (int k = 0; k < i; ++k) s -= l[std::size_t(i * n + k)] * y[std::size_t(k)];
-      y[std::size_t(i)] = s * inv[std::size_t(i)];
-    }
-    for (int i = n - 1; i >= 0; --i) {  // L^T x = y
-      packet<S, V> s = y[std::size_t(i)];
-      for (int k = i + 1; k < n; ++k) s -= l[std::size_t(k * n + i)] * y[std::size_t(k)];
-      y[std::size_t(i)] = s * inv[std::size_t(i)];
-    }
-    for (int i = 0; i < n; ++i)
-      for (std::size_t k = 0; k < V; ++k) b(i, Eigen::Index(c0 + k)) = -y[std::size_t(i)][k];
   };
-  const auto solve = [&](auto& b) {
-    in_packets<packet_width<S>>(0, std::size_t(b.cols()), [&](std::size_t c0, auto v) { columns(b, c0, v); });
+  if constexpr (n <= 12)  // unrolled
+    static_for<n>([&](auto i) {
+      static_for<i + 1>([&](auto j) {
+        entry(i, j, [](auto&& f) { static_for<decltype(j)::value>([&](auto k) { f(k); }); });
+      });
+    });
+  else
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j <= i; ++j)
+        entry(i, j, [j](auto&& f) {
+          for (std::size_t k = 0; k < j; ++k) f(k);
+        });
+  if (!positive) return false;
+  std::array<S, n * R> b{};  // row i: (X_0 row i, X_1 row i, ...)
+  std::size_t c0 = 0;
+  const auto gather = [&](const auto& xt) {
+    for (std::size_t j = 0; j < std::size_t(xt.cols()); ++j, ++c0)
+      for (std::size_t i = 0; i < n; ++i) b[i * R + c0] = xt(Eigen::Index(i), Eigen::Index(j));
   };
-  (solve(x), ...);
+  (gather(x), ...);
+  // L y = b, then L^T w = -y (w = -z, with L^T z = y), V packets of each row from p0 at a time
+  in_packets<8>(0, P, [&](std::size_t p0, auto v) KANE_ALWAYS_INLINE_LAMBDA {
+    constexpr std::size_t V = decltype(v)::value;
+    const auto step = [&](std::size_t i, std::size_t k0, std::size_t k1, auto lik,
+                          const S& sign) KANE_ALWAYS_INLINE_LAMBDA {
+      std::array<packet<S, W>, V> acc;
+      static_for_inline<V>([&](auto g) { acc[g] = sign * load_packet<W>(&b[i * R + (p0 + g) * W]); });
+      for (std::size_t k = k0; k < k1; ++k) {
+        const S a = lik(k);
+        static_for_inline<V>([&](auto g) { acc[g] -= a * load_packet<W>(&b[k * R + (p0 + g) * W]); });
+      }
+      static_for_inline<V>([&](auto g) { store_packet<W>(inv[i] * acc[g], &b[i * R + (p0 + g) * W]); });
+    };
+    for (std::size_t i = 0; i < n; ++i)
+      step(
+          i, 0, i, [&](std::size_t k) { return l[i * n + k]; }, S(1));
+    for (std::size_t i = n; i-- > 0;)
+      step(
+          i, i + 1, n, [&](std::size_t k) { return l[k * n + i]; }, S(-1));
+  });
+  c0 = 0;
+  const auto scatter = [&](auto& xt) {
+    for (std::size_t j = 0; j < std::size_t(xt.cols()); ++j, ++c0)
+      for (std::size_t i = 0; i < n; ++i) xt(Eigen::Index(i), Eigen::Index(j)) = b[i * R + c0];
+  };
+  (scatter(x), ...);
   return true;
 }
 }  // namespace kane::detail

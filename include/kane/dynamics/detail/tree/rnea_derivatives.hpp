@@ -47,6 +47,7 @@ struct tree_partials {
   using BF = body_frames<JF, Ev>;
   static constexpr auto& t = JF::table;
   static constexpr std::size_t nf = JF::nf, n = JF::n;
+  static constexpr bool loaded = loads_below_root<JF, Sys>;
 
   std::array<m3<S>, nf> rot;                    // R of each frame, by columns
   std::array<vec, nf> at;                       // its origin from O
@@ -62,23 +63,24 @@ struct tree_partials {
     rot[0] = {vec{S(1), S(0), S(0)}, vec{S(0), S(1), S(0)}, vec{S(0), S(0), S(1)}}, at[0] = zero;
     own_inertias<JF, Sys>(bf, ev, own);
     std::array<vec, nf> ff, fn;  // -f_ext about o, in the frame's components
-    own_loads<JF, Sys>(bf, ev, ff, fn);
+    if constexpr (loaded) own_loads<JF, Sys>(bf, ev, ff, fn);
     for (std::size_t g = 1; g < nf; ++g)
       steps.at(g, [&](const auto& e, auto, auto OC, const vec& kg) KANE_ALWAYS_INLINE_LAMBDA {
         constexpr auto O = decltype(OC)::value;
+        constexpr int A = std::remove_cvref_t<decltype(e)>::axis;
         const auto p = std::size_t(t.parent[g]);
         const int r = t.speed[g];
-        rot[g] = {by_columns(rot[p], e.up(vec{S(1), S(0), S(0)})),
-                  by_columns(rot[p], e.up(vec{S(0), S(1), S(0)})),
-                  by_columns(rot[p], e.up(vec{S(0), S(0), S(1)}))};
+        rot[g] = e.after(rot[p]);
         at[g] = all_zero(O) ? at[p] : at[p] + by_columns(rot[p], bf.offset[g]);
         if (r >= 0) {
-          const vec k = by_columns(rot[g], kg);
+          const vec k = A >= 0 ? rot[g][std::size_t(A)] : by_columns(rot[g], kg);
           screw[std::size_t(r)] = {k, cross3(at[g], k)};
         }
         own[g] = about_root(own[g], rot[g], at[g]);
-        const vec fw = by_columns(rot[g], ff[g]);
-        load[g] = {by_columns(rot[g], fn[g]) + cross3(at[g], fw), fw};
+        if constexpr (loaded) {
+          const vec fw = by_columns(rot[g], ff[g]);
+          load[g] = {by_columns(rot[g], fn[g]) + cross3(at[g], fw), fw};
+        }
       });
     v[0] = {zero, zero}, a[0] = {zero, base_acceleration<Sys, frame_at<JF, 0>>(ev)};
   }
@@ -97,7 +99,8 @@ struct tree_partials {
         v[g] = v[p] + u * s, a[g] = a[p] + S(ud(Eigen::Index(j))) * s + u * dv[j];
       }
       const spatial<S> l = times(own[g], v[g]);
-      f[g] = times(own[g], a[g]) + cross_force(v[g], l) + load[g];
+      f[g] = times(own[g], a[g]) + cross_force(v[g], l);
+      if constexpr (loaded) f[g] = f[g] + load[g];
       b[g] = variation_of(own[g], v[g], l);
     }
   }

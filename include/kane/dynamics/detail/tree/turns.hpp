@@ -31,7 +31,13 @@ KANE_ALWAYS_INLINE v3<S> sym_times(const sym3<S>& i, const v3<S>& k) {
 template <class S, int A>
 struct turn {
   S c, s;
-  static constexpr int b = (A + 1) % 3, d = (A + 2) % 3;
+  static constexpr int axis = A, b = (A + 1) % 3, d = (A + 2) % 3;
+  KANE_ALWAYS_INLINE m3<S> after(const m3<S>& r) const {  // R E by columns, R by columns
+    m3<S> o = r;
+    o[std::size_t(b)] = c * r[std::size_t(b)] + s * r[std::size_t(d)];
+    o[std::size_t(d)] = c * r[std::size_t(d)] - s * r[std::size_t(b)];
+    return o;
+  }
   KANE_ALWAYS_INLINE v3<S> up(v3<S> v) const {  // E v
     const S x = comp<std::size_t(b)>(v), y = comp<std::size_t(d)>(v);
     comp<std::size_t(b)>(v) = c * x - s * y, comp<std::size_t(d)>(v) = s * x + c * y;
@@ -84,6 +90,15 @@ struct turn {
 template <class S>
 struct turn<S, -1> {
   Eigen::Matrix<S, 3, 3> e;
+  static constexpr int axis = -1;
+  KANE_ALWAYS_INLINE m3<S> after(const m3<S>& r) const {  // R E by columns, R by columns
+    m3<S> o;
+    for (std::size_t j = 0; j < 3; ++j) {
+      const auto k = Eigen::Index(j);
+      o[j] = e(0, k) * r[0] + e(1, k) * r[1] + e(2, k) * r[2];
+    }
+    return o;
+  }
   KANE_ALWAYS_INLINE v3<S> up(const v3<S>& v) const {
     return {e(0, 0) * v.x + e(0, 1) * v.y + e(0, 2) * v.z, e(1, 0) * v.x + e(1, 1) * v.y + e(1, 2) * v.z,
             e(2, 0) * v.x + e(2, 1) * v.y + e(2, 2) * v.z};
