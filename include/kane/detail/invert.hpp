@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include <Eigen/Core>
@@ -208,22 +209,21 @@ bool solve_negated(const Eigen::Matrix<S, N, N>& m, X&... x) {
   // L y = b, then L^T w = -y (w = -z, with L^T z = y), V packets of each row from p0 at a time
   in_packets<8>(0, P, [&](std::size_t p0, auto v) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t V = decltype(v)::value;
-    const auto step = [&](std::size_t i, std::size_t k0, std::size_t k1, auto lik,
-                          const S& sign) KANE_ALWAYS_INLINE_LAMBDA {
+    // row i of y (Back false: rows k < i, l_ik) or of w (Back true: rows k > i, l_ki)
+    const auto step = [&]<bool Back>(std::size_t i, std::bool_constant<Back>) KANE_ALWAYS_INLINE_LAMBDA {
       std::array<packet<S, W>, V> acc;
-      static_for_inline<V>([&](auto g) { acc[g] = sign * load_packet<W>(&b[i * R + (p0 + g) * W]); });
-      for (std::size_t k = k0; k < k1; ++k) {
-        const S a = lik(k);
+      static_for_inline<V>([&](auto g) {
+        acc[g] = load_packet<W>(&b[i * R + (p0 + g) * W]);
+        if constexpr (Back) acc[g] = -acc[g];
+      });
+      for (std::size_t k = Back ? i + 1 : 0; k < (Back ? n : i); ++k) {
+        const S a = Back ? l[k * n + i] : l[i * n + k];
         static_for_inline<V>([&](auto g) { acc[g] -= a * load_packet<W>(&b[k * R + (p0 + g) * W]); });
       }
       static_for_inline<V>([&](auto g) { store_packet<W>(inv[i] * acc[g], &b[i * R + (p0 + g) * W]); });
     };
-    for (std::size_t i = 0; i < n; ++i)
-      step(
-          i, 0, i, [&](std::size_t k) { return l[i * n + k]; }, S(1));
-    for (std::size_t i = n; i-- > 0;)
-      step(
-          i, i + 1, n, [&](std::size_t k) { return l[k * n + i]; }, S(-1));
+    for (std::size_t i = 0; i < n; ++i) step(i, std::false_type{});
+    for (std::size_t i = n; i-- > 0;) step(i, std::true_type{});
   });
   c0 = 0;
   const auto scatter = [&](auto& xt) {
