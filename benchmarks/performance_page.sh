@@ -45,16 +45,17 @@ done >"$work/runs.csv"
 
 # One table per benchmark group (the first part of a name, group/problem/implementation):
 # per preset the median [min-max] CPU ns of each implementation, kane / hand, kane / SymPy's
-# C and KDL / kane of the medians.
+# C, kane / SymPy's C checked as kane is (../common/checked.hpp) and KDL / kane of the medians.
 awk -F, -v reps=$reps -v dir="$work" '
-  BEGIN { rank["hand"] = 1; rank["sympy"] = 2; rank["kdl"] = 3; rank["kane"] = 4 }
+  BEGIN { rank["hand"] = 1; rank["hand_checked"] = 2; rank["sympy"] = 3; rank["sympy_checked"] = 4
+          rank["kdl"] = 5; rank["kane"] = 6 }
   { gsub(/"/, "", $2); n = split($2, part, "/"); impl = part[n]; group = part[1]
     prob = substr($2, length(group) + 2, length($2) - length(group) - length(impl) - 2)
     t = $5 + 0; if ($6 == "us") t *= 1e3; else if ($6 == "ms") t *= 1e6
     key = $1 SUBSEP group SUBSEP prob SUBSEP impl; runs[key, ++count[key]] = t
     if (!((group, prob) in seen)) { seen[group, prob] = 1; probs[group, ++np[group]] = prob }
-    if (!((group, impl) in has)) {  # implementations in the order hand, sympy, kdl, kane, others
-      has[group, impl] = 1; r = impl in rank ? rank[impl] : 5
+    if (!((group, impl) in has)) {  # implementations in the order of rank, others last
+      has[group, impl] = 1; r = impl in rank ? rank[impl] : 7
       for (i = ++ni[group]; i > 1 && impl_rank[group, i - 1] > r; --i) { impls[group, i] = impls[group, i - 1]; impl_rank[group, i] = impl_rank[group, i - 1] }
       impls[group, i] = impl; impl_rank[group, i] = r }
     if (!(group in gseen)) { gseen[group] = 1; groups[++ng] = group } }
@@ -73,6 +74,7 @@ awk -F, -v reps=$reps -v dir="$work" '
       refs = ""
       if ((G, "hand") in has) refs = refs ", kane/hand"
       if ((G, "sympy") in has) refs = refs ", kane/SymPy"
+      if ((G, "sympy_checked") in has) refs = refs ", kane/checked SymPy"
       if ((G, "kdl") in has) refs = refs ", KDL/kane"
       head = "| " G
       for (j = 1; j <= 2; ++j) head = head " | " pn[j] ": " names (refs == "" ? "" : " | " substr(refs, 3))
@@ -90,6 +92,7 @@ awk -F, -v reps=$reps -v dir="$work" '
           r = ""
           if ((G, "hand") in has) r = r ", " ratio(m["kane"], m["hand"])
           if ((G, "sympy") in has) r = r ", " ratio(m["kane"], m["sympy"])
+          if ((G, "sympy_checked") in has) r = r ", " ratio(m["kane"], m["sympy_checked"])
           if ((G, "kdl") in has) r = r ", " ratio(m["kdl"], m["kane"])
           row = row " | " cells (r == "" ? "" : " | " substr(r, 3))
         }

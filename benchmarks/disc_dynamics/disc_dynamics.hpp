@@ -17,10 +17,13 @@ struct input {
 };
 struct output {
   double xd[8];  // (q', u_ind')
+  int status;    // 0: ok (kane's status; the checked twins', ../common/checked.hpp)
 };
 void kane_rates(const input&, output&);          // constrained_motion, built once
 void kane_reduced_rates(const input&, output&);  // A from a pose-level pass, one acceleration-level pass
 void hand_rates(const input&, output&);
+void hand_rates_checked(const input&, output&);
 // SymPy's KanesMethod printed to C (disc_dynamics_sympy.cpp, tests/data/gen_disc_dynamics_sympy.py)
 void sympy_rates(const input&, output&);
+void sympy_rates_checked(const input&, output&);
 }  // namespace disc_dynamics

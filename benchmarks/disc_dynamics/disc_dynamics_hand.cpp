@@ -8,6 +8,7 @@
 // both 1 / c2 and 1 / r; m cancels.
 #include <cmath>
 
+#include "../common/checked.hpp"
 #include "disc_dynamics.hpp"
 
 void disc_dynamics::hand_rates(const input& in, output& out) {
@@ -25,4 +26,8 @@ void disc_dynamics::hand_rates(const input& in, output& out) {
   out.xd[5] = 0.2 * (4 * g * c2 * d * s2 + u3 * (6 * u2 - t2 * u3));
   out.xd[6] = (-2.0 / 3) * u1 * u3;
   out.xd[7] = u1 * (t2 * u3 - 2 * u2);
+}
+
+[[gnu::flatten]] void disc_dynamics::hand_rates_checked(const input& in, output& out) {
+  bench::checked(in, out, hand_rates);
 }

@@ -21,7 +21,10 @@ state parameters() {
 rhs motion{parameters()};
 }  // namespace
 
-void disc_dynamics::kane_rates(const input& in, output& out) { motion(in.x, out.xd, 0.0); }
+void disc_dynamics::kane_rates(const input& in, output& out) {
+  motion(in.x, out.xd, 0.0);
+  out.status = motion.status() == kane::solve_status::ok ? 0 : 1;
+}
 
 void disc_dynamics::kane_reduced_rates(const input& in, output& out) {
   state s;

@@ -1,5 +1,8 @@
-// Three small models' right-hand sides (small_models.hpp): kane as the README teaches it,
-// beside hand-written closed forms and SymPy's generated C.
+// Four small models' right-hand sides (small_models.hpp): kane as the README teaches it,
+// beside hand-written closed forms and SymPy's generated C, each bare and checked as kane is
+// (every input and output finite, else NaN and a status: ../common/checked.hpp).
+#include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -27,29 +30,64 @@ const auto spacecrafts = inputs<14>(5, [](small::spacecraft_in& s, std::mt19937&
 });
 const auto pendulums = inputs<4>(7, [](small::pendulum_in&, std::mt19937&) {});
 
+// all five agree on every state, with status 0; given a NaN, the checked ones and kane give NaN
+// and status 1
 template <int N, class F>
-void agree(const std::vector<small::input<N>>& states, F kane, F hand, F sympy) {
+void agree(const std::vector<small::input<N>>& states, F kane, F hand, F sympy, F hand_checked,
+           F sympy_checked) {
   for (const auto& in : states) {
-    small::output<N> k{}, h{}, s{};
-    kane(in, k), hand(in, h), sympy(in, s);
-    bench::require_agreement(std::fmax(bench::max_diff(k.xd, h.xd, N), bench::max_diff(s.xd, h.xd, N)));
+    small::output<N> h{}, o{};
+    hand(in, h);
+    for (F f : {kane, sympy, hand_checked, sympy_checked}) {
+      o.status = 0, f(in, o);
+      bench::require_agreement(bench::max_diff(o.xd, h.xd, N));
+    }
+    for (F f : {kane, hand_checked, sympy_checked}) {
+      o.status = -1, f(in, o);
+      bench::require_agreement(o.status == 0 ? 0 : 1);
+    }
+  }
+  small::input<N> bad = states[0];
+  bad.x[N - 1] = std::numeric_limits<double>::quiet_NaN();
+  for (F f : {kane, hand_checked, sympy_checked}) {
+    small::output<N> o{};
+    f(bad, o);
+    bench::require_agreement(o.status == 1 && std::isnan(o.xd[0]) && std::isnan(o.xd[N - 1]) ? 0 : 1);
   }
 }
 void agree() {
-  agree<6>(tops, small::top_kane, small::top_hand, small::top_sympy);
-  agree<14>(spacecrafts, small::spacecraft_kane, small::spacecraft_hand, small::spacecraft_sympy);
-  agree<4>(pendulums, small::pendulum_kane, small::pendulum_hand, small::pendulum_sympy);
+  using namespace small;
+  agree<6>(tops, top_kane, top_hand, top_sympy, top_hand_checked, top_sympy_checked);
+  agree<14>(spacecrafts, spacecraft_kane, spacecraft_hand, spacecraft_sympy, spacecraft_hand_checked,
+            spacecraft_sympy_checked);
+  agree<4>(pendulums, pendulum_kane, pendulum_hand, pendulum_sympy, pendulum_hand_checked,
+           pendulum_sympy_checked);
+  agree<4>(pendulums, pendulum_absolute_kane, pendulum_absolute_hand, pendulum_absolute_sympy,
+           pendulum_absolute_hand_checked, pendulum_absolute_sympy_checked);
 }
 }  // namespace
 
 BENCHMARK(bench::run<small::top_hand, tops>)->Name("small/top/hand");
+BENCHMARK(bench::run<small::top_hand_checked, tops>)->Name("small/top/hand_checked");
 BENCHMARK(bench::run<small::top_sympy, tops>)->Name("small/top/sympy");
+BENCHMARK(bench::run<small::top_sympy_checked, tops>)->Name("small/top/sympy_checked");
 BENCHMARK(bench::run<small::top_kane, tops>)->Name("small/top/kane");
 BENCHMARK(bench::run<small::spacecraft_hand, spacecrafts>)->Name("small/spacecraft/hand");
+BENCHMARK(bench::run<small::spacecraft_hand_checked, spacecrafts>)->Name("small/spacecraft/hand_checked");
 BENCHMARK(bench::run<small::spacecraft_sympy, spacecrafts>)->Name("small/spacecraft/sympy");
+BENCHMARK(bench::run<small::spacecraft_sympy_checked, spacecrafts>)->Name("small/spacecraft/sympy_checked");
 BENCHMARK(bench::run<small::spacecraft_kane, spacecrafts>)->Name("small/spacecraft/kane");
 BENCHMARK(bench::run<small::pendulum_hand, pendulums>)->Name("small/pendulum/hand");
+BENCHMARK(bench::run<small::pendulum_hand_checked, pendulums>)->Name("small/pendulum/hand_checked");
 BENCHMARK(bench::run<small::pendulum_sympy, pendulums>)->Name("small/pendulum/sympy");
+BENCHMARK(bench::run<small::pendulum_sympy_checked, pendulums>)->Name("small/pendulum/sympy_checked");
 BENCHMARK(bench::run<small::pendulum_kane, pendulums>)->Name("small/pendulum/kane");
+BENCHMARK(bench::run<small::pendulum_absolute_hand, pendulums>)->Name("small/pendulum_absolute/hand");
+BENCHMARK(bench::run<small::pendulum_absolute_hand_checked, pendulums>)
+    ->Name("small/pendulum_absolute/hand_checked");
+BENCHMARK(bench::run<small::pendulum_absolute_sympy, pendulums>)->Name("small/pendulum_absolute/sympy");
+BENCHMARK(bench::run<small::pendulum_absolute_sympy_checked, pendulums>)
+    ->Name("small/pendulum_absolute/sympy_checked");
+BENCHMARK(bench::run<small::pendulum_absolute_kane, pendulums>)->Name("small/pendulum_absolute/kane");
 
 int main(int argc, char** argv) { return bench::main(argc, argv, agree); }

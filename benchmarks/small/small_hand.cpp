@@ -13,9 +13,13 @@
 //   G2 = m2 g L2 and s12 = sin(q1 + q2): M = [a + 2 b c2, d + b c2; d + b c2, d],
 //   f = (b s2 u2 (2 u1 + u2) - G1 s1 - G2 s12, -b s2 u1^2 - G2 s12), solved by Cramer's rule with
 //   det M = d (a - d) - b^2 c2^2.
+// pendulum_absolute: with A = (m1 + m2) L1^2, b, d, G1, G2 as above and s12, c12 of q1 - q2:
+//   M = [A, b c12; b c12, d], f = (-b s12 u2^2 - G1 s1, b s12 u1^2 - G2 s2), det M = A d - b^2 c12^2.
+// Each has a checked twin (../common/checked.hpp).
 // Plain doubles; sin and cos of q2, q3 (the top), q1, q2 (the pendulum; s12 from them).
 #include <cmath>
 
+#include "../common/checked.hpp"
 #include "small_models.hpp"
 
 void small::top_hand(const top_in& in, top_out& out) {
@@ -66,4 +70,33 @@ void small::pendulum_hand(const pendulum_in& in, pendulum_out& out) {
   out.xd[1] = u2;
   out.xd[2] = (d * f1 - m12 * f2) * inv;
   out.xd[3] = (m11 * f2 - m12 * f1) * inv;
+}
+
+void small::pendulum_absolute_hand(const pendulum_in& in, pendulum_out& out) {
+  constexpr double m1 = 1.0, m2 = 0.7, L1 = 1.2, L2 = 0.8, g = 9.81;
+  constexpr double A = (m1 + m2) * L1 * L1, b = m2 * L1 * L2, d = m2 * L2 * L2;
+  constexpr double G1 = (m1 + m2) * g * L1, G2 = m2 * g * L2;
+  const double* x = in.x.data();
+  const double s1 = std::sin(x[0]), c1 = std::cos(x[0]), s2 = std::sin(x[1]), c2 = std::cos(x[1]);
+  const double u1 = x[2], u2 = x[3];
+  const double s12 = s1 * c2 - c1 * s2, bc12 = b * (c1 * c2 + s1 * s2), bs12 = b * s12;
+  const double f1 = -bs12 * u2 * u2 - G1 * s1, f2 = bs12 * u1 * u1 - G2 * s2;
+  const double inv = 1 / (A * d - bc12 * bc12);
+  out.xd[0] = u1;
+  out.xd[1] = u2;
+  out.xd[2] = (d * f1 - bc12 * f2) * inv;
+  out.xd[3] = (A * f2 - bc12 * f1) * inv;
+}
+
+[[gnu::flatten]] void small::top_hand_checked(const top_in& in, top_out& out) {
+  bench::checked(in, out, small::top_hand);
+}
+[[gnu::flatten]] void small::spacecraft_hand_checked(const spacecraft_in& in, spacecraft_out& out) {
+  bench::checked(in, out, small::spacecraft_hand);
+}
+[[gnu::flatten]] void small::pendulum_hand_checked(const pendulum_in& in, pendulum_out& out) {
+  bench::checked(in, out, small::pendulum_hand);
+}
+[[gnu::flatten]] void small::pendulum_absolute_hand_checked(const pendulum_in& in, pendulum_out& out) {
+  bench::checked(in, out, small::pendulum_absolute_hand);
 }

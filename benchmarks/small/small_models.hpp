@@ -1,4 +1,4 @@
-// Three small models, the right-hand side x -> dx/dt = (q', u') of each, every parameter
+// Four small models, the right-hand side x -> dx/dt = (q', u') of each, every parameter
 // a compile-time constant in every implementation (kane, hand-written closed forms, and
 // SymPy's KanesMethod printed to C with cse by tests/data/gen_small_sympy.py):
 //
@@ -14,6 +14,10 @@
 // pendulum: a planar double pendulum of point masses. A = N turned about n3 by q1, B = A about
 //   a3 by q2; P1 = O + 1.2 a1 (mass 1.0), P2 = P1 + 0.8 b1 (mass 0.7); gravity 9.81 n1.
 //   u_i = q_i'. x = (q1, q2, u1, u2).
+// pendulum_absolute: the same pendulum on absolute angles, B = N turned about n3 by q2, as a
+//   textbook and SymPy write it. x = (q1, q2, u1, u2).
+// Each hand and SymPy function has a checked twin (F_checked, ../common/checked.hpp): every input
+// and output tested finite, else NaN and status 1. kane's status is that of kane::motion.
 #pragma once
 
 #include <array>
@@ -26,6 +30,7 @@ struct input {
 template <int N>
 struct output {
   double xd[N];
+  int status;  // 0: ok
 };
 using top_in = input<6>;
 using top_out = output<6>;
@@ -37,10 +42,21 @@ using pendulum_out = output<4>;
 void top_kane(const top_in&, top_out&);
 void top_hand(const top_in&, top_out&);
 void top_sympy(const top_in&, top_out&);
+void top_hand_checked(const top_in&, top_out&);
+void top_sympy_checked(const top_in&, top_out&);
 void spacecraft_kane(const spacecraft_in&, spacecraft_out&);
 void spacecraft_hand(const spacecraft_in&, spacecraft_out&);
 void spacecraft_sympy(const spacecraft_in&, spacecraft_out&);
+void spacecraft_hand_checked(const spacecraft_in&, spacecraft_out&);
+void spacecraft_sympy_checked(const spacecraft_in&, spacecraft_out&);
 void pendulum_kane(const pendulum_in&, pendulum_out&);
 void pendulum_hand(const pendulum_in&, pendulum_out&);
 void pendulum_sympy(const pendulum_in&, pendulum_out&);
+void pendulum_hand_checked(const pendulum_in&, pendulum_out&);
+void pendulum_sympy_checked(const pendulum_in&, pendulum_out&);
+void pendulum_absolute_kane(const pendulum_in&, pendulum_out&);
+void pendulum_absolute_hand(const pendulum_in&, pendulum_out&);
+void pendulum_absolute_sympy(const pendulum_in&, pendulum_out&);
+void pendulum_absolute_hand_checked(const pendulum_in&, pendulum_out&);
+void pendulum_absolute_sympy_checked(const pendulum_in&, pendulum_out&);
 }  // namespace small

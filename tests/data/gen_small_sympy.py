@@ -1,4 +1,4 @@
-"""The three small models' right-hand sides x = (q, u) -> dx/dt = (q', u')
+"""The four small models' right-hand sides x = (q, u) -> dx/dt = (q', u')
 (benchmarks/small/small_models.hpp) as SymPy gives them to a C++ user: sympy.physics.mechanics'
 KanesMethod with every parameter a number, M u' = f solved symbolically, cse, cxxcode. Writes
 benchmarks/small/small_sympy.cpp.
@@ -16,10 +16,13 @@ conventions):
     inertia is the same in B, and dx/dt holds q1'..q7', u1'..u7' (q8' = u7 left out).
   pendulum: A = N about n3 by q1, B = A about a3 by q2, point masses at 1.2 a1 and + 0.8 b1,
     gravity 9.81 n1, u_i = q_i'.
+  pendulum_absolute: the same pendulum on absolute angles, B = N about n3 by q2.
 Each model: KanesMethod(N, q, u, kd_eqs), kanes_equations(bodies, loads) with the parameters
-exact rationals, u' = mass_matrix.LUsolve(forcing) simplified, q' = KanesMethod's kindiffdict
-(the kinematic equations solved for q') simplified; the rationals become doubles, then one cse
-over all of the model's outputs and each assignment printed by cxxcode.
+exact rationals, u' = mass_matrix.LUsolve(forcing) and q' = KanesMethod's kindiffdict (the kinematic
+equations solved for q'), as solved or simplified, whichever has fewer sin, cos and tan calls, then
+fewer operations after cse (cheaper); the rationals become doubles, then one cse
+over all of the model's outputs and each assignment printed by cxxcode. Each model's function has a
+checked twin, what a careful user adds around generated code (benchmarks/common/checked.hpp).
 """
 import os
 import sys
@@ -46,14 +49,31 @@ def solve(name, frame, q, u, kd, bodies, loads, outputs_q):
     assert list(km.q) == q and list(km.u) == u
     qd = km.kindiffdict()
     ud = km.mass_matrix.LUsolve(km.forcing)
+    raw = [qd[x.diff()] for x in outputs_q] + list(ud)
     # factor first: simplify alone on the spacecraft's LU-solved q' (up to 3861 operations)
     # takes minutes; factor cancels them to E(q)^T w / (2 |q|^2) at once.
-    rates = [sp.simplify(sp.factor(e)) for e in [qd[x.diff()] for x in outputs_q] + list(ud)]
+    simplified = [sp.simplify(sp.factor(e)) for e in raw]
     plain = {x: sp.Symbol(x.func.__name__) for x in q + u}
-    rates = [e.xreplace(plain) for e in rates]
+    rates = cheaper([e.xreplace(plain) for e in raw], [e.xreplace(plain) for e in simplified], name)
     t1 = time.perf_counter()
-    log("%s: KanesMethod, kanes_equations, solved and simplified in %.2f s" % (name, t1 - t0))
+    log("%s: KanesMethod, kanes_equations, solved and chosen in %.2f s" % (name, t1 - t0))
     return rates
+
+
+def cost(rates):
+    """(sin, cos and tan calls, operations) of the rates after one cse: what the C computes."""
+    temps, reduced = sp.cse(rates)
+    every = [e for _, e in temps] + reduced
+    calls = len(set().union(*(e.atoms(sp.sin, sp.cos, sp.tan) for e in every)))
+    return calls, sum(sp.count_ops(e) for e in every)
+
+
+def cheaper(raw, simplified, name):
+    """The rates as solved or simplified, whichever costs the C less: simplify turns the
+    pendulums' sin q1, cos q2, ... into sines of sums and double angles, more libm calls."""
+    a, b = cost(raw), cost(simplified)
+    log("%s: as solved %d calls, %d operations; simplified %d calls, %d operations" % (name, *a, *b))
+    return raw if a < b else simplified
 
 
 def doubles(e):
@@ -74,7 +94,8 @@ def function(name, signature, n_q, n_u, rates):
     body += ["  const double %s;" % ", ".join(inputs)]
     body += ["  const double %s = %s;" % (s, cxxcode(e)) for s, e in temps]
     body += ["  out.xd[%d] = %s;" % (i, cxxcode(e)) for i, e in enumerate(reduced)]
-    body += ["}"]
+    body += ["}", ""]
+    body += ["[[gnu::flatten]] void small::%s_checked(%s) { bench::checked(in, out, small::%s); }" % (name, signature, name)]
     log("%s: cse %.2f s, %d temporaries" % (name, t_cse, len(temps)))
     return body, len(temps)
 
@@ -147,6 +168,24 @@ rates = solve("pendulum", N, q, u, kd, particles, [(P1, m1 * g * N.x), (P2, m2 *
 functions.append(("pendulum_sympy", "const pendulum_in& in, pendulum_out& out", 2, 2, rates))
 
 # ---------------------------------------------------------------------------------------------
+# pendulum_absolute: the same pendulum, B turned from N by the absolute angle q2.
+q = dynamicsymbols("q1:3")
+u = dynamicsymbols("u1:3")
+N = ReferenceFrame("N")
+A = N.orientnew("A", "Axis", (q[0], N.z))
+B = N.orientnew("B", "Axis", (q[1], N.z))
+kd = [q[0].diff(t) - u[0], q[1].diff(t) - u[1]]
+O = Point("O")
+O.set_vel(N, 0)
+P1 = O.locatenew("P1", R("1.2") * A.x)
+P2 = P1.locatenew("P2", R("0.8") * B.x)
+P1.v2pt_theory(O, N, A)
+P2.v2pt_theory(P1, N, B)
+particles = [Particle("p1", P1, m1), Particle("p2", P2, m2)]
+rates = solve("pendulum_absolute", N, q, u, kd, particles, [(P1, m1 * g * N.x), (P2, m2 * g * N.x)], q)
+functions.append(("pendulum_absolute_sympy", "const pendulum_in& in, pendulum_out& out", 2, 2, rates))
+
+# ---------------------------------------------------------------------------------------------
 bodies, summary = [], []
 for name, signature, n_q, n_u, rates in functions:
     body, n_temps = function(name, signature, n_q, n_u, rates)
@@ -154,12 +193,13 @@ for name, signature, n_q, n_u, rates in functions:
     summary.append("%s %d" % (name[:-6], n_temps))
 lines = [
     "// Generated by tests/data/gen_small_sympy.py (SymPy %s); do not edit by hand." % sp.__version__,
-    "// The three small models' right-hand sides (small_models.hpp) from sympy.physics.mechanics'",
-    "// KanesMethod, the parameters numbers: u' = M^-1 f (LUsolve) and q' (kindiffdict) simplified,",
-    "// one cse per model over all its outputs, cxxcode.",
+    "// The four small models' right-hand sides (small_models.hpp) from sympy.physics.mechanics'",
+    "// KanesMethod, the parameters numbers: u' = M^-1 f (LUsolve) and q' (kindiffdict) as solved or",
+    "// simplified, whichever is cheaper; one cse per model over all its outputs, cxxcode; each with its",
+    "// checked twin (../common/checked.hpp).",
 ]
 lines += ["// cse temporaries: %s." % ", ".join(summary)]
-lines += ["#include <cmath>", "", '#include "small_models.hpp"'] + bodies
+lines += ["#include <cmath>", "", '#include "../common/checked.hpp"', '#include "small_models.hpp"'] + bodies
 path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "benchmarks", "small",
                     "small_sympy.cpp")
 with open(path, "w") as f:
