@@ -27,6 +27,11 @@ void kane_q2(const input&, output&);
 void kane_q3(const input&, output&);
 void kane_q4(const input&, output&);
 void kane_all(const input&, output&);
+void kane_kept_q1(const input&, output&);  // the evaluators kept across calls, as a controller keeps them
+void kane_kept_q2(const input&, output&);
+void kane_kept_q3(const input&, output&);
+void kane_kept_q4(const input&, output&);
+void kane_kept_all(const input&, output&);
 void hand_q1(const input&, output&);
 void hand_q2(const input&, output&);
 void hand_q3(const input&, output&);

@@ -44,6 +44,16 @@ void q4(const Ev& ev, arm6::output& out) {
   store(kane::express<N>(alpha6, ev), out.alpha);
   store(kane::express<N>(a_end, ev), out.a);
 }
+using all_reads = kane::reads<r_end, kane::e<B6, 2>, w6, v_end, alpha6, a_end>;
+// What a controller keeps across calls: its state and evaluators, updated at each call.
+struct kept {
+  state s;
+  kane::evaluator_for<state, pose_reads> pose;
+  kane::evaluator_for<state, velocity_reads> velocity;
+  kane::evaluator<state, velocity_reads::frames, kane::level::pose> jacobian;
+  kane::evaluator_for<state, acceleration_reads> acceleration;
+  kane::evaluator_for<state, all_reads> every;
+} held;
 }  // namespace
 
 namespace arm6 {
@@ -80,7 +90,7 @@ void kane_q4(const input& in, output& out) {
 }
 void kane_all(const input& in, output& out) {
   state s;
-  kane::evaluator_for<state, kane::reads<r_end, kane::e<B6, 2>, w6, v_end, alpha6, a_end>> ev_all;
+  kane::evaluator_for<state, all_reads> ev_all;
   s.q = in.q;
   s.qd = in.qd;
   s.qdd = in.qdd;
@@ -89,5 +99,31 @@ void kane_all(const input& in, output& out) {
   q2(ev_all, out);
   q3(ev_all, out);
   q4(ev_all, out);
+}
+// the same with the state and the evaluators kept across calls, as a controller keeps them
+void kane_kept_q1(const input& in, output& out) {
+  held.s.q = in.q;
+  held.pose.update(held.s);
+  q1(held.pose, out);
+}
+void kane_kept_q2(const input& in, output& out) {
+  held.s.q = in.q, held.s.qd = in.qd;
+  held.velocity.update(held.s);
+  q2(held.velocity, out);
+}
+void kane_kept_q3(const input& in, output& out) {
+  held.s.q = in.q;
+  held.jacobian.update(held.s);
+  q3(held.jacobian, out);
+}
+void kane_kept_q4(const input& in, output& out) {
+  held.s.q = in.q, held.s.qd = in.qd, held.s.qdd = in.qdd;
+  held.acceleration.update(held.s);
+  q4(held.acceleration, out);
+}
+void kane_kept_all(const input& in, output& out) {
+  held.s.q = in.q, held.s.qd = in.qd, held.s.qdd = in.qdd;
+  held.every.update(held.s);
+  q1(held.every, out), q2(held.every, out), q3(held.every, out), q4(held.every, out);
 }
 }  // namespace arm6
