@@ -38,7 +38,7 @@ for p in "${presets[@]}"; do
     cmake --build --preset "$p" >/dev/null
   fi
   for b in ./build/"$p"/benchmarks/bench_*; do
-    "$b" --benchmark_repetitions=$reps --benchmark_format=csv 2>/dev/null | grep '^"' |
+    "$b" --benchmark_repetitions=$reps --benchmark_enable_random_interleaving=true --benchmark_format=csv 2>/dev/null | grep '^"' |
       grep -Ev '_(mean|median|stddev|cv)"' | sed "s/^/$p,/"
   done
 done >"$work/runs.csv"
