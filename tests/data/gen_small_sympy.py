@@ -149,41 +149,29 @@ assert not any(sp.Symbol("q8") in e.free_symbols for e in rates)
 functions.append(("spacecraft_sympy", "const spacecraft_in& in, spacecraft_out& out", 7, 7, rates))
 
 # ---------------------------------------------------------------------------------------------
-# pendulum: a planar double pendulum of point masses, u = q'.
-q = dynamicsymbols("q1:3")
-u = dynamicsymbols("u1:3")
-N = ReferenceFrame("N")
-A = N.orientnew("A", "Axis", (q[0], N.z))
-B = A.orientnew("B", "Axis", (q[1], A.z))
-kd = [q[0].diff(t) - u[0], q[1].diff(t) - u[1]]
-O = Point("O")
-O.set_vel(N, 0)
-P1 = O.locatenew("P1", R("1.2") * A.x)
-P2 = P1.locatenew("P2", R("0.8") * B.x)
-P1.v2pt_theory(O, N, A)
-P2.v2pt_theory(P1, N, B)
-m1, m2, g = 1, R("0.7"), R("9.81")
-particles = [Particle("p1", P1, m1), Particle("p2", P2, m2)]
-rates = solve("pendulum", N, q, u, kd, particles, [(P1, m1 * g * N.x), (P2, m2 * g * N.x)], q)
-functions.append(("pendulum_sympy", "const pendulum_in& in, pendulum_out& out", 2, 2, rates))
+# pendulum: a planar double pendulum of point masses, u = q'; B turned from A by q2 (relative),
+# or from N (absolute: pendulum_absolute).
+def pendulum(name, absolute):
+    q = dynamicsymbols("q1:3")
+    u = dynamicsymbols("u1:3")
+    N = ReferenceFrame("N")
+    A = N.orientnew("A", "Axis", (q[0], N.z))
+    B = (N if absolute else A).orientnew("B", "Axis", (q[1], N.z if absolute else A.z))
+    kd = [q[0].diff(t) - u[0], q[1].diff(t) - u[1]]
+    O = Point("O")
+    O.set_vel(N, 0)
+    P1 = O.locatenew("P1", R("1.2") * A.x)
+    P2 = P1.locatenew("P2", R("0.8") * B.x)
+    P1.v2pt_theory(O, N, A)
+    P2.v2pt_theory(P1, N, B)
+    m1, m2, g = 1, R("0.7"), R("9.81")
+    particles = [Particle("p1", P1, m1), Particle("p2", P2, m2)]
+    rates = solve(name, N, q, u, kd, particles, [(P1, m1 * g * N.x), (P2, m2 * g * N.x)], q)
+    functions.append((name + "_sympy", "const pendulum_in& in, pendulum_out& out", 2, 2, rates))
 
-# ---------------------------------------------------------------------------------------------
-# pendulum_absolute: the same pendulum, B turned from N by the absolute angle q2.
-q = dynamicsymbols("q1:3")
-u = dynamicsymbols("u1:3")
-N = ReferenceFrame("N")
-A = N.orientnew("A", "Axis", (q[0], N.z))
-B = N.orientnew("B", "Axis", (q[1], N.z))
-kd = [q[0].diff(t) - u[0], q[1].diff(t) - u[1]]
-O = Point("O")
-O.set_vel(N, 0)
-P1 = O.locatenew("P1", R("1.2") * A.x)
-P2 = P1.locatenew("P2", R("0.8") * B.x)
-P1.v2pt_theory(O, N, A)
-P2.v2pt_theory(P1, N, B)
-particles = [Particle("p1", P1, m1), Particle("p2", P2, m2)]
-rates = solve("pendulum_absolute", N, q, u, kd, particles, [(P1, m1 * g * N.x), (P2, m2 * g * N.x)], q)
-functions.append(("pendulum_absolute_sympy", "const pendulum_in& in, pendulum_out& out", 2, 2, rates))
+
+pendulum("pendulum", False)
+pendulum("pendulum_absolute", True)
 
 # ---------------------------------------------------------------------------------------------
 bodies, summary = [], []
