@@ -73,7 +73,11 @@ struct tree_partials {
         rot[g] = e.after(rot[p]);
         at[g] = all_zero(O) ? at[p] : at[p] + by_columns(rot[p], bf.offset[g]);
         if (r >= 0) {
-          const vec k = A >= 0 ? rot[g][std::size_t(A)] : by_columns(rot[g], kg);
+          vec k;
+          if constexpr (A >= 0)
+            k = rot[g][std::size_t(A)];  // the turn's axis: a column of R
+          else
+            k = by_columns(rot[g], kg);
           screw[std::size_t(r)] = {k, cross3(at[g], k)};
         }
         own[g] = about_root(own[g], rot[g], at[g]);
