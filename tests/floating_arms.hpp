@@ -4,12 +4,15 @@
 // along b3 and a torque pair at each shoulder.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <random>
 #include <type_traits>
 
 #include <kane/kane.hpp>
+
+#include "differences.hpp"
 
 namespace floating_arms {
 using kane::dot;
@@ -96,5 +99,53 @@ State sample(unsigned seed) {
   for (std::size_t i = 0; i < 4; ++i) s.q[i] /= norm;
   s.r = {70.0, 0.4, -0.3};
   return s;
+}
+
+// s moved by h along the motion of u_j: for j = 0..2 a turn of B by h about b_(j+1), e = e (cos h/2,
+// sin h/2 b_(j+1)) (a product of quaternions); else q_(j+2) += h (u_j = q_(j+2)').
+template <class State>
+State moved(State s, std::size_t j, double h) {
+  if (j >= 3) {
+    s.q[j + 1] += h;
+    return s;
+  }
+  std::array<double, 4> b{std::cos(h / 2), 0.0, 0.0, 0.0};
+  b[1 + j] = std::sin(h / 2);
+  const std::array<double, 4> a{s.q[0], s.q[1], s.q[2], s.q[3]};
+  s.q[0] = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
+  s.q[1] = a[0] * b[1] + b[0] * a[1] + a[2] * b[3] - a[3] * b[2];
+  s.q[2] = a[0] * b[2] + b[0] * a[2] + a[3] * b[1] - a[1] * b[3];
+  s.q[3] = a[0] * b[3] + b[0] * a[3] + a[1] * b[2] - a[2] * b[1];
+  return s;
+}
+// The analytical derivatives of inverse and forward dynamics against central differences of
+// kane::inverse_dynamics and kane::forward_dynamics along the motion of each speed (relative errors).
+template <class Model>
+std::array<double, 4> derivatives_against_differences(const typename Model::state& s, double h = 1e-6) {
+  using system = typename Model::system;
+  using evaluator = typename Model::evaluator;
+  constexpr auto n = int(evaluator::nu);
+  evaluator ev;
+  ev.update(s);
+  const auto id = kane::inverse_dynamics_derivatives<system>(ev);
+  const auto fd = kane::forward_dynamics_derivatives<system>(ev);
+  Eigen::Matrix<double, n, n> tq, tu, aq, au;
+  const auto difference = [&](const auto& p, const auto& m, auto& t, auto& a, std::size_t j) {
+    evaluator ep, em;
+    ep.update(p), em.update(m);
+    const auto c = Eigen::Index(j);
+    t.col(c) = (kane::inverse_dynamics<system>(ep).tau - kane::inverse_dynamics<system>(em).tau) / (2 * h);
+    a.col(c) = (kane::forward_dynamics<system>(ep).ud - kane::forward_dynamics<system>(em).ud) / (2 * h);
+  };
+  for (std::size_t j = 0; j < std::size_t(n); ++j) {
+    difference(moved(s, j, h), moved(s, j, -h), tq, aq, j);
+    auto p = s, m = s;
+    p.u[j] += h, m.u[j] -= h;
+    difference(p, m, tu, au, j);
+  }
+  const bool ok = id.status == kane::solve_status::ok && fd.status == kane::solve_status::ok;
+  const double bad = ok ? 0.0 : 1.0;
+  return {relative(id.dtau_dq, tq) + bad, relative(id.dtau_du, tu) + bad, relative(fd.dud_dq, aq) + bad,
+          relative(fd.dud_du, au) + bad};
 }
 }  // namespace floating_arms

@@ -3,7 +3,8 @@
 // kane::motion (1e-7 relative) and against jets of one direction carried through kane::motion
 // (1e-10), M against the Hessian of the kinetic energy and x' against the conservation of energy;
 // kane::inverse_dynamics on Kane's sums (rates in N's components, not a free joint)
-// against M u' - f.
+// against M u' - f; the analytical derivatives of inverse and forward dynamics against central
+// differences along the motion of each speed (1e-7) and against the jets of kane::linearize (1e-10).
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -84,6 +85,29 @@ TEST_CASE("linearize: a floating base with two eight-link arms against central d
     for (std::size_t i = 0; i < nx; ++i) along(Eigen::Index(i)) = jdx[i].part(0);
     CHECK(relative(A::vector_x(lin.A * dir.head<int(nx)>() + lin.B * dir.tail<int(nr)>()), along) < 1e-10);
   }
+}
+
+TEST_CASE("dynamics derivatives: a floating base with two eight-link arms against differences and jets",
+          "[derivatives]") {
+  using model = fa::model<8>;
+  constexpr std::size_t nq = model::state::nq, nu = model::state::nu;
+  const auto s = fa::sample<model::state>(5);
+  const auto errors = fa::derivatives_against_differences<model>(s, 1e-5);
+  for (double x : errors) CHECK(x < 1e-7);
+  // the jets of kane::linearize in q: along the motion of u_j, G(e) de/dtheta for a turn of B, q_(j+2)
+  model::evaluator ev;
+  ev.update(s);
+  const auto d = kane::forward_dynamics_derivatives<model::system>(ev);
+  REQUIRE(d.status == kane::solve_status::ok);
+  const auto lin = kane::linearize<model::system, model::evaluator, model::inputs>(s);
+  REQUIRE(lin.status == kane::solve_status::ok);
+  const auto rows = lin.A.bottomRows<int(nu)>();
+  Eigen::Matrix<double, int(nu), int(nu)> dq;
+  dq.leftCols<3>() = rows.leftCols<4>() * kane::detail::attitude_map(s.q[0], s.q[1], s.q[2], s.q[3]);
+  dq.rightCols<int(nu - 3)>() = rows.middleCols<int(nu - 3)>(4);
+  CHECK(relative(d.dud_dq, dq) < 1e-10);
+  CHECK(relative(d.dud_du, rows.rightCols<int(nu)>()) < 1e-10);
+  static_assert(nq == nu + 1);
 }
 
 TEST_CASE(

@@ -403,3 +403,12 @@ TEST_CASE("the recursive passes with a free joint carrying two two-link arms equ
   for (unsigned seed : {3u, 8u})
     against_sums<system, evaluator>(fa::sample<model::state>(seed), 1e-14, 1e-13);
 }
+
+TEST_CASE("dynamics derivatives: a free joint carrying two two-link arms against central differences",
+          "[derivatives]") {
+  using model = fa::model<2>;
+  for (unsigned seed : {3u, 8u}) {
+    const auto errors = fa::derivatives_against_differences<model>(fa::sample<model::state>(seed));
+    for (double x : errors) CHECK(x < 1e-7);
+  }
+}

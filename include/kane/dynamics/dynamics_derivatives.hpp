@@ -4,7 +4,9 @@
 //   const auto [tau, dtau_dq, dtau_du, M, status] = kane::inverse_dynamics_derivatives<System>(ev);
 //   const auto [ud, dud_dq, dud_du, status] = kane::forward_dynamics_derivatives<System>(ev);
 //
-// du'/dx = -M^-1 dtau/dx at u', M factored once.
+// du'/dx = -M^-1 dtau/dx at u', M factored once. Column r is the derivative along the motion of u_r:
+// q_c for u_r = q_c'; for a free joint's u_1..6 a rotation vector in its frame's axes, then its
+// origin's coordinates.
 #pragma once
 
 #include <cstddef>
@@ -30,7 +32,7 @@ namespace detail {
 // Sys takes the analytical derivatives with the evaluator's speeds.
 template <class Sys, class Ev>
 constexpr bool analytical_derivatives() {
-  if constexpr (!recursive_form<Sys, Ev> || !speeds_of<Ev>::identity)
+  if constexpr (!recursive_form<Sys, Ev> || !(speeds_of<Ev>::identity || free_joint<Sys, Ev>))
     return false;
   else
     return steady_loads_of<Sys, joint_form_of<Sys, Ev>>;
@@ -43,7 +45,7 @@ constexpr bool loads_checked(list<X...>, std::index_sequence<I...>) {
 }
 template <class Sys, class Ev>
 constexpr bool derivatives_checked() {
-  if constexpr (!recursive_form<Sys, Ev> || !speeds_of<Ev>::identity)
+  if constexpr (!recursive_form<Sys, Ev> || !(speeds_of<Ev>::identity || free_joint<Sys, Ev>))
     return refused<error::analytical_derivatives_need_a_tree_of_simple_rotations_with_u_equal_to_q_dot<Sys>,
                    fix::call_kane_linearize>;
   else
@@ -94,7 +96,7 @@ forward_dynamics_derivatives(const Ev& ev) {
     // u' first; one pass gives M and dtau/dx at u'; du'/dx = -M^-1 dtau/dx by plain loops for a few
     // speeds, by articulated bodies above, which also give u' = M^-1 f.
     using JF = detail::joint_form_of<Sys, Ev>;
-    if constexpr (n <= detail::articulated_above) {
+    if constexpr (n <= detail::articulated_above || detail::free_joint<Sys, Ev>) {
       const auto fd = forward_dynamics<Sys>(ev);
       out.ud = fd.ud, out.status = fd.status;
       if (out.status == solve_status::ok) {

@@ -3,6 +3,7 @@
 // constants, parameters and inputs, so a change of q turns them with the body.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <type_traits>
 #include <utility>
@@ -31,17 +32,26 @@ constexpr bool steady_scalar() {
   else
     return false;
 }
-// The frame of the nearest edge at or above f that a speed turns (0: the root).
+// The frame of the nearest edge at or above f that a speed or the free joint turns (0: the root).
 template <class T>
 constexpr int body_of(const T& t, int f) {
-  while (f > 0 && t.speed[std::size_t(f)] < 0) f = t.parent[std::size_t(f)];
+  while (f > 0 && t.speed[std::size_t(f)] < 0 && f != t.free) f = t.parent[std::size_t(f)];
   return f < 0 ? 0 : f;
 }
-// e<G, I> is fixed in the body of frame `body`: G is, or an edge above G turns about e<G, I>.
+// The coordinate axis each frame's edge turns about (-1: none or another).
+template <class JF>
+inline constexpr auto edge_axes = []<class... F>(list<F...>) {
+  return std::array<int, sizeof...(F)>{turn_axis<F>()...};
+}(typename JF::frame_list{});
+// e<G, I> is fixed in the body of frame `body`: G is, or an edge above G turns about e<G, I>, or
+// every edge from `body` up to G does (a joint's torque along its axis in the parent's components).
 template <class JF, class G, int I>
 constexpr bool unit_fixed_in(int body) {
   constexpr int g = index_in<G>(typename JF::frame_list{});
   if (g >= 0 && body_of(JF::table, g) == body) return true;
+  int h = body;
+  while (h > 0 && h != g && edge_axes<JF>[std::size_t(h)] == I - 1) h = JF::table.parent[std::size_t(h)];
+  if (g >= 0 && h == g) return true;
   if constexpr (!std::is_void_v<typename G::tree_parent> && turn_axis<G>() == I - 1)
     return unit_fixed_in<JF, typename G::tree_parent, I>(body);
   else
