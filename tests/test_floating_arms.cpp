@@ -1,10 +1,11 @@
 // A floating base on Euler parameters with body rates carrying two spatial arms (floating_arms.hpp):
 // with eight-link arms (22 speeds, a free joint), kane::linearize against central differences of
 // kane::motion (1e-7 relative) and against jets of one direction carried through kane::motion
-// (1e-10), M against the Hessian of the kinetic energy and x' against the conservation of energy;
-// kane::inverse_dynamics on Kane's sums (rates in N's components, not a free joint)
-// against M u' - f; the analytical derivatives of inverse and forward dynamics against central
-// differences along the motion of each speed (1e-7) and against the jets of kane::linearize (1e-10).
+// (1e-10), its Euler parameters' columns along the turns of B, M against the Hessian of the kinetic energy
+// and x' against the conservation of energy; kane::inverse_dynamics on Kane's sums (rates in N's components,
+// not a free joint) against M u' - f; the analytical derivatives of inverse and forward dynamics against
+// central differences along the motion of each speed (1e-7) and against jets through the whole evaluator
+// (1e-10).
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -34,6 +35,13 @@ struct arms {
     REQUIRE(rhs.status() == kane::solve_status::ok);
     return Eigen::Map<const vector_x>(dx.data());
   }
+  // dx = T dx~: the Euler parameters q_1..4 moved by a turn of B in its axes, de = G(e) dtheta
+  static Eigen::Matrix<double, int(nx), int(nx - 1)> tangent(const state& s) {
+    Eigen::Matrix<double, int(nx), int(nx - 1)> t = Eigen::Matrix<double, int(nx), int(nx - 1)>::Zero();
+    t.template topLeftCorner<4, 3>() = kane::detail::attitude_map(s.q[0], s.q[1], s.q[2], s.q[3]);
+    t.template bottomRightCorner<int(nx - 4), int(nx - 4)>().setIdentity();
+    return t;
+  }
 };
 }  // namespace
 
@@ -60,8 +68,13 @@ TEST_CASE("linearize: a floating base with two eight-link arms against central d
     (j < nx ? xm[j] : rm[j - nx]) -= h;
     diff.col(Eigen::Index(j)) = (A::rates(s, xp, rp) - A::rates(s, xm, rm)) / (2 * h);
   }
-  CHECK(relative(lin.A, diff.leftCols<int(nx)>()) < 1e-7);
+  // u' takes the Euler parameters' columns along the turns of B: none along |e|
+  const auto t = A::tangent(s);
+  CHECK(relative(lin.A * t, diff.leftCols<int(nx)>() * t) < 1e-7);
+  CHECK(relative(lin.A.topRows<int(nq)>(), diff.topLeftCorner<int(nq), int(nx)>()) < 1e-7);
   CHECK(relative(lin.B, diff.rightCols<int(nr)>()) < 1e-7);
+  const Eigen::Vector4d e(s.q[0], s.q[1], s.q[2], s.q[3]);
+  CHECK((lin.A.bottomLeftCorner<int(nu), 4>() * e).cwiseAbs().maxCoeff() < 1e-12);
 
   // one direction d of (x, r) on jets through kane::motion: u' = M^-1 f with M and f on jets (jets of
   // kane::linearize's width, so that both share their evaluator)
@@ -73,6 +86,7 @@ TEST_CASE("linearize: a floating base with two eight-link arms against central d
   for (int k = 0; k < 2; ++k) {
     Eigen::Matrix<double, int(nx + nr), 1> dir;
     for (auto& v : dir) v = d(rng);
+    dir.head<4>() = t.topLeftCorner<4, 3>() * dir.segment<3>(4);  // a turn of B
     auto js = kane::detail::lift<kane::detail::linearize_batch>(s);
     std::array<J, nx> jx, jdx;
     for (std::size_t i = 0; i < nx; ++i) jx[i] = x[i] + J::variable(0.0, 0) * dir(Eigen::Index(i));
@@ -90,24 +104,29 @@ TEST_CASE("linearize: a floating base with two eight-link arms against central d
 TEST_CASE("dynamics derivatives: a floating base with two eight-link arms against differences and jets",
           "[derivatives]") {
   using model = fa::model<8>;
-  constexpr std::size_t nq = model::state::nq, nu = model::state::nu;
-  const auto s = fa::sample<model::state>(5);
+  using A = arms<model>;
+  constexpr std::size_t nq = A::nq, nu = A::nu;
+  auto s = fa::sample<model::state>(5);
+  for (std::size_t i = 0; i < 4; ++i) s.q[i] *= 1.2;  // |e| = 1.2: q' and its rows hold at any norm
   const auto errors = fa::derivatives_against_differences<model>(s, 1e-5);
   for (double x : errors) CHECK(x < 1e-7);
-  // the jets of kane::linearize in q: along the motion of u_j, G(e) de/dtheta for a turn of B, q_(j+2)
+  // kane::linearize by the derivatives against jets in batches through the whole evaluator
+  const auto lin = kane::linearize<model::system, model::evaluator, model::inputs>(s);
+  const auto jets = kane::detail::linearize_in_batches<model::system, model::evaluator, model::inputs>(s);
+  REQUIRE(lin.status == kane::solve_status::ok);
+  REQUIRE(jets.status == kane::solve_status::ok);
+  const auto t = A::tangent(s);
+  CHECK(relative(lin.A * t, jets.A * t) < 1e-10);
+  CHECK(relative(lin.A.topRows<int(nq)>(), jets.A.topRows<int(nq)>()) < 1e-10);
+  CHECK(relative(lin.B, jets.B) < 1e-10);
+  CHECK(relative(lin.rate, jets.rate) < 1e-12);
   model::evaluator ev;
   ev.update(s);
   const auto d = kane::forward_dynamics_derivatives<model::system>(ev);
   REQUIRE(d.status == kane::solve_status::ok);
-  const auto lin = kane::linearize<model::system, model::evaluator, model::inputs>(s);
-  REQUIRE(lin.status == kane::solve_status::ok);
-  const auto rows = lin.A.bottomRows<int(nu)>();
-  Eigen::Matrix<double, int(nu), int(nu)> dq;
-  dq.leftCols<3>() = rows.leftCols<4>() * kane::detail::attitude_map(s.q[0], s.q[1], s.q[2], s.q[3]);
-  dq.rightCols<int(nu - 3)>() = rows.middleCols<int(nu - 3)>(4);
-  CHECK(relative(d.dud_dq, dq) < 1e-10);
-  CHECK(relative(d.dud_du, rows.rightCols<int(nu)>()) < 1e-10);
-  static_assert(nq == nu + 1);
+  const Eigen::Matrix<double, int(nu), int(2 * nu)> tangent_rows = jets.A.bottomRows<int(nu)>() * t;
+  CHECK(relative(d.dud_dq, tangent_rows.leftCols<int(nu)>()) < 1e-10);
+  CHECK(relative(d.dud_du, tangent_rows.rightCols<int(nu)>()) < 1e-10);
 }
 
 TEST_CASE(

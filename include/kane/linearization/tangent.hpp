@@ -18,6 +18,7 @@
 
 #include "kane/detail/list.hpp"
 #include "kane/kinematics/edges.hpp"
+#include "kane/linearization/attitude_map.hpp"
 #include "kane/linearization/linearize.hpp"
 
 #pragma GCC diagnostic push
@@ -48,13 +49,6 @@ constexpr tangent_layout<NQ> tangent_layout_of(list<F...>) {
       }(),
       ...);
   return out;
-}
-// G(e) of the quaternion e = (e0, e1, e2, e3): de = G de* dtheta.
-template <class S>
-Eigen::Matrix<S, 4, 3> attitude_map(S e0, S e1, S e2, S e3) {
-  Eigen::Matrix<S, 4, 3> g;
-  g << -e1, -e2, -e3, e0, -e3, e2, e3, e0, -e1, -e2, e1, e0;
-  return S(0.5) * g;
 }
 }  // namespace detail
 

@@ -1,8 +1,11 @@
 // kane::linearize of a system that takes the analytical derivatives (dynamics_derivatives.hpp):
 // x = (q, u) with q' = u, so A = [0 1; du'/dq du'/du], and B = -M^-1 dtau/dr with dtau/dr carried
-// by jets of the inputs alone through inverse dynamics at u'.
+// by jets of the inputs alone through inverse dynamics at u'. With a free joint, q holds its Euler
+// parameters e, with e' = G(e) w / |e| = e (0, w) / (2 |e|), w = u_1..3 (the kinematic equations); du'/de is
+// du'/dtheta L, L = 4 G(e)^T / |e|^2 (tangent.hpp): no column along |e|.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <type_traits>
@@ -13,6 +16,7 @@
 #include "kane/dynamics/dynamics_derivatives.hpp"
 #include "kane/dynamics/inverse_dynamics.hpp"
 #include "kane/dynamics/mass_matrix_and_forcing.hpp"
+#include "kane/linearization/attitude_map.hpp"
 #include "kane/linearization/jet.hpp"
 #include "kane/linearization/lift.hpp"
 #include "kane/linearization/linear_model.hpp"
@@ -25,10 +29,44 @@ namespace kane::detail {
 // u = q' of all coordinates.
 template <class Sys, class Ev>
 constexpr bool analytical_linearization() {
-  if constexpr (!std::is_floating_point_v<typename Ev::scalar> || Ev::state_type::nq != Ev::nu)
+  constexpr std::size_t nq = Ev::state_type::nq, nu = Ev::nu;
+  if constexpr (!std::is_floating_point_v<typename Ev::scalar> || !analytical_derivatives<Sys, Ev>())
     return false;
   else
-    return analytical_derivatives<Sys, Ev>();
+    return nq == nu + (free_joint<Sys, Ev> ? 1 : 0);
+}
+
+// The rows of q' and the columns of q in u's rows, with a free joint (speed_layout.hpp).
+template <class Sys, class Ev, class St, class D, class A, class R>
+void free_kinematics(const St& s, const D& dud_dq, A& a, R& rate) {
+  using S = typename Ev::scalar;
+  using JF = joint_form_of<Sys, Ev>;
+  constexpr std::size_t nq = St::nq, nu = Ev::nu;
+  constexpr auto layout = layout_of<speeds_of<Ev>, typename Ev::root, typename JF::frame_list, nq>::value;
+  constexpr auto c = frame_at<JF, std::size_t(JF::table.free)>::step::coordinates;
+  const auto col = [](std::size_t r) { return Eigen::Index(r); };
+  for (std::size_t i = 0; i < nq; ++i) {  // q_c' = u_r
+    const int r = layout.rate[i];
+    if (r == -1) continue;  // an Euler parameter, below
+    const std::size_t k = r >= 0 ? std::size_t(r) : 3 + i + 1 - layout.position;
+    a(Eigen::Index(i), col(nq + k)) = S(1), rate(Eigen::Index(i)) = s.u[k];
+    a.block(Eigen::Index(nq), Eigen::Index(i), Eigen::Index(nu), 1) = dud_dq.col(col(k));
+  }
+  const Eigen::Matrix<S, 4, 1> e(s.q[c[0] - 1], s.q[c[1] - 1], s.q[c[2] - 1], s.q[c[3] - 1]);
+  const S w1 = s.u[0], w2 = s.u[1], w3 = s.u[2], norm2 = e.squaredNorm(), norm = std::sqrt(norm2);
+  Eigen::Matrix<S, 4, 4> p;  // e (0, w) = P e (a product of quaternions)
+  p << S(0), -w1, -w2, -w3, w1, S(0), w3, -w2, w2, -w3, S(0), w1, w3, w2, -w1, S(0);
+  const Eigen::Matrix<S, 4, 1> ed = p * e / (S(2) * norm);
+  const Eigen::Matrix<S, 4, 3> g = attitude_map(e(0), e(1), e(2), e(3));
+  const Eigen::Matrix<S, 4, 4> de = S(0.5) * p / norm - ed * e.transpose() / norm2;
+  const Eigen::Matrix<S, int(nu), 4> du = dud_dq.template leftCols<3>() * (S(4) / norm2) * g.transpose();
+  for (std::size_t i = 0; i < 4; ++i) {
+    const auto row = Eigen::Index(c[i] - 1);
+    rate(row) = ed(Eigen::Index(i));
+    for (std::size_t j = 0; j < 4; ++j) a(row, Eigen::Index(c[j] - 1)) = de(Eigen::Index(i), Eigen::Index(j));
+    for (Eigen::Index j = 0; j < 3; ++j) a(row, Eigen::Index(nq) + j) = g(Eigen::Index(i), j) / norm;
+    a.block(Eigen::Index(nq), row, Eigen::Index(nu), 1) = du.col(Eigen::Index(i));
+  }
 }
 
 template <class Sys, class Ev, class In>
@@ -41,9 +79,13 @@ model_of<Ev, In> linearize_tree(const typename Ev::state_type& s) {
   const auto d = forward_dynamics_derivatives<Sys>(ev);
   model_of<Ev, In> out;
   out.A.setZero();
-  out.A.block(0, m, m, m).setIdentity();
-  out.A.block(m, 0, m, m) = d.dud_dq, out.A.block(m, m, m, m) = d.dud_du;
-  for (std::size_t i = 0; i < n; ++i) out.rate(Eigen::Index(i)) = s.u[i];
+  if constexpr (!free_joint<Sys, Ev>) {
+    out.A.block(0, m, m, m).setIdentity();
+    out.A.block(m, 0, m, m) = d.dud_dq;
+    for (std::size_t i = 0; i < n; ++i) out.rate(Eigen::Index(i)) = s.u[i];
+  } else
+    free_kinematics<Sys, Ev>(s, d.dud_dq, out.A, out.rate);
+  out.A.bottomRightCorner(m, m) = d.dud_du;
   out.rate.tail(m) = d.ud;
   out.status = d.status;
   if constexpr (In::n > 0) {
@@ -61,7 +103,7 @@ model_of<Ev, In> linearize_tree(const typename Ev::state_type& s) {
     const Eigen::LLT<Eigen::Matrix<S, int(n), int(n)>> llt(mass_matrix<Sys>(ev).M);
     llt.solveInPlace(b);
     out.B.setZero();
-    out.B.block(m, 0, m, Eigen::Index(In::n)) = b;
+    out.B.bottomRows(m) = b;
   }
   if (out.status != solve_status::ok)
     out.A.setConstant(std::numeric_limits<S>::quiet_NaN()),
