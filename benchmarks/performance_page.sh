@@ -12,15 +12,17 @@ benchmarks/performance_page.sh                # every table: build both presets,
 benchmarks/performance_page.sh --no-build     # every table, the presets' binaries as they are
 benchmarks/performance_page.sh --no-run       # the compile table alone
 benchmarks/performance_page.sh --no-compile   # the run-time tables alone
+benchmarks/performance_page.sh --no-compile --only=NAME   # the table of bench_NAME alone, dated
 EOF
   exit 2
 }
-build=1 run=1 compile=1
+build=1 run=1 compile=1 only=
 for arg in "$@"; do
   case $arg in
     --no-build) build=0 ;;
     --no-run) run=0 build=0 ;;
     --no-compile) compile=0 ;;
+    --only=*) only=${arg#--only=} ;;
     *) usage ;;
   esac
 done
@@ -35,9 +37,9 @@ trap 'rm -rf "$work"' EXIT
 for p in "${presets[@]}"; do
   if [ $build = 1 ]; then
     cmake --preset "$p" >/dev/null
-    cmake --build --preset "$p" >/dev/null
+    cmake --build --preset "$p" ${only:+--target bench_$only} >/dev/null
   fi
-  for b in ./build/"$p"/benchmarks/bench_*; do
+  for b in ./build/"$p"/benchmarks/bench_${only:-*}; do
     "$b" --benchmark_repetitions=$reps --benchmark_enable_random_interleaving=true --benchmark_format=csv 2>/dev/null | grep '^"' |
       grep -Ev '_(mean|median|stddev|cv)"' | sed "s/^/$p,/"
   done
@@ -116,7 +118,11 @@ awk -F, -v reps=$reps -v dir="$work" '
   }' "$work/runs.csv"
 
 # --- the machine of the run-time tables (the compile table names its own), then every block measured
-[ $run = 1 ] && {
+if [ -n "$only" ]; then  # one table: its own date and commit, the page's line as it is
+  printf '\nMeasured on %s at commit %s, apart from the other tables.\n' "$(date -u +%Y-%m-%d)" \
+    "$(git rev-parse --short HEAD)" >>"$work/table_$only.md"
+fi
+[ $run = 1 ] && [ -z "$only" ] && {
   printf 'Run-time tables measured on %s at commit %s: %s, %s cores, %s, Eigen %s.\n' "$(date -u +%Y-%m-%d)" \
     "$(git rev-parse --short HEAD)" "$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')" "$(nproc)" \
     "$(g++ --version | head -1)" "$(sed -n 's/#define EIGEN_[A-Z]*_VERSION \([0-9]*\)/\1/p' /usr/include/eigen3/Eigen/src/Core/util/Macros.h | paste -sd.)"
