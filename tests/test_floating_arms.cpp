@@ -1,17 +1,15 @@
 // A floating base on Euler parameters with body rates carrying two spatial arms (floating_arms.hpp):
 // with eight-link arms (22 speeds, a free joint), kane::linearize against central differences of
-// kane::motion (1e-7 relative) and against jets of one direction carried through kane::motion
-// (1e-10), its Euler parameters' columns along the turns of B, M against the Hessian of the kinetic energy
-// and x' against the conservation of energy; kane::inverse_dynamics on Kane's sums (rates in N's components,
-// not a free joint) against M u' - f; the analytical derivatives of inverse and forward dynamics against
-// central differences along the motion of each speed (1e-7) and against jets through the whole evaluator
-// (1e-10).
+// kane::motion (1e-7 relative), its Euler parameters' columns along the turns of B; the analytical
+// derivatives of inverse and forward dynamics against central differences along the motion of each
+// speed (1e-7), and kane::linearize by them against jets through the whole evaluator (1e-10); M against
+// the Hessian of the kinetic energy and x' against the conservation of energy; kane::inverse_dynamics on
+// Kane's sums (rates in N's components, not a free joint) against M u' - f.
 #include <catch2/catch.hpp>
 
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <random>
 
 #include <kane/kane.hpp>
 
@@ -45,8 +43,7 @@ struct arms {
 };
 }  // namespace
 
-TEST_CASE("linearize: a floating base with two eight-link arms against central differences and jets",
-          "[linearize]") {
+TEST_CASE("linearize: a floating base with two eight-link arms against central differences", "[linearize]") {
   using model = fa::model<8>;
   using A = arms<model>;
   constexpr std::size_t nq = A::nq, nu = A::nu, nx = A::nx, nr = A::nr;
@@ -75,30 +72,6 @@ TEST_CASE("linearize: a floating base with two eight-link arms against central d
   CHECK(relative(lin.B, diff.rightCols<int(nr)>()) < 1e-7);
   const Eigen::Vector4d e(s.q[0], s.q[1], s.q[2], s.q[3]);
   CHECK((lin.A.bottomLeftCorner<int(nu), 4>() * e).cwiseAbs().maxCoeff() < 1e-12);
-
-  // one direction d of (x, r) on jets through kane::motion: u' = M^-1 f with M and f on jets (jets of
-  // kane::linearize's width, so that both share their evaluator)
-  using J = kane::jet<double, kane::detail::linearize_batch>;
-  using jet_evaluator = kane::system_evaluator<model::system, model::speeds, kane::level::acceleration,
-                                               kane::state_of<model::system, model::speeds, J>>;
-  std::mt19937 rng(9);
-  std::uniform_real_distribution<double> d(-1.0, 1.0);
-  for (int k = 0; k < 2; ++k) {
-    Eigen::Matrix<double, int(nx + nr), 1> dir;
-    for (auto& v : dir) v = d(rng);
-    dir.head<4>() = t.topLeftCorner<4, 3>() * dir.segment<3>(4);  // a turn of B
-    auto js = kane::detail::lift<kane::detail::linearize_batch>(s);
-    std::array<J, nx> jx, jdx;
-    for (std::size_t i = 0; i < nx; ++i) jx[i] = x[i] + J::variable(0.0, 0) * dir(Eigen::Index(i));
-    kane::motion<model::system, jet_evaluator> rhs(js);
-    for (std::size_t i = 0; i < nr; ++i)
-      rhs.inputs()[i] = s.r[i] + J::variable(0.0, 0) * dir(Eigen::Index(nx + i));
-    rhs(jx, jdx, js.t);
-    REQUIRE(rhs.status() == kane::solve_status::ok);
-    A::vector_x along;
-    for (std::size_t i = 0; i < nx; ++i) along(Eigen::Index(i)) = jdx[i].part(0);
-    CHECK(relative(A::vector_x(lin.A * dir.head<int(nx)>() + lin.B * dir.tail<int(nr)>()), along) < 1e-10);
-  }
 }
 
 TEST_CASE("dynamics derivatives: a floating base with two eight-link arms against differences and jets",

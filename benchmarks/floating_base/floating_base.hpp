@@ -25,6 +25,8 @@ void kane_derivatives(const input&, output&);
 // kane::linearize: by the analytical derivatives, and by jets through the whole evaluator
 void kane_linearize(const input&, output&);
 void jets_linearize(const input&, output&);
+// kane::linearize_tangent: the base's attitude as a rotation vector; u's rows of A~ (by q~, then u)
+void kane_linearize_tangent(const input&, output&);
 // the derivatives by central differences of kane_forward: 4 nu calls
 void central(const input&, output&);
 }  // namespace floating_base

@@ -47,13 +47,14 @@ void along_speeds(const floating_base::input& in, const double* a, double* dq) {
 
 void agree() {
   for (const auto& in : states) {
-    floating_base::output f{}, d{}, c{}, l{}, j{};
+    floating_base::output f{}, d{}, c{}, l{}, j{}, t{};
     floating_base::kane_forward(in, f);
     floating_base::kane_derivatives(in, d);
     floating_base::central(in, c);
     floating_base::kane_linearize(in, l);
     floating_base::jets_linearize(in, j);
-    if (f.status || d.status || c.status || l.status || j.status) {
+    floating_base::kane_linearize_tangent(in, t);
+    if (f.status || d.status || c.status || l.status || j.status || t.status) {
       std::fprintf(stderr, "floating_base: a status is not ok\n");
       std::exit(1);
     }
@@ -77,5 +78,7 @@ BENCHMARK(bench::run<floating_base::kane_derivatives, states>)->Name("floating_b
 BENCHMARK(bench::run<floating_base::central, states>)->Name("floating_base/central/kane");
 BENCHMARK(bench::run<floating_base::kane_linearize, states>)->Name("floating_base/linearize/kane");
 BENCHMARK(bench::run<floating_base::jets_linearize, states>)->Name("floating_base/linearize_jets/kane");
+BENCHMARK(bench::run<floating_base::kane_linearize_tangent, states>)
+    ->Name("floating_base/linearize_tangent/kane");
 
 int main(int argc, char** argv) { return bench::main(argc, argv, agree); }

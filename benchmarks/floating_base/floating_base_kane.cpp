@@ -47,6 +47,11 @@ void kane_linearize(const input& in, output& out) {
 void jets_linearize(const input& in, output& out) {
   rows(kane::detail::linearize_in_batches<model::system, model::evaluator, model::inputs>(state_of(in)), out);
 }
+void kane_linearize_tangent(const input& in, output& out) {
+  const auto lin = kane::linearize_tangent<model::system, model::evaluator, model::inputs>(state_of(in));
+  put(lin.A.bottomRows<int(nu)>(), out.a);
+  out.status = int(lin.status);
+}
 void central(const input& in, output& out) {
   const double h = 1e-6;
   model::state s = state_of(in);

@@ -71,36 +71,51 @@ auto linearize_tangent(const typename Ev::state_type& s) {
   constexpr auto layout = detail::tangent_layout_of<nq>(typename Ev::closure{});
   constexpr std::size_t n = layout.n + nu;
   const auto lin = linearize<Sys, Ev, In>(s);
-  Eigen::Matrix<S, int(nx), int(n)> t = Eigen::Matrix<S, int(nx), int(n)>::Zero(), td = t;
-  Eigen::Matrix<S, int(n), int(nx)> l = Eigen::Matrix<S, int(n), int(nx)>::Zero();
+  // A T - T' by columns, then L by rows: T and L are 1 but for each attitude's G and L = 4 G^T / |e|^2
+  Eigen::Matrix<S, int(nx), int(n)> at;
+  tangent_model<S, n, In::n> out;
   Eigen::Index col = 0;
   for (std::size_t i = 0; i < nq; ++i) {
     const std::size_t k = layout.set_of[i];
-    if (k == 0) {
-      t(Eigen::Index(i), col) = l(col, Eigen::Index(i)) = S(1);
-      ++col;
-    } else if (layout.sets[k - 1][0] == i + 1) {  // the scalar part's place holds dtheta
+    if (k == 0)
+      at.col(col++) = lin.A.col(Eigen::Index(i));
+    else if (layout.sets[k - 1][0] == i + 1) {  // the scalar part's place holds dtheta
       const auto& c = layout.sets[k - 1];
-      const auto at = [&](const auto& x, std::size_t a) { return S(x(Eigen::Index(c[a] - 1))); };
-      const Eigen::Matrix<S, 4, 1> e(s.q[c[0] - 1], s.q[c[1] - 1], s.q[c[2] - 1], s.q[c[3] - 1]);
-      const Eigen::Matrix<S, 4, 3> g = detail::attitude_map(e(0), e(1), e(2), e(3)),
-                                   gd = detail::attitude_map(at(lin.rate, 0), at(lin.rate, 1),
-                                                             at(lin.rate, 2), at(lin.rate, 3));
-      const S norm2 = e.squaredNorm();  // L G = 1 for e of any norm: L = 4 G^T / |e|^2
+      const auto rate = [&](std::size_t a) { return S(lin.rate(Eigen::Index(c[a] - 1))); };
+      const Eigen::Matrix<S, 4, 3> g = detail::attitude_map(S(s.q[c[0] - 1]), S(s.q[c[1] - 1]),
+                                                            S(s.q[c[2] - 1]), S(s.q[c[3] - 1])),
+                                   gd = detail::attitude_map(rate(0), rate(1), rate(2), rate(3));
+      Eigen::Matrix<S, int(nx), 4> four;
+      for (std::size_t a = 0; a < 4; ++a) four.col(Eigen::Index(a)) = lin.A.col(Eigen::Index(c[a] - 1));
+      at.template middleCols<3>(col).noalias() = four * g;
       for (std::size_t a = 0; a < 4; ++a)
-        for (Eigen::Index b = 0; b < 3; ++b) {
-          t(Eigen::Index(c[a] - 1), col + b) = g(Eigen::Index(a), b);
-          td(Eigen::Index(c[a] - 1), col + b) = gd(Eigen::Index(a), b);
-          l(col + b, Eigen::Index(c[a] - 1)) = S(4) * g(Eigen::Index(a), b) / norm2;
-        }
+        at.row(Eigen::Index(c[a] - 1)).template segment<3>(col) -= gd.row(Eigen::Index(a));
       col += 3;
     }
   }
-  for (std::size_t j = 0; j < nu; ++j)
-    t(Eigen::Index(nq + j), col + Eigen::Index(j)) = l(col + Eigen::Index(j), Eigen::Index(nq + j)) = S(1);
-  tangent_model<S, n, In::n> out;
-  out.A = l * (lin.A * t - td);
-  out.B = l * lin.B;
+  at.template rightCols<int(nu)>() = lin.A.template rightCols<int(nu)>();
+  const auto rows = [&](const auto& x, auto& y) {  // y = L x
+    Eigen::Index row = 0;
+    for (std::size_t i = 0; i < nq; ++i) {
+      const std::size_t k = layout.set_of[i];
+      if (k == 0)
+        y.row(row++) = x.row(Eigen::Index(i));
+      else if (layout.sets[k - 1][0] == i + 1) {
+        const auto& c = layout.sets[k - 1];
+        const Eigen::Matrix<S, 4, 1> e(s.q[c[0] - 1], s.q[c[1] - 1], s.q[c[2] - 1], s.q[c[3] - 1]);
+        const Eigen::Matrix<S, 4, 3> g = detail::attitude_map(e(0), e(1), e(2), e(3));
+        const S scale = S(4) / e.squaredNorm();  // L G = 1 for e of any norm
+        for (Eigen::Index b = 0; b < 3; ++b) {
+          y.row(row + b) = scale * g(0, b) * x.row(Eigen::Index(c[0] - 1));
+          for (std::size_t a = 1; a < 4; ++a)
+            y.row(row + b) += scale * g(Eigen::Index(a), b) * x.row(Eigen::Index(c[a] - 1));
+        }
+        row += 3;
+      }
+    }
+    y.template bottomRows<int(nu)>() = x.template bottomRows<int(nu)>();
+  };
+  rows(at, out.A), rows(lin.B, out.B);
   out.status = lin.status;
   return out;
 }
