@@ -2,9 +2,10 @@
 // with eight-link arms (22 speeds, a free joint), kane::linearize against central differences of
 // kane::motion (1e-7 relative), its Euler parameters' columns along the turns of B; the analytical
 // derivatives of inverse and forward dynamics against central differences along the motion of each
-// speed (1e-7), and kane::linearize by them against jets through the whole evaluator (1e-10); M against
-// the Hessian of the kinetic energy and x' against the conservation of energy; kane::inverse_dynamics on
-// Kane's sums (rates in N's components, not a free joint) against M u' - f.
+// speed (1e-7), and kane::linearize by them against jets through the whole evaluator (1e-10);
+// kane::linearize_tangent against its dense formula; M against the Hessian of the kinetic energy and x'
+// against the conservation of energy; kane::inverse_dynamics on Kane's sums (rates in N's components,
+// not a free joint) against M u' - f.
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -100,6 +101,39 @@ TEST_CASE("dynamics derivatives: a floating base with two eight-link arms agains
   const Eigen::Matrix<double, int(nu), int(2 * nu)> tangent_rows = jets.A.bottomRows<int(nu)>() * t;
   CHECK(relative(d.dud_dq, tangent_rows.leftCols<int(nu)>()) < 1e-10);
   CHECK(relative(d.dud_du, tangent_rows.rightCols<int(nu)>()) < 1e-10);
+}
+
+TEST_CASE("linearize_tangent: a floating base's A~ and B~ are L (A T - T') and L B of kane::linearize",
+          "[linearize]") {
+  using model = fa::model<8>;
+  constexpr std::size_t nq = model::state::nq, nu = model::state::nu, nx = nq + nu, n = nx - 1;
+  for (double norm : {1.0, 1.3}) {  // L = 4 G^T / |e|^2, and L G = 1, at any norm of e
+    auto s = fa::sample<model::state>(3);
+    for (std::size_t i = 0; i < 4; ++i) s.q[i] *= norm;
+    const auto lin = kane::linearize<model::system, model::evaluator, model::inputs>(s);
+    const auto tangent = kane::linearize_tangent<model::system, model::evaluator, model::inputs>(s);
+    REQUIRE(tangent.status == kane::solve_status::ok);
+    // dense, by plain loops: T and L of the base's G(e), T' of G(e')
+    const auto rows = Eigen::Index(nx), cols = Eigen::Index(n);
+    Eigen::MatrixXd t = Eigen::MatrixXd::Zero(rows, cols), td = t, l = Eigen::MatrixXd::Zero(cols, rows);
+    const Eigen::Vector4d e(s.q[0], s.q[1], s.q[2], s.q[3]);
+    t.topLeftCorner(4, 3) = kane::detail::attitude_map(e(0), e(1), e(2), e(3));
+    td.topLeftCorner(4, 3) = kane::detail::attitude_map(lin.rate(0), lin.rate(1), lin.rate(2), lin.rate(3));
+    l.topLeftCorner(3, 4) = 4 * t.topLeftCorner(4, 3).transpose() / e.squaredNorm();
+    t.bottomRightCorner(rows - 4, rows - 4).setIdentity();
+    l.bottomRightCorner(rows - 4, rows - 4).setIdentity();
+    const auto times = [](const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) {
+      Eigen::MatrixXd z = Eigen::MatrixXd::Zero(x.rows(), y.cols());
+      for (Eigen::Index i = 0; i < x.rows(); ++i)
+        for (Eigen::Index j = 0; j < y.cols(); ++j)
+          for (Eigen::Index k = 0; k < x.cols(); ++k) z(i, j) += x(i, k) * y(k, j);
+      return z;
+    };
+    const Eigen::MatrixXd a = lin.A, b = lin.B;
+    CHECK(relative(Eigen::MatrixXd(tangent.A), times(l, times(a, t) - td)) < 1e-14);
+    CHECK(relative(Eigen::MatrixXd(tangent.B), times(l, b)) < 1e-14);
+    CHECK(relative(times(l, t), Eigen::MatrixXd::Identity(cols, cols)) < 1e-14);
+  }
 }
 
 TEST_CASE(

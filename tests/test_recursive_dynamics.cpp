@@ -412,28 +412,3 @@ TEST_CASE("dynamics derivatives: a free joint carrying two two-link arms against
     for (double x : errors) CHECK(x < 1e-7);
   }
 }
-
-TEST_CASE("linearize_tangent: a free joint's A~ and B~ are L (A T - T') and L B of kane::linearize",
-          "[linearize]") {
-  using model = fa::model<2>;
-  constexpr std::size_t nq = model::state::nq, nu = model::state::nu, nx = nq + nu, n = nx - 1;
-  for (double norm : {1.0, 1.3}) {  // L = 4 G^T / |e|^2, and L G = 1, at any norm of e
-    auto s = fa::sample<model::state>(3);
-    for (std::size_t i = 0; i < 4; ++i) s.q[i] *= norm;
-    const auto lin = kane::linearize<model::system, model::evaluator, model::inputs>(s);
-    const auto tangent = kane::linearize_tangent<model::system, model::evaluator, model::inputs>(s);
-    REQUIRE(tangent.status == kane::solve_status::ok);
-    // dense: T and L of the base's G(e), T' of G(e')
-    Eigen::Matrix<double, int(nx), int(n)> t = Eigen::Matrix<double, int(nx), int(n)>::Zero(), td = t;
-    Eigen::Matrix<double, int(n), int(nx)> l = Eigen::Matrix<double, int(n), int(nx)>::Zero();
-    const Eigen::Vector4d e(s.q[0], s.q[1], s.q[2], s.q[3]);
-    t.topLeftCorner<4, 3>() = kane::detail::attitude_map(e(0), e(1), e(2), e(3));
-    td.topLeftCorner<4, 3>() = kane::detail::attitude_map(lin.rate(0), lin.rate(1), lin.rate(2), lin.rate(3));
-    l.topLeftCorner<3, 4>() = 4 * t.topLeftCorner<4, 3>().transpose() / e.squaredNorm();
-    t.bottomRightCorner<int(nx - 4), int(nx - 4)>().setIdentity();
-    l.bottomRightCorner<int(nx - 4), int(nx - 4)>().setIdentity();
-    CHECK(relative(tangent.A, (l * (lin.A * t - td)).eval()) < 1e-14);
-    CHECK(relative(tangent.B, (l * lin.B).eval()) < 1e-14);
-    CHECK(relative((l * t).eval(), Eigen::Matrix<double, int(n), int(n)>::Identity()) < 1e-14);
-  }
-}
