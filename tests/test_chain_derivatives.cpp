@@ -1,11 +1,10 @@
 // Analytical derivatives of the 12- and 48-link spatial chains' inverse and forward dynamics against
-// central differences of kane's own (1e-7 relative, scaled by the chain's condition); the 24-link chain
-// with its joints' rates in reverse order as speeds against the same chain on qdot_speeds.
+// central differences of kane's own (1e-7 relative, scaled by the chain's condition), and kane::linearize
+// of the 48-link chain through them.
 #include <catch2/catch.hpp>
 
 #include <cstddef>
 #include <random>
-#include <utility>
 
 #include <kane/kane.hpp>
 
@@ -47,13 +46,6 @@ void check_chain(std::mt19937& rng) {
   CHECK(relative(fd.ud, kane::forward_dynamics<Sys>(ev).ud) < 1e-10);
 }
 
-// u_i = q_{N-i}' (i = 0..N-1)
-template <class>
-struct reversed;
-template <std::size_t... I>
-struct reversed<std::index_sequence<I...>> {
-  using type = kane::speeds<kane::dt(kane::coordinate<sizeof...(I) - I>{})...>;
-};
 }  // namespace
 
 TEST_CASE("dynamics derivatives: the 12- and 48-link chains against central differences", "[derivatives]") {
@@ -76,26 +68,4 @@ TEST_CASE("linearize: the 48-link chain through the analytical derivatives", "[d
   CHECK(relative(lin.A.bottomLeftCorner<m, m>(), fd.dud_dq) == 0);
   CHECK(relative(lin.A.bottomRightCorner<m, m>(), fd.dud_du) == 0);
   CHECK(relative(lin.rate.tail<m>(), kane::forward_dynamics<model>(ev).ud) < 1e-10);
-}
-
-TEST_CASE("the 24-link chain with its joints' rates in reverse order as speeds: u' reversed", "[recursive]") {
-  constexpr std::size_t N = 24;
-  using Sys = chain_model::system<N>;
-  using speeds = reversed<std::make_index_sequence<N>>::type;
-  using reversed_evaluator =
-      kane::evaluator<chain_model::state<N>, kane::frames<chain_model::B<N>>, kane::level::pose, speeds>;
-  static_assert(kane::detail::recursive_form<Sys, reversed_evaluator>);
-  std::mt19937 rng(61);
-  for (int k = 0; k < 3; ++k) {
-    const auto s = recursive::random_state<chain_model::state<N>>(rng);
-    auto r = s;
-    for (std::size_t i = 0; i < N; ++i) r.u[i] = s.u[N - 1 - i];
-    chain_model::evaluator<N> ev;
-    reversed_evaluator rev;
-    ev.update(s), rev.update(r);
-    const auto a = kane::forward_dynamics<Sys>(ev), b = kane::forward_dynamics<Sys>(rev);
-    REQUIRE(a.status == kane::solve_status::ok);
-    REQUIRE(b.status == kane::solve_status::ok);
-    CHECK(relative(Eigen::Matrix<double, int(N), 1>(b.ud.reverse()), a.ud) < 1e-12);
-  }
 }
