@@ -2,10 +2,10 @@
 // with eight-link arms (22 speeds, a free joint), kane::linearize against central differences of
 // kane::motion (1e-7 relative), its Euler parameters' columns along the turns of B; the analytical
 // derivatives of inverse and forward dynamics against central differences along the motion of each
-// speed (1e-7), and kane::linearize by them against jets through the whole evaluator (1e-10);
-// kane::linearize_tangent against its dense formula; M against the Hessian of the kinetic energy and x'
-// against the conservation of energy; kane::inverse_dynamics on Kane's sums (rates in N's components,
-// not a free joint) against M u' - f.
+// speed (1e-7), and kane::linearize by them against jets through the whole evaluator (1e-10); the same
+// for the base alone, whose dynamics take Kane's sums; kane::linearize_tangent against its dense
+// formula; M against the Hessian of the kinetic energy and x' against the conservation of energy;
+// kane::inverse_dynamics on Kane's sums (rates in N's components, not a free joint) against M u' - f.
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -101,6 +101,40 @@ TEST_CASE("dynamics derivatives: a floating base with two eight-link arms agains
   const Eigen::Matrix<double, int(nu), int(2 * nu)> tangent_rows = jets.A.bottomRows<int(nu)>() * t;
   CHECK(relative(d.dud_dq, tangent_rows.leftCols<int(nu)>()) < 1e-10);
   CHECK(relative(d.dud_du, tangent_rows.rightCols<int(nu)>()) < 1e-10);
+}
+
+namespace lone {  // the base alone, a thrust and torques: its dynamics by Kane's sums, M known
+using namespace floating_arms;
+constexpr auto w = kane::angular_velocity<N, B>();
+struct model {
+  using system =
+      kane::system<base, kane::gravity<literal(-9.81) * e<N, 3>>, kane::force<Bo, kane::r<1> * e<B, 3>>,
+                   kane::torque<B, kane::r<2> * e<B, 1> + kane::r<3> * e<B, 2>>>;
+  using speeds = kane::speeds<dot(w, e<B, 1>), dot(w, e<B, 2>), dot(w, e<B, 3>), dt(q<5>{}), dt(q<6>{}),
+                              dt(q<7>{}), kane::unit_norm<B>>;
+  using state = kane::state_of<system, speeds>;
+  using evaluator = kane::system_evaluator<system, speeds>;
+  using inputs = kane::inputs<kane::r<1>, kane::r<2>, kane::r<3>>;
+};
+}  // namespace lone
+
+TEST_CASE(
+    "dynamics derivatives: a free body alone, its dynamics by Kane's sums, against differences and jets",
+    "[derivatives]") {
+  using model = lone::model;
+  static_assert(!kane::detail::recursive_form<model::system, model::evaluator> &&
+                kane::detail::free_joint<model::system, model::evaluator>);
+  const auto s = fa::sample<model::state>(13);
+  for (double x : fa::derivatives_against_differences<model>(s)) CHECK(x < 1e-7);
+  const auto lin = kane::linearize<model::system, model::evaluator, model::inputs>(s);
+  const auto jets = kane::detail::linearize_in_batches<model::system, model::evaluator, model::inputs>(s);
+  REQUIRE(lin.status == kane::solve_status::ok);
+  Eigen::Matrix<double, 13, 12> t = Eigen::Matrix<double, 13, 12>::Zero();
+  t.topLeftCorner<4, 3>() = kane::detail::attitude_map(s.q[0], s.q[1], s.q[2], s.q[3]);
+  t.bottomRightCorner<9, 9>().setIdentity();
+  CHECK(relative((lin.A * t).eval(), (jets.A * t).eval()) < 1e-10);
+  CHECK(relative(lin.A.topRows<7>(), jets.A.topRows<7>()) < 1e-10);
+  CHECK(relative(lin.B, jets.B) < 1e-10);
 }
 
 TEST_CASE("linearize_tangent: a floating base's A~ and B~ are L (A T - T') and L B of kane::linearize",

@@ -32,7 +32,7 @@ namespace detail {
 // Sys takes the analytical derivatives with the evaluator's speeds.
 template <class Sys, class Ev>
 constexpr bool analytical_derivatives() {
-  if constexpr (!recursive_form<Sys, Ev> || !(speeds_of<Ev>::identity || free_joint<Sys, Ev>))
+  if constexpr (!tree_form<Sys, Ev> || !(speeds_of<Ev>::identity || free_joint<Sys, Ev>))
     return false;
   else
     return steady_loads_of<Sys, joint_form_of<Sys, Ev>>;
@@ -45,7 +45,7 @@ constexpr bool loads_checked(list<X...>, std::index_sequence<I...>) {
 }
 template <class Sys, class Ev>
 constexpr bool derivatives_checked() {
-  if constexpr (!recursive_form<Sys, Ev> || !(speeds_of<Ev>::identity || free_joint<Sys, Ev>))
+  if constexpr (!tree_form<Sys, Ev> || !(speeds_of<Ev>::identity || free_joint<Sys, Ev>))
     return refused<error::analytical_derivatives_need_a_tree_of_simple_rotations_with_u_equal_to_q_dot<Sys>,
                    fix::call_kane_linearize>;
   else

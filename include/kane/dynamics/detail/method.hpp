@@ -18,24 +18,30 @@ namespace kane::detail {
 
 template <class Sys, class Ev>
 using joint_form_of = joint_form<Sys, typename Ev::root, speeds_of<Ev>>;
-// Sys is of joint form with the evaluator's speeds: the recursive passes. A free joint without
-// joints whose M the sums know at compile time (a free body alone) keeps the sums.
+// Sys is of joint form with the evaluator's speeds (joint_form.hpp): the tree's tables hold.
+template <class Sys, class Ev>
+inline constexpr bool tree_form = [] {
+  if constexpr (admitted<Sys, speeds_of<Ev>>())
+    return joint_form_of<Sys, Ev>::table.local;
+  else
+    return false;
+}();
+// Sys takes the recursive passes. A free joint without joints whose M the sums know at compile time
+// (a free body alone) keeps the sums; its derivatives take the tree.
 template <class Sys, class Ev>
 inline constexpr bool recursive_form = [] {
-  if constexpr (admitted<Sys, speeds_of<Ev>>()) {
-    constexpr const auto& table = joint_form_of<Sys, Ev>::table;
-    if constexpr (table.local && table.free >= 0 && speeds_of<Ev>::n == 6)
+  if constexpr (tree_form<Sys, Ev>) {
+    if constexpr (joint_form_of<Sys, Ev>::table.free >= 0 && speeds_of<Ev>::n == 6)
       return !known_mass_matrix<Sys, typename Ev::root, speeds_of<Ev>>.known;
     else
-      return table.local;
+      return true;
   } else
     return false;
 }();
-// Sys takes the recursive passes with a free joint (speed_layout.hpp): M and f, not articulated
-// bodies or the analytical derivatives.
+// Sys is of joint form with a free joint (speed_layout.hpp): M and f, not articulated bodies.
 template <class Sys, class Ev>
 inline constexpr bool free_joint = [] {
-  if constexpr (recursive_form<Sys, Ev>)
+  if constexpr (tree_form<Sys, Ev>)
     return joint_form_of<Sys, Ev>::table.free >= 0;
   else
     return false;
