@@ -118,6 +118,15 @@ State moved(State s, std::size_t j, double h) {
   s.q[3] = a[0] * b[3] + b[0] * a[3] + a[1] * b[2] - a[2] * b[1];
   return s;
 }
+// dx = T dx~: the Euler parameters q_1..4 moved by a turn of B in its axes, de = G(e) dtheta
+template <class State>
+auto tangent(const State& s) {
+  constexpr auto nx = int(State::nq + State::nu);
+  Eigen::Matrix<double, nx, nx - 1> t = Eigen::Matrix<double, nx, nx - 1>::Zero();
+  t.template topLeftCorner<4, 3>() = kane::detail::attitude_map(s.q[0], s.q[1], s.q[2], s.q[3]);
+  t.template bottomRightCorner<nx - 4, nx - 4>().setIdentity();
+  return t;
+}
 // The analytical derivatives of inverse and forward dynamics against central differences of
 // kane::inverse_dynamics and kane::forward_dynamics along the motion of each speed (relative errors).
 template <class Model>
