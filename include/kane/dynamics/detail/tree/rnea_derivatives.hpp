@@ -14,13 +14,7 @@
 //   dtau_r/dq_j = (Y_r S_r) . dA_j + (B_r^T S_r) . dV_j,  dtau_r/du_j = (Y_r S_r) . 2 dV_j +
 //   (B_r^T S_r) . S_j for u_j at or above u_r, and dtau_j/dq_r = S_j . (Y_r dA_r + B_r dV_r +
 //   S_r x* F_r), dtau_j/du_r = S_j . (2 Y_r dV_r + B_r S_r) for u_j above it.
-// A free joint (speed_layout.hpp) is a child of the root moved by u_1..u_6: S_1..3 = (b_i, p x b_i)
-// about its origin p, S_4..6 = (0, r_i). Its q-directions are a rotation vector in B's axes and p:
-// a change of theta_j turns every item below B and S_1..3 with them, not v^- = (0, p'), a^- =
-// a_O + (0, p''); so dV_j = v^- x S_j for j = 1..3, 0 for j = 4..6, and every pair of S_1..3 takes
-// the first form above. The rates are body rates, so dtau/du_j (j = 1..3) also takes
-// Y (v_w x S_j), v_w = S_1 u_1 + S_2 u_2 + S_3 u_3. A uniform shift of p or p' changes nothing: those
-// columns are 0. Column r is the derivative along the motion of u_r.
+// A free joint's rows and columns: free_joint_partials.hpp.
 // Loads must turn with the bodies they act on (steady_loads). Cost: O(n) and 36 products a pair.
 #pragma once
 
@@ -38,6 +32,7 @@
 #include "kane/dynamics/detail/tree/body_frames.hpp"
 #include "kane/dynamics/detail/tree/composite_inertia.hpp"
 #include "kane/dynamics/detail/tree/frame_steps.hpp"
+#include "kane/dynamics/detail/tree/free_joint_partials.hpp"
 #include "kane/dynamics/detail/tree/rnea.hpp"
 #include "kane/dynamics/detail/tree/spatial.hpp"
 #include "kane/dynamics/detail/tree/steady_loads.hpp"
@@ -119,7 +114,7 @@ struct tree_partials {
         dv[j] = cross_motion(v[p], s), da[j] = cross_motion(a[p], s) + cross_motion(v[p], dv[j]);
         v[g] = v[p] + u * s, a[g] = a[p] + S(ud(Eigen::Index(j))) * s + u * dv[j];
       } else if constexpr (floating) {
-        if (g == std::size_t(t.free)) free_outward(ev, ud, g);
+        if (g == std::size_t(t.free)) free_outward(*this, ev, ud, g);
       }
       const spatial<S> l = times(own[g], v[g]);
       f[g] = times(own[g], a[g]) + cross_force(v[g], l);
@@ -176,7 +171,7 @@ struct tree_partials {
             if (c != r) dq(l, k) = dot6(screw[j], fq), du(l, k) = dot6(screw[j], fu);
           }
       } else if constexpr (floating) {
-        if (g == std::size_t(t.free)) free_inward<Mass>(g, tau, m, dq, du);
+        if (g == std::size_t(t.free)) free_inward<Mass>(*this, g, tau, m, dq, du);
       }
       if (p > 0) add_to(y[p], y[g]), add_to(b[p], b[g]), f[p] = f[p] + f[g];
     }
@@ -186,55 +181,6 @@ struct tree_partials {
   }
 
  private:
-  // The free joint's frame g, outward from the root at rest: v^- = (0, p'), a^- = a_O + (0, p'').
-  template <class Rates>
-  KANE_ALWAYS_INLINE void free_outward(const Ev& ev, const Rates& ud, std::size_t g) {
-    const vec zero{S(0), S(0), S(0)};
-    const spatial<S> vt{zero, vec{joint_rate<1>(ev, 3), joint_rate<1>(ev, 4), joint_rate<1>(ev, 5)}};
-    const spatial<S> ac{a[0].w,
-                        a[0].v + vec{S(ud(Eigen::Index(3))), S(ud(Eigen::Index(4))), S(ud(Eigen::Index(5)))}};
-    spatial<S> vw{zero, zero};
-    v[g] = vt, a[g] = ac;
-    for (std::size_t i = 0; i < 3; ++i) {
-      const spatial<S>& s = screw[i];
-      const S u = joint_rate<1>(ev, i);
-      dv[i] = cross_motion(vt, s), da[i] = cross_motion(ac, s) + cross_motion(vt, dv[i]);
-      dv[3 + i] = {zero, zero}, da[3 + i] = {zero, zero};
-      vw = vw + u * s;
-      a[g] = a[g] + S(ud(Eigen::Index(i))) * s + u * dv[i];
-    }
-    v[g] = v[g] + vw;
-    for (std::size_t i = 0; i < 3; ++i) turned[i] = cross_motion(vw, screw[i]);
-  }
-  // Rows and columns 1..6 at the free joint's frame g, Y, B and F summed below it: rows 1..3 take
-  // the first form for columns 1..3 (S_1..3 turn with each other), rows 4..6 the second.
-  template <bool Mass, class Tau, class Square>
-  KANE_ALWAYS_INLINE void free_inward(std::size_t g, Tau& tau, Square& m, Square& dq, Square& du) const {
-    std::array<spatial<S>, 6> ys;
-    std::array<vec, 3> bs;
-    for (std::size_t r = 0; r < 6; ++r) {
-      ys[r] = times(y[g], screw[r]), tau(Eigen::Index(r)) = dot6(screw[r], f[g]);
-      if (r < 3) bs[r] = b[g].transposed_times(screw[r]);
-      if constexpr (Mass)
-        for (std::size_t c = 0; c <= r; ++c)
-          m(Eigen::Index(r), Eigen::Index(c)) = m(Eigen::Index(c), Eigen::Index(r)) = dot6(ys[r], screw[c]);
-    }
-    for (std::size_t c = 0; c < 3; ++c) {
-      const auto l = Eigen::Index(c);
-      const spatial<S> wu = S(2) * dv[c] + turned[c];
-      for (std::size_t r = 0; r < 3; ++r) {
-        const auto k = Eigen::Index(r);
-        dq(k, l) = dot6(ys[r], da[c]) + dot3(bs[r], dv[c].w);
-        du(k, l) = dot6(ys[r], wu) + dot3(bs[r], screw[c].w);
-      }
-      const spatial<S> fq = times(y[g], da[c]) + b[g].times(dv[c]) + cross_force(screw[c], f[g]);
-      const spatial<S> fu = times(y[g], wu) + b[g].times(screw[c]);
-      for (std::size_t r = 3; r < 6; ++r)
-        dq(Eigen::Index(r), l) = dot6(screw[r], fq), du(Eigen::Index(r), l) = dot6(screw[r], fu);
-    }
-    for (Eigen::Index c = 3; c < 6; ++c)
-      for (Eigen::Index r = 0; r < 6; ++r) dq(r, c) = du(r, c) = S(0);
-  }
   template <std::size_t N>
   static void put(std::array<std::array<S, n>, N>& to, std::size_t j, const spatial<S>& x) {
     to[0][j] = x.w.x, to[1][j] = x.w.y, to[2][j] = x.w.z, to[3][j] = x.v.x, to[4][j] = x.v.y,
