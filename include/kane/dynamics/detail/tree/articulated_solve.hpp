@@ -3,7 +3,7 @@
 // items: U = I^A S, D = S.U, I^A of the parent += I^A - U U^T / D. Then for each column b,
 // inward: u_r = b_r - S.p, p of the parent += p + U u_r / D; outward from a_O = 0:
 // x_r = (u_r - U.a') / D, a = a' + S x_r. Cost: O(n) a column, against O(n^2) for a
-// factored M; the columns go W at a time, each number a packet of W, the rest in narrower packets.
+// factored M. The columns go 2W at a time, each number two packets of W, then in packets of W, W / 2, ...
 #pragma once
 
 #include <array>
@@ -29,12 +29,13 @@ class articulated_solve {
   using six = std::array<S, 6>;
   template <std::size_t V>
   using pack = packet<S, V>;  // one number of V columns
-  template <std::size_t V>
-  using rows = std::array<pack<V>, 6>;  // six components of V columns
   // S and U / D also as packets of W equal numbers, below AVX-512 (there a product broadcasts a number
   // from memory itself)
   static constexpr bool spread = W > 1 && register_bytes < 64;
   static constexpr std::size_t B = spread ? W : 1;
+  using wide = std::array<pack<B>, 6>;
+  // packets of columns a pass carries side by side
+  static constexpr std::size_t K = 2;
   // Frame g hands its sum to the next frame in registers when that frame is its parent (inward: g - 1;
   // outward: a child at g + 1); a frame with another child keeps its sum in memory.
   struct tree_shape {
@@ -48,7 +49,7 @@ class articulated_solve {
     return z;
   }();
   std::array<six, n> s_{}, ud_{};  // S and U / D of each speed
-  std::array<rows<B>, n> sw_{}, uw_{};
+  std::array<wide, n> sw_{}, uw_{};
   std::array<S, n> inv_d_{};
   bool ok_ = true;
 
@@ -92,69 +93,97 @@ class articulated_solve {
   // M is positive definite.
   bool ok() const { return ok_; }
 
-  // x = -M^-1 x, W columns at a time, then W / 2, ...
+  // x = -M^-1 x, K packets of W columns at a time, then packets of W, W / 2, ...
   template <class X>
   void solve_negated(X& x) const {
-    in_packets<W>(0, std::size_t(x.cols()),
-                  [&](std::size_t c0, auto v) { columns<decltype(v)::value>(x, c0); });
+    const auto cols = std::size_t(x.cols());
+    std::size_t c0 = 0;
+    for (; c0 + K * W <= cols; c0 += K * W) columns<W, K>(x, c0);
+    in_packets<W>(c0, cols, [&](std::size_t c, auto v) { columns<decltype(v)::value, 1>(x, c); });
   }
 
  private:
-  template <std::size_t V>
-  KANE_ALWAYS_INLINE static rows<V> zeros() {
-    rows<V> z;
-    static_for_inline<6>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { z[i] = splat<V>(S(0)); });
+  // One number of K packets of V columns; a column pass is a chain of dependent products, so K
+  // independent chains keep the multipliers busy.
+  template <std::size_t V, std::size_t K>
+  using lanes = std::array<pack<V>, K>;
+  template <std::size_t V, std::size_t K>
+  using rows = std::array<lanes<V, K>, 6>;
+  template <class F>
+  KANE_ALWAYS_INLINE static void each(F&& f) {
+    static_for_inline<6>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { f(std::size_t(i)); });
+  }
+  template <std::size_t V, std::size_t K>
+  KANE_ALWAYS_INLINE static rows<V, K> zeros() {
+    rows<V, K> z;
+    each([&](std::size_t i) KANE_ALWAYS_INLINE_LAMBDA {
+      for (std::size_t k = 0; k < K; ++k) z[i][k] = splat<V>(S(0));
+    });
     return z;
   }
-  template <std::size_t V>
-  KANE_ALWAYS_INLINE static void add(rows<V>& to, const rows<V>& from) {
-    static_for_inline<6>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { to[i] += from[i]; });
+  template <std::size_t V, std::size_t K>
+  KANE_ALWAYS_INLINE static void add(rows<V, K>& to, const rows<V, K>& from) {
+    each([&](std::size_t i) KANE_ALWAYS_INLINE_LAMBDA {
+      for (std::size_t k = 0; k < K; ++k) to[i][k] += from[i][k];
+    });
   }
-  template <std::size_t V, class A>  // c += a x
-  KANE_ALWAYS_INLINE static void add_times(rows<V>& c, const A& a, const pack<V>& x) {
-    static_for_inline<6>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { c[i] += a[i] * x; });
+  template <std::size_t V, std::size_t K, class A>  // c += a x
+  KANE_ALWAYS_INLINE static void add_times(rows<V, K>& c, const A& a, const lanes<V, K>& x) {
+    each([&](std::size_t i) KANE_ALWAYS_INLINE_LAMBDA {
+      for (std::size_t k = 0; k < K; ++k) c[i][k] += a[i] * x[k];
+    });
   }
-  template <std::size_t V, class A>
-  KANE_ALWAYS_INLINE static pack<V> dot(const A& a, const rows<V>& c) {
-    return (a[0] * c[0] + a[1] * c[1]) + (a[2] * c[2] + a[3] * c[3]) + (a[4] * c[4] + a[5] * c[5]);
+  template <std::size_t V, std::size_t K, class A>
+  KANE_ALWAYS_INLINE static lanes<V, K> dot(const A& a, const rows<V, K>& c) {
+    lanes<V, K> out;
+    for (std::size_t k = 0; k < K; ++k)
+      out[k] = (a[0] * c[0][k] + a[1] * c[1][k]) + (a[2] * c[2][k] + a[3] * c[3][k]) +
+               (a[4] * c[4][k] + a[5] * c[5][k]);
+    return out;
   }
   // S (or U / D) of u_j for V columns: its packets when they are stored
   template <std::size_t V>
-  KANE_ALWAYS_INLINE static const auto& of(const std::array<six, n>& one, const std::array<rows<B>, n>& wide,
+  KANE_ALWAYS_INLINE static const auto& of(const std::array<six, n>& one, const std::array<wide, n>& spread_,
                                            std::size_t j) {
     if constexpr (spread && V == W)
-      return wide[j];
+      return spread_[j];
     else
       return one[j];
   }
-  template <std::size_t V, class X>
+  template <std::size_t V, std::size_t K, class X>
   void columns(X& x, std::size_t c0) const {
-    std::array<rows<V>, nf> p;  // p inward, then a outward, kept where the tree branches
-    std::array<pack<V>, n> ur;
+    std::array<rows<V, K>, nf> p;  // p inward, then a outward, kept where the tree branches
+    std::array<lanes<V, K>, n> ur;
     for (std::size_t g = 0; g < nf; ++g)
-      if (shape.kept[g]) p[g] = zeros<V>();
-    rows<V> c = zeros<V>();  // p of the frame after g when g is its parent, carried
+      if (shape.kept[g]) p[g] = zeros<V, K>();
+    rows<V, K> c = zeros<V, K>();  // p of the frame after g when g is its parent, carried
     for (std::size_t g = nf - 1; g > 0; --g) {
-      if (shape.kept[g]) add<V>(c, p[g]);
+      if (shape.kept[g]) add<V, K>(c, p[g]);
       const int r = t.speed[g];
       if (r >= 0) {
         const auto j = std::size_t(r);
-        pack<V> b{};
-        for (std::size_t k = 0; k < V; ++k) b[k] = x(Eigen::Index(j), Eigen::Index(c0 + k));
-        ur[j] = -b - dot<V>(of<V>(s_, sw_, j), c);
-        add_times<V>(c, of<V>(ud_, uw_, j), ur[j]);
+        lanes<V, K> b;
+        for (std::size_t k = 0; k < K; ++k)
+          for (std::size_t l = 0; l < V; ++l) b[k][l] = x(Eigen::Index(j), Eigen::Index(c0 + k * V + l));
+        const lanes<V, K> sc = dot<V, K>(of<V>(s_, sw_, j), c);
+        for (std::size_t k = 0; k < K; ++k) ur[j][k] = -b[k] - sc[k];
+        add_times<V, K>(c, of<V>(ud_, uw_, j), ur[j]);
       }
-      if (!shape.carried[g]) add<V>(p[std::size_t(t.parent[g])], c), c = zeros<V>();
+      if (!shape.carried[g]) add<V, K>(p[std::size_t(t.parent[g])], c), c = zeros<V, K>();
     }
-    c = zeros<V>(), p[0] = zeros<V>();  // a of the frame before g when it is g's parent, carried; a_O = 0
+    c = zeros<V, K>(), p[0] = zeros<V, K>();  // a of the frame before g when it is g's parent; a_O = 0
     for (std::size_t g = 1; g < nf; ++g) {
       if (!shape.carried[g]) c = p[std::size_t(t.parent[g])];
       const int r = t.speed[g];
       if (r >= 0) {
         const auto j = std::size_t(r);
-        const pack<V> xr = ur[j] * inv_d_[j] - dot<V>(of<V>(ud_, uw_, j), c);
-        for (std::size_t k = 0; k < V; ++k) x(Eigen::Index(j), Eigen::Index(c0 + k)) = xr[k];
-        add_times<V>(c, of<V>(s_, sw_, j), xr);
+        const lanes<V, K> ua = dot<V, K>(of<V>(ud_, uw_, j), c);
+        lanes<V, K> xr;
+        for (std::size_t k = 0; k < K; ++k) {
+          xr[k] = ur[j][k] * inv_d_[j] - ua[k];
+          for (std::size_t l = 0; l < V; ++l) x(Eigen::Index(j), Eigen::Index(c0 + k * V + l)) = xr[k][l];
+        }
+        add_times<V, K>(c, of<V>(s_, sw_, j), xr);
       }
       if (shape.kept[g]) p[g] = c;
     }
