@@ -1,5 +1,6 @@
 // The 24-link spatial chain with its joints' rates in reverse order as speeds against the same chain on
-// qdot_speeds: many joint rates in kane::speeds, in the clang++ build (its limits on folds).
+// qdot_speeds: many joint rates in kane::speeds, in the clang++ build (its limits on folds). The 12-link
+// chain's derivatives against central differences.
 #include <catch2/catch.hpp>
 
 #include <cstddef>
@@ -9,6 +10,7 @@
 #include <kane/kane.hpp>
 
 #include "../benchmarks/chain_dynamics/chain_model.hpp"
+#include "chain_derivatives.hpp"
 #include "differences.hpp"
 #include "recursive_models.hpp"
 
@@ -42,4 +44,9 @@ TEST_CASE("the 24-link chain with its joints' rates in reverse order as speeds: 
     REQUIRE(b.status == kane::solve_status::ok);
     CHECK(relative(Eigen::Matrix<double, int(N), 1>(b.ud.reverse()), a.ud) < 1e-12);
   }
+}
+
+TEST_CASE("dynamics derivatives: the 12-link chain against central differences", "[derivatives]") {
+  std::mt19937 rng(53);
+  check_chain<12>(rng);  // Cholesky solves
 }
