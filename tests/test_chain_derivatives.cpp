@@ -8,6 +8,7 @@
 #include <kane/kane.hpp>
 
 #include "../benchmarks/chain_dynamics/chain_model.hpp"
+#include "allocations.hpp"
 #include "chain_derivatives.hpp"
 #include "differences.hpp"
 #include "recursive_models.hpp"
@@ -27,7 +28,10 @@ TEST_CASE("dynamics derivatives: the 48-link chain against central differences",
 TEST_CASE("linearize: the 48-link chain through the analytical derivatives", "[derivatives]") {
   std::mt19937 rng(59);
   const auto s = recursive::random_state<state>(rng);
+  const long before = allocations::count();
   const auto lin = kane::linearize<model, evaluator>(s);
+  const long allocated = allocations::count() - before;
+  CHECK(allocated == 0);
   REQUIRE(lin.status == kane::solve_status::ok);
   evaluator ev;
   ev.update(s);

@@ -14,6 +14,7 @@
 
 #include <kane/kane.hpp>
 
+#include "allocations.hpp"
 #include "differences.hpp"
 #include "floating_arms.hpp"
 
@@ -43,7 +44,10 @@ TEST_CASE("linearize: a floating base with two eight-link arms against central d
   constexpr std::size_t nq = A::nq, nu = A::nu, nx = A::nx, nr = A::nr;
   STATIC_REQUIRE(nu == 22);
   const auto s = fa::sample<model::state>(5);
+  const long before = allocations::count();
   const auto lin = kane::linearize<model::system, model::evaluator, model::inputs>(s);
+  const long allocated = allocations::count() - before;
+  CHECK(allocated == 0);
   REQUIRE(lin.status == kane::solve_status::ok);
   std::array<double, nx> x{};
   for (std::size_t i = 0; i < nq; ++i) x[i] = s.q[i];
