@@ -163,8 +163,11 @@ class articulated_solve {
       if (r >= 0) {
         const auto j = std::size_t(r);
         lanes<V, K> b;
-        for (std::size_t k = 0; k < K; ++k)
-          for (std::size_t l = 0; l < V; ++l) b[k][l] = x(Eigen::Index(j), Eigen::Index(c0 + k * V + l));
+        for (std::size_t k = 0; k < K; ++k) {
+          std::array<S, V> row;
+          for (std::size_t l = 0; l < V; ++l) row[l] = x(Eigen::Index(j), Eigen::Index(c0 + k * V + l));
+          b[k] = load_packet<V>(row.data());
+        }
         const lanes<V, K> sc = dot<V, K>(of<V>(s_, sw_, j), c);
         for (std::size_t k = 0; k < K; ++k) ur[j][k] = -b[k] - sc[k];
         add_times<V, K>(c, of<V>(ud_, uw_, j), ur[j]);
