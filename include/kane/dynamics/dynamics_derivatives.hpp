@@ -85,54 +85,62 @@ inverse_dynamics_derivatives(const Ev& ev) {
   return out;
 }
 
+namespace detail {
+// forward_dynamics_derivatives, and X = -M^-1 X for each extra X (n rows) by the same factor of M.
+template <class Sys, class Ev, class... X>
+forward_derivatives<typename Ev::scalar, Ev::nu> forward_derivatives_solving(const Ev& ev, X&... extra) {
+  using S = typename Ev::scalar;
+  constexpr std::size_t n = Ev::nu;
+  forward_derivatives<S, n> out;
+  // u' first; one pass gives M and dtau/dx at u'; du'/dx = -M^-1 dtau/dx by plain loops for a few
+  // speeds, by articulated bodies above, which also give u' = M^-1 f.
+  using JF = joint_form_of<Sys, Ev>;
+  if constexpr (n <= articulated_above || free_joint<Sys, Ev>) {
+    const auto fd = forward_dynamics<Sys>(ev);
+    out.ud = fd.ud, out.status = fd.status;
+    if (out.status == solve_status::ok) {
+      const body_frames<JF, Ev> bf(ev);
+      tree_partials<JF, Sys, Ev> pass(bf, ev);
+      Eigen::Matrix<S, int(n), int(n)> m;
+      Eigen::Matrix<S, int(n), 1> tau;
+      pass.outward(ev, out.ud);
+      pass.template inward<true>(tau, m, out.dud_dq, out.dud_du);
+      if (!solve_negated(m, out.dud_dq, out.dud_du, extra...)) out.status = solve_status::singular;
+    }
+  } else {
+    const body_frames<JF, Ev> bf(ev);
+    tree_partials<JF, Sys, Ev> pass(bf, ev);
+    const articulated_solve<JF, S> bodies(pass.own, pass.screw);
+    out.status = ev.status();
+    if (out.status == solve_status::ok && !bodies.ok()) out.status = solve_status::singular;
+    if (out.status == solve_status::ok) {
+      joint_forces<rates::at_rest, JF, Sys>(bf, ev, out.ud);  // -f
+      bodies.solve_negated(out.ud);
+      Eigen::Matrix<S, int(n), int(n)> m;
+      Eigen::Matrix<S, int(n), 1> tau;
+      pass.outward(ev, out.ud);
+      pass.template inward<false>(tau, m, out.dud_dq, out.dud_du);
+      bodies.solve_negated(out.dud_dq), bodies.solve_negated(out.dud_du);
+      (bodies.solve_negated(extra), ...);
+    }
+  }
+  if (out.status == solve_status::ok) {
+    if (!(all_finite_matrix(out.ud) && all_finite_matrix(out.dud_dq) && all_finite_matrix(out.dud_du)))
+      out.status = solve_status::not_finite;
+  }
+  if (out.status != solve_status::ok) set_nan(out.ud), set_nan(out.dud_dq), set_nan(out.dud_du);
+  return out;
+}
+}  // namespace detail
+
 template <System Sys, Evaluator Ev>
 requires std::is_floating_point_v<typename Ev::scalar> forward_derivatives<typename Ev::scalar, Ev::nu>
 forward_dynamics_derivatives(const Ev& ev) {
   static_assert(detail::derivatives_checked<Sys, Ev>());
-  using S = typename Ev::scalar;
-  constexpr std::size_t n = Ev::nu;
-  forward_derivatives<S, n> out;
-  if constexpr (detail::analytical_derivatives<Sys, Ev>()) {
-    // u' first; one pass gives M and dtau/dx at u'; du'/dx = -M^-1 dtau/dx by plain loops for a few
-    // speeds, by articulated bodies above, which also give u' = M^-1 f.
-    using JF = detail::joint_form_of<Sys, Ev>;
-    if constexpr (n <= detail::articulated_above || detail::free_joint<Sys, Ev>) {
-      const auto fd = forward_dynamics<Sys>(ev);
-      out.ud = fd.ud, out.status = fd.status;
-      if (out.status == solve_status::ok) {
-        const detail::body_frames<JF, Ev> bf(ev);
-        detail::tree_partials<JF, Sys, Ev> pass(bf, ev);
-        Eigen::Matrix<S, int(n), int(n)> m;
-        Eigen::Matrix<S, int(n), 1> tau;
-        pass.outward(ev, out.ud);
-        pass.template inward<true>(tau, m, out.dud_dq, out.dud_du);
-        if (!detail::solve_negated(m, out.dud_dq, out.dud_du)) out.status = solve_status::singular;
-      }
-    } else {
-      const detail::body_frames<JF, Ev> bf(ev);
-      detail::tree_partials<JF, Sys, Ev> pass(bf, ev);
-      const detail::articulated_solve<JF, S> bodies(pass.own, pass.screw);
-      out.status = ev.status();
-      if (out.status == solve_status::ok && !bodies.ok()) out.status = solve_status::singular;
-      if (out.status == solve_status::ok) {
-        detail::joint_forces<detail::rates::at_rest, JF, Sys>(bf, ev, out.ud);  // -f
-        bodies.solve_negated(out.ud);
-        Eigen::Matrix<S, int(n), int(n)> m;
-        Eigen::Matrix<S, int(n), 1> tau;
-        pass.outward(ev, out.ud);
-        pass.template inward<false>(tau, m, out.dud_dq, out.dud_du);
-        bodies.solve_negated(out.dud_dq), bodies.solve_negated(out.dud_du);
-      }
-    }
-    if (out.status == solve_status::ok) {
-      if (!(detail::all_finite_matrix(out.ud) && detail::all_finite_matrix(out.dud_dq) &&
-            detail::all_finite_matrix(out.dud_du)))
-        out.status = solve_status::not_finite;
-    }
-    if (out.status != solve_status::ok)
-      detail::set_nan(out.ud), detail::set_nan(out.dud_dq), detail::set_nan(out.dud_du);
-  }
-  return out;
+  if constexpr (detail::analytical_derivatives<Sys, Ev>())
+    return detail::forward_derivatives_solving<Sys>(ev);
+  else
+    return {};
 }
 
 }  // namespace kane

@@ -1,8 +1,8 @@
 // kane::linearize of a system that takes the analytical derivatives (dynamics_derivatives.hpp):
 // x = (q, u) with q' = u, so A = [0 1; du'/dq du'/du], and B = -M^-1 dtau/dr with dtau/dr carried
-// by jets of the inputs alone through inverse dynamics at u'. With a free joint, q holds its Euler
-// parameters e, with e' = G(e) w / |e| = e (0, w) / (2 |e|), w = u_1..3 (the kinematic equations); du'/de is
-// du'/dtheta L, L = 4 G(e)^T / |e|^2 (tangent.hpp): no column along |e|.
+// by jets of the inputs alone through inverse dynamics, M factored once for both. With a free joint, q holds
+// its Euler parameters e, with e' = G(e) w / |e| = e (0, w) / (2 |e|), w = u_1..3 (the kinematic equations);
+// du'/de is du'/dtheta L, L = 4 G(e)^T / |e|^2 (tangent.hpp): no column along |e|.
 #pragma once
 
 #include <cmath>
@@ -10,12 +10,11 @@
 #include <limits>
 #include <type_traits>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "kane/dynamics/dynamics_derivatives.hpp"
 #include "kane/dynamics/inverse_dynamics.hpp"
-#include "kane/dynamics/mass_matrix_and_forcing.hpp"
+#include "kane/evaluation/status.hpp"
 #include "kane/linearization/attitude_map.hpp"
 #include "kane/linearization/jet.hpp"
 #include "kane/linearization/lift.hpp"
@@ -69,6 +68,26 @@ void free_kinematics(const St& s, const D& dud_dq, A& a, R& rate) {
   }
 }
 
+// dtau/dr by jets of the inputs alone through inverse dynamics: the inputs move loads only, so it does
+// not depend on u', taken as 0.
+template <class Sys, class Ev, class In>
+Eigen::Matrix<typename Ev::scalar, int(Ev::nu), int(In::n)> torque_by_inputs(
+    const typename Ev::state_type& s) {
+  using J = jet<typename Ev::scalar, In::n>;
+  constexpr std::size_t n = Ev::nu;
+  auto js = lift<In::n>(s);
+  seed_inputs<In, J>(js, 0);
+  for (std::size_t i = 0; i < n; ++i) js.ud[i] = J(0), js.qdd[i] = js.ud[i];
+  typename rebind_evaluator<Ev, J>::type jev;
+  jev.update(js);
+  const auto tau = inverse_dynamics<Sys>(jev).tau;
+  Eigen::Matrix<typename Ev::scalar, int(n), int(In::n)> b;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = 0; k < In::n; ++k)
+      b(Eigen::Index(i), Eigen::Index(k)) = tau(Eigen::Index(i)).part(k);
+  return b;
+}
+
 template <class Sys, class Ev, class In>
 model_of<Ev, In> linearize_tree(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
@@ -76,8 +95,17 @@ model_of<Ev, In> linearize_tree(const typename Ev::state_type& s) {
   constexpr auto m = Eigen::Index(n);
   Ev ev;
   ev.update(s);
-  const auto d = forward_dynamics_derivatives<Sys>(ev);
   model_of<Ev, In> out;
+  out.B.setZero();
+  const auto d = [&] {  // B = -M^-1 dtau/dr, by the factor of M that the derivatives take
+    if constexpr (In::n > 0) {
+      auto b = torque_by_inputs<Sys, Ev, In>(s);
+      const auto fd = forward_derivatives_solving<Sys>(ev, b);
+      out.B.bottomRows(m) = b;
+      return fd;
+    } else
+      return forward_dynamics_derivatives<Sys>(ev);
+  }();
   out.A.setZero();
   if constexpr (!free_joint<Sys, Ev>) {
     out.A.block(0, m, m, m).setIdentity();
@@ -88,23 +116,7 @@ model_of<Ev, In> linearize_tree(const typename Ev::state_type& s) {
   out.A.bottomRightCorner(m, m) = d.dud_du;
   out.rate.tail(m) = d.ud;
   out.status = d.status;
-  if constexpr (In::n > 0) {
-    using J = jet<S, In::n>;
-    auto js = lift<In::n>(s);
-    seed_inputs<In, J>(js, 0);
-    for (std::size_t i = 0; i < n; ++i) js.ud[i] = J(d.ud(Eigen::Index(i))), js.qdd[i] = js.ud[i];
-    typename rebind_evaluator<Ev, J>::type jev;
-    jev.update(js);
-    const auto tau = inverse_dynamics<Sys>(jev).tau;
-    Eigen::Matrix<S, int(n), int(In::n)> b;
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t k = 0; k < In::n; ++k)
-        b(Eigen::Index(i), Eigen::Index(k)) = -tau(Eigen::Index(i)).part(k);
-    const Eigen::LLT<Eigen::Matrix<S, int(n), int(n)>> llt(mass_matrix<Sys>(ev).M);
-    llt.solveInPlace(b);
-    out.B.setZero();
-    out.B.bottomRows(m) = b;
-  }
+  if (out.status == solve_status::ok && !all_finite_matrix(out.B)) out.status = solve_status::not_finite;
   if (out.status != solve_status::ok)
     out.A.setConstant(std::numeric_limits<S>::quiet_NaN()),
         out.B.setConstant(std::numeric_limits<S>::quiet_NaN());
