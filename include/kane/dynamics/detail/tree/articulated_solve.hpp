@@ -35,7 +35,7 @@ class articulated_solve {
   static constexpr std::size_t B = spread ? W : 1;
   using wide = std::array<pack<B>, 6>;
   // packets of columns a pass carries side by side
-  static constexpr std::size_t K = 2;
+  static constexpr std::size_t chains = 2;
   // Frame g hands its sum to the next frame in registers when that frame is its parent (inward: g - 1;
   // outward: a child at g + 1); a frame with another child keeps its sum in memory.
   struct tree_shape {
@@ -93,12 +93,12 @@ class articulated_solve {
   // M is positive definite.
   bool ok() const { return ok_; }
 
-  // x = -M^-1 x, K packets of W columns at a time, then packets of W, W / 2, ...
+  // x = -M^-1 x, chains packets of W columns at a time, then packets of W, W / 2, ...
   template <class X>
   void solve_negated(X& x) const {
     const auto cols = std::size_t(x.cols());
     std::size_t c0 = 0;
-    for (; c0 + K * W <= cols; c0 += K * W) columns<W, K>(x, c0);
+    for (; c0 + chains * W <= cols; c0 += chains * W) columns<W, chains>(x, c0);
     in_packets<W>(c0, cols, [&](std::size_t c, auto v) { columns<decltype(v)::value, 1>(x, c); });
   }
 
