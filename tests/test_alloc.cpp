@@ -1,6 +1,5 @@
-// Evaluating kinematics allocates nothing: the global allocation functions
-// are replaced by counting ones, and the kernels of benchmarks/embedded/embedded.cpp
-// (everything of the 6-revolute arm; the rolling disc's constraints and
+// Evaluating kinematics allocates nothing: allocations.cpp counts, and the kernels of
+// benchmarks/embedded/embedded.cpp (everything of the 6-revolute arm; the rolling disc's constraints and
 // nonholonomic partial velocities; M, f and u' of the 3D double pendulum through
 // kane::motion, its M alone by kane::mass_matrix, and kane::inverse_dynamics, kane::forcing and
 // kane::forward_dynamics), and those of alloc_derivatives.cpp (the 6R arm's analytical derivatives and
@@ -8,29 +7,14 @@
 // counter.
 // A plain program (no test framework allocating in between).
 #include <cstdio>
-#include <cstdlib>
-#include <new>
+
+#include "allocations.hpp"
 
 extern "C" void arm_step(const double* q, const double* qd, const double* qdd, double* out);
 extern "C" int disc_step(const double* q, const double* u, double radius, double* out);
 extern "C" int pendulum_step(const double* x, const double* p, double* dxdt);
 extern "C" int derivatives_step(const double* q, const double* qd, const double* r, const double* x,
                                 const double* p, double* out);
-
-namespace {
-long allocations = 0;
-}
-
-void* operator new(std::size_t n) {
-  ++allocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) { return operator new(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 int main() {
   const double q[6] = {0.1, -0.4, 0.8, 0.3, -1.2, 0.6}, qd[6] = {0.5, 0.2, -0.3, 1.0, 0.4, -0.7},
@@ -42,11 +26,11 @@ int main() {
                p[21] = {1.5,  1.4, 0.9, 1.0,  1.2,   0.7,   0.8,  0.9, 0.07, -0.06, 0.07,
                         0.66, 1.2, 1.0, 0.02, -0.03, -0.03, 9.81, 1.5, 0.2,  0.1};
 
-  const long before = allocations;
+  const long before = allocations::count();
   arm_step(q, qd, qdd, arm);
   const int status = disc_step(dq, du, 0.25, disc) + pendulum_step(x, p, dx) +
                      derivatives_step(q, qd, torques, x, p, derivatives);
-  const long counted = allocations - before;
+  const long counted = allocations::count() - before;
 
   double sink = 0;
   for (double x : arm) sink += x;
