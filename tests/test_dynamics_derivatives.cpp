@@ -11,6 +11,7 @@
 #include <kane/kane.hpp>
 
 #include "../examples/models/arm6_dynamics.hpp"
+#include "derivative_checks.hpp"
 #include "differences.hpp"
 #include "recursive_models.hpp"
 
@@ -41,32 +42,6 @@ using arm_state = kane::state<double, 6, 6, 0, 6>;
 using arm_evaluator = kane::evaluator<arm_state, kane::frames<models::arm6::B6>, kane::level::acceleration,
                                       kane::qdot_speeds<6>>;
 
-// Every derivative against central differences (1e-7 relative); M against mass_matrix.
-template <class Sys, class Ev, class St>
-void check_differences(const St& s) {
-  constexpr std::size_t n = Ev::nu;
-  Ev ev;
-  ev.update(s);
-  const auto id = kane::inverse_dynamics_derivatives<Sys>(ev);
-  const auto fd = kane::forward_dynamics_derivatives<Sys>(ev);
-  REQUIRE(id.status == kane::solve_status::ok);
-  REQUIRE(fd.status == kane::solve_status::ok);
-  CHECK(relative(id.tau, kane::inverse_dynamics<Sys>(ev).tau) < 1e-14);
-  CHECK(relative(id.M, kane::mass_matrix<Sys>(ev).M) < 1e-14);
-  CHECK(relative(fd.ud, kane::forward_dynamics<Sys>(ev).ud) < 1e-12);
-  const auto tau = [](const Ev& x) { return kane::inverse_dynamics<Sys>(x).tau; };
-  const auto ud = [](const Ev& x) { return kane::forward_dynamics<Sys>(x).ud; };
-  Eigen::Matrix<double, int(n), int(n)> tq, tu, aq, au;
-  for (std::size_t j = 0; j < n; ++j) {
-    const auto c = Eigen::Index(j);
-    tq.col(c) = central<Ev, false>(s, j, tau), tu.col(c) = central<Ev, true>(s, j, tau);
-    aq.col(c) = central<Ev, false>(s, j, ud), au.col(c) = central<Ev, true>(s, j, ud);
-  }
-  CHECK(relative(id.dtau_dq, tq) < 1e-7);
-  CHECK(relative(id.dtau_du, tu) < 1e-7);
-  CHECK(relative(fd.dud_dq, aq) < 1e-7);
-  CHECK(relative(fd.dud_du, au) < 1e-7);
-}
 // du'/dq and du'/du against jets of two random directions (dq, du) through forward_dynamics (1e-10
 // relative to the derivatives' size).
 template <class Sys, class Ev, class St>
