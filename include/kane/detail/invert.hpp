@@ -165,72 +165,87 @@ bool solve_positive_definite(const Eigen::Matrix<S, N, N>& m, const Eigen::Matri
   return true;
 }
 
-// X = -M^-1 X for every column of each X (N rows, fixed columns), M = L L^T factored once by plain loops (for
-// a few speeds, where a blocked solver's bookkeeping outweighs its arithmetic); false where M is not positive
-// definite. The columns of all X lie side by side in rows of packets, so one l_ik scales W columns.
-template <class S, int N, class... X>
-bool solve_negated(const Eigen::Matrix<S, N, N>& m, X&... x) {
-  constexpr std::size_t n = std::size_t(N), W = packet_width<S>;
-  constexpr std::size_t cols = (std::size_t(X::ColsAtCompileTime) + ... + 0);
-  constexpr std::size_t P = (cols + W - 1) / W, R = P * W;  // packets and numbers a row
+// M = L L^T by plain loops (for a few speeds, where a blocked solver's bookkeeping outweighs its
+// arithmetic), factored once; ok() is false where M is not positive definite. solve_negated sets
+// X = -M^-1 X for every column of each X (N rows, fixed columns): the columns of all X lie side by
+// side in rows of packets, so one l_ik scales W columns.
+template <class S, int N>
+class cholesky_factor {
+  static constexpr std::size_t n = std::size_t(N), W = packet_width<S>;
   std::array<S, n * n> l{};
   std::array<S, n> inv{};
   bool positive = true;
-  const auto entry = [&](std::size_t i, std::size_t j, auto&& sum) KANE_ALWAYS_INLINE_LAMBDA {
-    S s = m(Eigen::Index(i), Eigen::Index(j));
-    sum([&](std::size_t k) KANE_ALWAYS_INLINE_LAMBDA { s -= l[i * n + k] * l[j * n + k]; });
-    if (i != j)
-      l[i * n + j] = s * inv[j];
-    else {
-      positive = positive && s > S(0);
-      l[i * n + i] = std::sqrt(s), inv[i] = S(1) / l[i * n + i];
-    }
-  };
-  if constexpr (n <= 12)  // unrolled
-    static_for<n>([&](auto i) {
-      static_for<i + 1>([&](auto j) {
-        entry(i, j, [](auto&& f) { static_for<decltype(j)::value>([&](auto k) { f(k); }); });
-      });
-    });
-  else
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j <= i; ++j)
-        entry(i, j, [j](auto&& f) {
-          for (std::size_t k = 0; k < j; ++k) f(k);
-        });
-  if (!positive) return false;
-  std::array<S, n * R> b{};  // row i: (X_0 row i, X_1 row i, ...)
-  std::size_t c0 = 0;
-  const auto gather = [&](const auto& xt) {
-    for (std::size_t j = 0; j < std::size_t(xt.cols()); ++j, ++c0)
-      for (std::size_t i = 0; i < n; ++i) b[i * R + c0] = xt(Eigen::Index(i), Eigen::Index(j));
-  };
-  (gather(x), ...);
-  // L y = b, then L^T w = -y (w = -z, with L^T z = y), V packets of each row from p0 at a time
-  in_packets<8>(0, P, [&](std::size_t p0, auto v) KANE_ALWAYS_INLINE_LAMBDA {
-    constexpr std::size_t V = decltype(v)::value;
-    // row i of y (Back false: rows k < i, l_ik) or of w (Back true: rows k > i, l_ki)
-    const auto step = [&]<bool Back>(std::size_t i, std::bool_constant<Back>) KANE_ALWAYS_INLINE_LAMBDA {
-      std::array<packet<S, W>, V> acc;
-      static_for_inline<V>([&](auto g) {
-        acc[g] = load_packet<W>(&b[i * R + (p0 + g) * W]);
-        if constexpr (Back) acc[g] = -acc[g];
-      });
-      for (std::size_t k = Back ? i + 1 : 0; k < (Back ? n : i); ++k) {
-        const S a = Back ? l[k * n + i] : l[i * n + k];
-        static_for_inline<V>([&](auto g) { acc[g] -= a * load_packet<W>(&b[k * R + (p0 + g) * W]); });
+
+ public:
+  explicit cholesky_factor(const Eigen::Matrix<S, N, N>& m) {
+    const auto entry = [&](std::size_t i, std::size_t j, auto&& sum) KANE_ALWAYS_INLINE_LAMBDA {
+      S s = m(Eigen::Index(i), Eigen::Index(j));
+      sum([&](std::size_t k) KANE_ALWAYS_INLINE_LAMBDA { s -= l[i * n + k] * l[j * n + k]; });
+      if (i != j)
+        l[i * n + j] = s * inv[j];
+      else {
+        positive = positive && s > S(0);
+        l[i * n + i] = std::sqrt(s), inv[i] = S(1) / l[i * n + i];
       }
-      static_for_inline<V>([&](auto g) { store_packet<W>(inv[i] * acc[g], &b[i * R + (p0 + g) * W]); });
     };
-    for (std::size_t i = 0; i < n; ++i) step(i, std::false_type{});
-    for (std::size_t i = n; i-- > 0;) step(i, std::true_type{});
-  });
-  c0 = 0;
-  const auto scatter = [&](auto& xt) {
-    for (std::size_t j = 0; j < std::size_t(xt.cols()); ++j, ++c0)
-      for (std::size_t i = 0; i < n; ++i) xt(Eigen::Index(i), Eigen::Index(j)) = b[i * R + c0];
-  };
-  (scatter(x), ...);
+    if constexpr (n <= 12)  // unrolled
+      static_for<n>([&](auto i) {
+        static_for<i + 1>([&](auto j) {
+          entry(i, j, [](auto&& f) { static_for<decltype(j)::value>([&](auto k) { f(k); }); });
+        });
+      });
+    else
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j <= i; ++j)
+          entry(i, j, [j](auto&& f) {
+            for (std::size_t k = 0; k < j; ++k) f(k);
+          });
+  }
+  bool ok() const { return positive; }
+  template <class... X>
+  void solve_negated(X&... x) const {
+    constexpr std::size_t cols = (std::size_t(X::ColsAtCompileTime) + ... + 0);
+    constexpr std::size_t P = (cols + W - 1) / W, R = P * W;  // packets and numbers a row
+    std::array<S, n * R> b{};                                 // row i: (X_0 row i, X_1 row i, ...)
+    std::size_t c0 = 0;
+    const auto gather = [&](const auto& xt) {
+      for (std::size_t j = 0; j < std::size_t(xt.cols()); ++j, ++c0)
+        for (std::size_t i = 0; i < n; ++i) b[i * R + c0] = xt(Eigen::Index(i), Eigen::Index(j));
+    };
+    (gather(x), ...);
+    // L y = b, then L^T w = -y (w = -z, with L^T z = y), V packets of each row from p0 at a time
+    in_packets<8>(0, P, [&](std::size_t p0, auto v) KANE_ALWAYS_INLINE_LAMBDA {
+      constexpr std::size_t V = decltype(v)::value;
+      // row i of y (Back false: rows k < i, l_ik) or of w (Back true: rows k > i, l_ki)
+      const auto step = [&]<bool Back>(std::size_t i, std::bool_constant<Back>) KANE_ALWAYS_INLINE_LAMBDA {
+        std::array<packet<S, W>, V> acc;
+        static_for_inline<V>([&](auto g) {
+          acc[g] = load_packet<W>(&b[i * R + (p0 + g) * W]);
+          if constexpr (Back) acc[g] = -acc[g];
+        });
+        for (std::size_t k = Back ? i + 1 : 0; k < (Back ? n : i); ++k) {
+          const S a = Back ? l[k * n + i] : l[i * n + k];
+          static_for_inline<V>([&](auto g) { acc[g] -= a * load_packet<W>(&b[k * R + (p0 + g) * W]); });
+        }
+        static_for_inline<V>([&](auto g) { store_packet<W>(inv[i] * acc[g], &b[i * R + (p0 + g) * W]); });
+      };
+      for (std::size_t i = 0; i < n; ++i) step(i, std::false_type{});
+      for (std::size_t i = n; i-- > 0;) step(i, std::true_type{});
+    });
+    c0 = 0;
+    const auto scatter = [&](auto& xt) {
+      for (std::size_t j = 0; j < std::size_t(xt.cols()); ++j, ++c0)
+        for (std::size_t i = 0; i < n; ++i) xt(Eigen::Index(i), Eigen::Index(j)) = b[i * R + c0];
+    };
+    (scatter(x), ...);
+  }
+};
+// X = -M^-1 X for each X by one factor of M; false where M is not positive definite.
+template <class S, int N, class... X>
+bool solve_negated(const Eigen::Matrix<S, N, N>& m, X&... x) {
+  const cholesky_factor<S, N> factor(m);
+  if (!factor.ok()) return false;
+  factor.solve_negated(x...);
   return true;
 }
 }  // namespace kane::detail

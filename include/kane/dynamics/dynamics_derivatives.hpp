@@ -92,37 +92,31 @@ forward_derivatives<typename Ev::scalar, Ev::nu> forward_derivatives_solving(con
   using S = typename Ev::scalar;
   constexpr std::size_t n = Ev::nu;
   forward_derivatives<S, n> out;
-  // u' first; one pass gives M and dtau/dx at u'; du'/dx = -M^-1 dtau/dx by plain loops for a few
-  // speeds, by articulated bodies above, which also give u' = M^-1 f.
+  // u' first, by a factor of M from composite bodies (Cholesky, for a few speeds or a free joint) or
+  // by articulated bodies; then one pass gives dtau/dx at u', and du'/dx = -M^-1 dtau/dx by that factor.
   using JF = joint_form_of<Sys, Ev>;
-  if constexpr (n <= articulated_above || free_joint<Sys, Ev>) {
-    const auto fd = forward_dynamics<Sys>(ev);
-    out.ud = fd.ud, out.status = fd.status;
-    if (out.status == solve_status::ok) {
-      const body_frames<JF, Ev> bf(ev);
-      tree_partials<JF, Sys, Ev> pass(bf, ev);
+  const body_frames<JF, Ev> bf(ev);
+  tree_partials<JF, Sys, Ev> pass(bf, ev);
+  out.status = ev.status();
+  const auto factor = [&] {
+    if constexpr (n <= articulated_above || free_joint<Sys, Ev>) {
       Eigen::Matrix<S, int(n), int(n)> m;
-      Eigen::Matrix<S, int(n), 1> tau;
-      pass.outward(ev, out.ud);
-      pass.template inward<true>(tau, m, out.dud_dq, out.dud_du);
-      if (!solve_negated(m, out.dud_dq, out.dud_du, extra...)) out.status = solve_status::singular;
-    }
-  } else {
-    const body_frames<JF, Ev> bf(ev);
-    tree_partials<JF, Sys, Ev> pass(bf, ev);
-    const articulated_solve<JF, S> bodies(pass.own, pass.screw);
-    out.status = ev.status();
-    if (out.status == solve_status::ok && !bodies.ok()) out.status = solve_status::singular;
-    if (out.status == solve_status::ok) {
-      joint_forces<rates::at_rest, JF, Sys>(bf, ev, out.ud);  // -f
-      bodies.solve_negated(out.ud);
-      Eigen::Matrix<S, int(n), int(n)> m;
-      Eigen::Matrix<S, int(n), 1> tau;
-      pass.outward(ev, out.ud);
-      pass.template inward<false>(tau, m, out.dud_dq, out.dud_du);
-      bodies.solve_negated(out.dud_dq), bodies.solve_negated(out.dud_du);
-      (bodies.solve_negated(extra), ...);
-    }
+      composite_mass_matrix<JF, Sys>(bf, ev, m);
+      if (out.status == solve_status::ok && !finite_diagonal(m)) out.status = solve_status::not_finite;
+      return cholesky_factor<S, int(n)>(m);
+    } else
+      return articulated_solve<JF, S>(pass.own, pass.screw);
+  }();
+  joint_forces<rates::at_rest, JF, Sys>(bf, ev, out.ud);  // -f
+  if (out.status == solve_status::ok && !all_finite_matrix(out.ud)) out.status = solve_status::not_finite;
+  if (out.status == solve_status::ok && !factor.ok()) out.status = solve_status::singular;
+  if (out.status == solve_status::ok) {
+    factor.solve_negated(out.ud);
+    Eigen::Matrix<S, int(n), int(n)> m;
+    Eigen::Matrix<S, int(n), 1> tau;
+    pass.outward(ev, out.ud);
+    pass.template inward<false>(tau, m, out.dud_dq, out.dud_du);
+    factor.solve_negated(out.dud_dq, out.dud_du, extra...);
   }
   if (out.status == solve_status::ok) {
     if (!(all_finite_matrix(out.ud) && all_finite_matrix(out.dud_dq) && all_finite_matrix(out.dud_du)))

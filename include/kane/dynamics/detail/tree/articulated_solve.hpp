@@ -93,13 +93,17 @@ class articulated_solve {
   // M is positive definite.
   bool ok() const { return ok_; }
 
-  // x = -M^-1 x, chains packets of W columns at a time, then packets of W, W / 2, ...
-  template <class X>
-  void solve_negated(X& x) const {
-    const auto cols = std::size_t(x.cols());
-    std::size_t c0 = 0;
-    for (; c0 + chains * W <= cols; c0 += chains * W) columns<W, chains>(x, c0);
-    in_packets<W>(c0, cols, [&](std::size_t c, auto v) { columns<decltype(v)::value, 1>(x, c); });
+  // x = -M^-1 x for each x, chains packets of W columns at a time, then packets of W, W / 2, ...
+  template <class... X>
+  void solve_negated(X&... x) const {
+    (
+        [&] {
+          const auto cols = std::size_t(x.cols());
+          std::size_t c0 = 0;
+          for (; c0 + chains * W <= cols; c0 += chains * W) columns<W, chains>(x, c0);
+          in_packets<W>(c0, cols, [&](std::size_t c, auto v) { columns<decltype(v)::value, 1>(x, c); });
+        }(),
+        ...);
   }
 
  private:
