@@ -204,7 +204,8 @@ struct tree_partials {
                                  Square& dq, Square& du, const std::array<std::array<S, n>, 6>& sc,
                                  const std::array<std::array<S, n>, 9>& ysb) const {
     static_assert(!Square::IsRowMajor);
-    constexpr std::size_t W = packet_width<S>;
+    // packets of at most 32 bytes: AVX-512's 64 ran slower over the rows just written
+    constexpr std::size_t W = packet_width<S> * sizeof(S) > 32 ? 32 / sizeof(S) : packet_width<S>;
     const spatial<S>&s = screw[r], &va = da[r], &vv = dv[r];
     const S two(2);
     const std::array<S, 9> aq{va.w.x, va.w.y, va.w.z, va.v.x, va.v.y, va.v.z, vv.w.x, vv.w.y, vv.w.z},
