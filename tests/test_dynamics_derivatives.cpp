@@ -126,3 +126,42 @@ TEST_CASE("linearize: the driven 6R arm's A and B against central differences of
   CHECK(relative(lin.B, b) < 1e-7);
   CHECK(relative(lin.rate.tail<6>(), ud(s)) < 1e-12);
 }
+
+// The driven arm with loads nonlinear in the inputs, one a force at a point: B from the loads' partial
+// derivatives by the inputs against central differences and against jets through the whole evaluator.
+namespace pushed {
+using namespace models::arm6;
+using system = kane::system<driven, kane::force<C4, kane::sin(kane::r<1>) * e<B4, 2>>,
+                            kane::torque<B5, kane::r<2> * kane::r<3> * e<B5, 1>>>;
+}  // namespace pushed
+
+TEST_CASE("linearize: loads nonlinear in the inputs, B against central differences and jets",
+          "[derivatives]") {
+  using inputs = kane::inputs<kane::r<1>, kane::r<2>, kane::r<3>>;
+  using Sys = pushed::system;
+  std::mt19937 rng(61);
+  std::uniform_real_distribution<double> torque(-5, 5);
+  auto s = recursive::random_state<arm_state>(rng);
+  for (auto& r : s.r) r = torque(rng);
+  const auto lin = kane::linearize<Sys, arm_evaluator, inputs>(s);
+  const auto jets = kane::detail::linearize_in_batches<Sys, arm_evaluator, inputs>(s);
+  REQUIRE(lin.status == kane::solve_status::ok);
+  REQUIRE(jets.status == kane::solve_status::ok);
+  CHECK(relative(lin.B, jets.B) < 1e-10);
+  CHECK(relative(lin.A, jets.A) < 1e-10);
+  const auto ud = [](const arm_state& x) {
+    arm_evaluator ev;
+    ev.update(x);
+    return kane::forward_dynamics<Sys>(ev).ud;
+  };
+  Eigen::Matrix<double, 12, 3> b = Eigen::Matrix<double, 12, 3>::Zero();
+  const double h = 1e-6;
+  for (std::size_t j = 0; j < 3; ++j) {
+    arm_state p = s, m = s;
+    p.r[j] += h, m.r[j] -= h;
+    b.block<6, 1>(6, Eigen::Index(j)) = (ud(p) - ud(m)) / (2 * h);
+  }
+  CHECK(relative(lin.B, b) < 1e-7);
+  CHECK(lin.B.col(0).norm() > 0);
+  CHECK(lin.B.col(2).norm() > 0);
+}

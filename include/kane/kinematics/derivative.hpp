@@ -19,6 +19,7 @@
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative_traits.hpp"
+#include "kane/scalars/coordinate.hpp"
 #include "kane/scalars/expr.hpp"
 
 #pragma GCC diagnostic push
@@ -66,12 +67,37 @@ constexpr auto ddt(X x) {
     static_assert(!sizeof(X), "kane: dt of an unknown scalar node");
 }
 
-// Partial derivative of a scalar by a leaf (q_i, q_i', u_i, t, ...).
+// X is the leaf Leaf: the same type, or an input r_i of the same i (kane::named_input is r_i).
+template <class X, class Leaf>
+constexpr bool same_leaf() {
+  if constexpr (Input<X> && Input<Leaf>)
+    return X::index == Leaf::index;
+  else
+    return std::is_same_v<X, Leaf>;
+}
+
+// Leaf is q_i with d time derivatives (q_i^(d)), or u_i^(d).
+template <class Leaf>
+constexpr bool is_coordinate_leaf(int d) {
+  if constexpr (coordinate_info<Leaf>::value)
+    return int(Leaf::order) == d;
+  else
+    return false;
+}
+template <class Leaf>
+constexpr bool is_speed_leaf(int d) {
+  if constexpr (speed_info<Leaf>::value)
+    return int(Leaf::order) == d;
+  else
+    return false;
+}
+
+// Partial derivative of a scalar by a leaf (q_i, q_i', u_i, t, r_i, ...).
 template <class Leaf, class X>
 constexpr auto partial(X x) {
   if constexpr (!overlaps(leaves_of<X>, leaf_query<Leaf>()))
     return zero_t{};
-  else if constexpr (std::is_same_v<X, Leaf>)
+  else if constexpr (same_leaf<X, Leaf>())
     return one_t{};
   else if constexpr (coordinate_info<X>::value || speed_info<X>::value || std::is_same_v<X, time_variable> ||
                      LeafConstant<X>)
@@ -147,7 +173,7 @@ constexpr auto partial_in(V v) {
   else if constexpr (is_zero_vector_v<V>)
     return v;
   else if constexpr (is_unit<V>::value) {
-    if constexpr (coordinate_info<Leaf>::value && Leaf::order == 0) {
+    if constexpr (is_coordinate_leaf<Leaf>(0)) {
       using F = typename V::frame;
       using p = joined_frames<A, F>;
       return derived_cross(partial_omega<Leaf::index>(typename p::up{}, typename p::down{}), v);
@@ -163,17 +189,17 @@ constexpr auto partial_in(V v) {
     return -partial_in<A, Leaf>(v.v);
   else if constexpr (is_v<V, vcross>)
     return derived_cross(partial_in<A, Leaf>(v.l), v.r) + derived_cross(v.l, partial_in<A, Leaf>(v.r));
-  else if constexpr (is_v<V, omega> && coordinate_info<Leaf>::value && Leaf::order == 1) {
+  else if constexpr (is_v<V, omega> && is_coordinate_leaf<Leaf>(1)) {
     // d(^R w^F)/dq_s': the axes of the edges from the root to F turned by q_s
     using p = path<root_of<typename V::frame>, typename V::frame>;
     return partial_omega<Leaf::index>(typename p::up{}, typename p::down{});
-  } else if constexpr (is_v<V, omega> && speed_info<Leaf>::value && Leaf::order == 0) {
+  } else if constexpr (is_v<V, omega> && is_speed_leaf<Leaf>(0)) {
     // d(^R w^F)/du_r: the axes of the edges from the root to F spinning by u_r
     using p = path<root_of<typename V::frame>, typename V::frame>;
     return partial_omega<Leaf::index, wrt::speeds>(typename p::up{}, typename p::down{});
-  } else if constexpr (is_v<V, omega> && !(coordinate_info<Leaf>::value && Leaf::order == 0))
+  } else if constexpr (is_v<V, omega> && !(is_coordinate_leaf<Leaf>(0)))
     return zero_vector{};  // no t, q'' or u' in ^R w^F
-  else if constexpr (is_v<V, angular_velocity_of> && !(coordinate_info<Leaf>::value && Leaf::order == 0))
+  else if constexpr (is_v<V, angular_velocity_of> && !(is_coordinate_leaf<Leaf>(0)))
     return partial_in<A, Leaf>(expand(v));
   else if constexpr (is_v<V, alpha> || is_v<V, angular_acceleration_of>)
     static_assert(

@@ -1,10 +1,11 @@
 // kane::linearize of a system that takes the analytical derivatives (dynamics_derivatives.hpp):
-// x = (q, u) with q' = u, so A = [0 1; du'/dq du'/du], and B = -M^-1 dtau/dr with dtau/dr carried
-// by jets of the inputs alone through inverse dynamics, M factored once for both. With a free joint, q holds
+// x = (q, u) with q' = u, so A = [0 1; du'/dq du'/du], and B = -M^-1 dtau/dr (torque_by_inputs), M
+// factored once for both. With a free joint, q holds
 // its Euler parameters e, with e' = G(e) w / |e| = e (0, w) / (2 |e|), w = u_1..3 (the kinematic equations);
 // du'/de is du'/dtheta L, L = 4 G(e)^T / |e|^2 (tangent.hpp): no column along |e|.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -12,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include "kane/dynamics/detail/tree/frame_steps.hpp"
 #include "kane/dynamics/dynamics_derivatives.hpp"
 #include "kane/dynamics/inverse_dynamics.hpp"
 #include "kane/evaluation/status.hpp"
@@ -68,23 +70,41 @@ void free_kinematics(const St& s, const D& dud_dq, A& a, R& rate) {
   }
 }
 
-// dtau/dr by jets of the inputs alone through inverse dynamics: the inputs move loads only, so it does
-// not depend on u', taken as 0.
+// dtau/dr, which does not depend on u'. Inputs r_k move loads alone (no pass reads them), so
+// dtau/dr_k sums the partial derivatives of the loads by r_k inward. Parameters, which masses and
+// lengths may read, go by jets through inverse dynamics at u' = 0.
 template <class Sys, class Ev, class In>
-Eigen::Matrix<typename Ev::scalar, int(Ev::nu), int(In::n)> torque_by_inputs(
-    const typename Ev::state_type& s) {
-  using J = jet<typename Ev::scalar, In::n>;
+Eigen::Matrix<typename Ev::scalar, int(Ev::nu), int(In::n)> torque_by_inputs(const Ev& ev) {
+  using S = typename Ev::scalar;
   constexpr std::size_t n = Ev::nu;
-  auto js = lift<In::n>(s);
-  seed_inputs<In, J>(js, 0);
-  for (std::size_t i = 0; i < n; ++i) js.ud[i] = J(0), js.qdd[i] = js.ud[i];
-  typename rebind_evaluator<Ev, J>::type jev;
-  jev.update(js);
-  const auto tau = inverse_dynamics<Sys>(jev).tau;
-  Eigen::Matrix<typename Ev::scalar, int(n), int(In::n)> b;
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t k = 0; k < In::n; ++k)
-      b(Eigen::Index(i), Eigen::Index(k)) = tau(Eigen::Index(i)).part(k);
+  Eigen::Matrix<S, int(n), int(In::n)> b;
+  constexpr bool of_state = [] {
+    for (bool x : In::of_state)
+      if (!x) return false;
+    return true;
+  }();
+  if constexpr (of_state) {
+    using JF = joint_form_of<Sys, Ev>;
+    const body_frames<JF, Ev> bf(ev);
+    static_for<In::n>([&](auto k) {
+      std::array<v3<S>, JF::nf> f, m;
+      own_loads<JF, Sys, input<In::slots[k]>>(bf, ev, f, m);
+      Eigen::Matrix<S, int(n), 1> tau;
+      inward_forces<JF, false>(bf, f, m, tau);
+      b.col(Eigen::Index(k)) = tau;
+    });
+  } else {
+    using J = jet<S, In::n>;
+    auto js = lift<In::n>(ev.state());
+    seed_inputs<In, J>(js, 0);
+    for (std::size_t i = 0; i < n; ++i) js.ud[i] = J(0), js.qdd[i] = js.ud[i];
+    typename rebind_evaluator<Ev, J>::type jev;
+    jev.update(js);
+    const auto tau = inverse_dynamics<Sys>(jev).tau;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t k = 0; k < In::n; ++k)
+        b(Eigen::Index(i), Eigen::Index(k)) = tau(Eigen::Index(i)).part(k);
+  }
   return b;
 }
 
@@ -99,7 +119,7 @@ model_of<Ev, In> linearize_tree(const typename Ev::state_type& s) {
   out.B.setZero();
   const auto d = [&] {  // B = -M^-1 dtau/dr, by the factor of M that the derivatives take
     if constexpr (In::n > 0) {
-      auto b = torque_by_inputs<Sys, Ev, In>(s);
+      auto b = torque_by_inputs<Sys, Ev, In>(ev);
       const auto fd = forward_derivatives_solving<Sys>(ev, b);
       out.B.bottomRows(m) = b;
       return fd;

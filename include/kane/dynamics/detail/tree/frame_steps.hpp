@@ -18,6 +18,7 @@
 #include "kane/dynamics/detail/tree/composite_inertia.hpp"
 #include "kane/dynamics/detail/tree/rnea.hpp"
 #include "kane/dynamics/detail/tree/turns.hpp"
+#include "kane/kinematics/derivative.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -149,9 +150,18 @@ inline constexpr bool loads_below_root =
       return ((!is_gravity<X> && !is_body<X> && !is_particle<X> && JF::table.item_frame[I] > 0) || ...);
     }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
 
+// The vector of the load X, or its partial derivative by the leaf By (an input r_i).
+template <class X, class By, class R>
+constexpr auto load_vector() {
+  if constexpr (std::is_void_v<By>)
+    return X::vector;
+  else
+    return partial_in<R, By>(X::vector);
+}
+
 // Each frame's applied loads negated, -f_ext: the force f and its moment n about the frame's origin,
-// in its components.
-template <class JF, class Sys, class Ev>
+// in its components; with By, their partial derivatives by By.
+template <class JF, class Sys, class By = void, class Ev>
 KANE_ALWAYS_INLINE void own_loads(const body_frames<JF, Ev>& bf, const Ev& ev,
                                   std::array<v3<typename Ev::scalar>, JF::nf>& f,
                                   std::array<v3<typename Ev::scalar>, JF::nf>& n) {
@@ -165,8 +175,9 @@ KANE_ALWAYS_INLINE void own_loads(const body_frames<JF, Ev>& bf, const Ev& ev,
           constexpr int g = t.item_frame[I];
           if constexpr (!is_gravity<X> && !is_body<X> && !is_particle<X> && g > 0) {
             constexpr int ip = t.item_point[I];
-            subtract_load<X, frame_at<JF, std::size_t(g)>, BF::local_pattern(ip, g)>(
-                f[std::size_t(g)], n[std::size_t(g)], bf.template local<ip, g>(), ev);
+            subtract_load<X, frame_at<JF, std::size_t(g)>, BF::local_pattern(ip, g),
+                          load_vector<X, By, frame_at<JF, 0>>()>(f[std::size_t(g)], n[std::size_t(g)],
+                                                                 bf.template local<ip, g>(), ev);
           }
         }(),
         ...);

@@ -70,15 +70,47 @@ KANE_ALWAYS_INLINE v3<typename Ev::scalar> base_acceleration(const Ev& ev) {
 }
 
 // The applied load X at c (pattern C, components in F) subtracted from (f, n): f -= R and
-// n -= c x R for a force R, n -= T for a torque T.
-template <class X, class F, auto C, class Ev, class V>
+// n -= c x R for a force R, n -= T for a torque T; R or T is X's vector, or Vector.
+template <class X, class F, auto C, auto Vector = X::vector, class Ev, class V>
 KANE_ALWAYS_INLINE void subtract_load(V& f, V& n, const V& c, const Ev& ev) {
-  if constexpr (is_force<X>) {
-    const V r = in_frame<F>(eval_vector<memo_use::fresh>(X::vector, ev), ev);
+  if constexpr (is_zero_vector_v<std::remove_cvref_t<decltype(Vector)>>)
+    return;
+  else if constexpr (is_force<X>) {
+    const V r = in_frame<F>(eval_vector<memo_use::fresh>(Vector, ev), ev);
     f = f - r;
     if constexpr (!all_zero(C)) n = n - cross_from<C>(c, r);
   } else if constexpr (is_torque<X>)
-    n = n - in_frame<F>(eval_vector<memo_use::fresh>(X::vector, ev), ev);
+    n = n - in_frame<F>(eval_vector<memo_use::fresh>(Vector, ev), ev);
+}
+
+// tau from the forces f and moments n of each frame's own items (about its origin, in its
+// components), summed inward: f_P += E f, n_P += E n + t x E f; tau_r = k_r . n, a free joint's
+// tau_1..3 = n and tau_4..6 = E f. -tau with Negated.
+template <class JF, bool Negated, class S, class Ev, class Out>
+KANE_ALWAYS_INLINE void inward_forces(const body_frames<JF, Ev>& bf, std::array<v3<S>, JF::nf>& f,
+                                      std::array<v3<S>, JF::nf>& n, Out& tau) {
+  using BF = body_frames<JF, Ev>;
+  static constexpr auto& t = JF::table;
+  static_for<JF::nf - 1>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {  // leaves first
+    constexpr std::size_t g = JF::nf - 1 - j, p = std::size_t(t.parent[g]);
+    constexpr int r = t.speed[g];
+    if constexpr (r >= 0) {
+      using F = frame_at<JF, g>;
+      const S x = dot_along<joint_axis_pattern<F>()>(n[g], joint_axis_in_frame<F, S>());
+      tau(Eigen::Index(r)) = Negated ? -x : x;
+    } else if constexpr (int(g) == t.free) {  // n about the origin in F's components, f in the root's
+      const v3<S> fo = std::get<g>(bf.e).up(f[g]);
+      const std::array<S, 6> x{n[g].x, n[g].y, n[g].z, fo.x, fo.y, fo.z};
+      for (std::size_t k = 0; k < 6; ++k) tau(Eigen::Index(k)) = Negated ? -x[k] : x[k];
+    }
+    if constexpr (p > 0) {
+      constexpr auto O = BF::offset_pattern(g);
+      const auto& e = std::get<g>(bf.e);
+      const v3<S> fp = e.up(f[g]);
+      f[p] = f[p] + fp, n[p] = n[p] + e.up(n[g]);
+      if constexpr (!all_zero(O)) n[p] = n[p] + cross_from<O>(bf.offset[g], fp);
+    }
+  });
 }
 
 // tau = M u' - f of the joint-form system Sys (u' of the state, or 0 with Rest); -tau with Negated.
@@ -186,26 +218,7 @@ KANE_ALWAYS_INLINE void joint_forces(const body_frames<JF, Ev>& bf, const Ev& ev
         }(),
         ...);
   }(typename Sys::items{}, std::make_index_sequence<size<typename Sys::items>::value>{});
-  static_for<nf - 1>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {  // leaves first
-    constexpr std::size_t g = nf - 1 - j, p = std::size_t(t.parent[g]);
-    constexpr int r = t.speed[g];
-    if constexpr (r >= 0) {
-      using F = frame_at<JF, g>;
-      const S x = dot_along<joint_axis_pattern<F>()>(n[g], joint_axis_in_frame<F, S>());
-      tau(Eigen::Index(r)) = Negated ? -x : x;
-    } else if constexpr (int(g) == t.free) {  // n about the origin in F's components, f in the root's
-      const vec fo = std::get<g>(bf.e).up(f[g]);
-      const std::array<S, 6> x{n[g].x, n[g].y, n[g].z, fo.x, fo.y, fo.z};
-      for (std::size_t k = 0; k < 6; ++k) tau(Eigen::Index(k)) = Negated ? -x[k] : x[k];
-    }
-    if constexpr (p > 0) {
-      constexpr auto O = BF::offset_pattern(g);
-      const auto& e = std::get<g>(bf.e);
-      const vec fp = e.up(f[g]);
-      f[p] = f[p] + fp, n[p] = n[p] + e.up(n[g]);
-      if constexpr (!all_zero(O)) n[p] = n[p] + cross_from<O>(bf.offset[g], fp);
-    }
-  });
+  inward_forces<JF, Negated>(bf, f, n, tau);
 }
 
 }  // namespace kane::detail
