@@ -133,6 +133,11 @@ namespace pushed {
 using namespace models::arm6;
 using system = kane::system<driven, kane::force<C4, kane::sin(kane::r<1>) * e<B4, 2>>,
                             kane::torque<B5, kane::r<2> * kane::r<3> * e<B5, 1>>>;
+// a parameter among the inputs: B by jets through inverse dynamics
+using weighed =
+    kane::system<driven, kane::force<C4, kane::parameter<1>{} * kane::sin(kane::r<1>) * e<B4, 2>>>;
+using state = kane::state<double, 6, 6, 1, 6>;
+using evaluator = kane::evaluator<state, kane::frames<B6>, kane::level::acceleration, kane::qdot_speeds<6>>;
 }  // namespace pushed
 
 TEST_CASE("linearize: loads nonlinear in the inputs, B against central differences and jets",
@@ -164,4 +169,31 @@ TEST_CASE("linearize: loads nonlinear in the inputs, B against central differenc
   CHECK(relative(lin.B, b) < 1e-7);
   CHECK(lin.B.col(0).norm() > 0);
   CHECK(lin.B.col(2).norm() > 0);
+}
+
+TEST_CASE("linearize: a parameter among the inputs, B against central differences", "[derivatives]") {
+  using inputs = kane::inputs<kane::parameter<1>{}, kane::r<1>>;
+  using Sys = pushed::weighed;
+  using St = pushed::state;
+  std::mt19937 rng(67);
+  std::uniform_real_distribution<double> torque(-5, 5);
+  auto s = recursive::random_state<St>(rng);
+  for (auto& r : s.r) r = torque(rng);
+  s.p = {2.5};
+  const auto lin = kane::linearize<Sys, pushed::evaluator, inputs>(s);
+  REQUIRE(lin.status == kane::solve_status::ok);
+  const auto ud = [](const St& x) {
+    pushed::evaluator ev;
+    ev.update(x);
+    return kane::forward_dynamics<Sys>(ev).ud;
+  };
+  Eigen::Matrix<double, 12, 2> b = Eigen::Matrix<double, 12, 2>::Zero();
+  const double h = 1e-6;
+  St p = s, m = s;
+  p.p[0] += h, m.p[0] -= h;
+  b.block<6, 1>(6, 0) = (ud(p) - ud(m)) / (2 * h);
+  p = s, m = s, p.r[0] += h, m.r[0] -= h;
+  b.block<6, 1>(6, 1) = (ud(p) - ud(m)) / (2 * h);
+  CHECK(relative(lin.B, b) < 1e-7);
+  CHECK(lin.B.col(0).norm() > 0);
 }

@@ -74,7 +74,8 @@ void free_kinematics(const St& s, const D& dud_dq, A& a, R& rate) {
 // dtau/dr_k sums the partial derivatives of the loads by r_k inward. Parameters, which masses and
 // lengths may read, go by jets through inverse dynamics at u' = 0.
 template <class Sys, class Ev, class In>
-Eigen::Matrix<typename Ev::scalar, int(Ev::nu), int(In::n)> torque_by_inputs(const Ev& ev) {
+Eigen::Matrix<typename Ev::scalar, int(Ev::nu), int(In::n)> torque_by_inputs(
+    const Ev& ev, const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
   constexpr std::size_t n = Ev::nu;
   Eigen::Matrix<S, int(n), int(In::n)> b;
@@ -95,7 +96,7 @@ Eigen::Matrix<typename Ev::scalar, int(Ev::nu), int(In::n)> torque_by_inputs(con
     });
   } else {
     using J = jet<S, In::n>;
-    auto js = lift<In::n>(ev.state());
+    auto js = lift<In::n>(s);
     seed_inputs<In, J>(js, 0);
     for (std::size_t i = 0; i < n; ++i) js.ud[i] = J(0), js.qdd[i] = js.ud[i];
     typename rebind_evaluator<Ev, J>::type jev;
@@ -119,7 +120,7 @@ model_of<Ev, In> linearize_tree(const typename Ev::state_type& s) {
   out.B.setZero();
   const auto d = [&] {  // B = -M^-1 dtau/dr, by the factor of M that the derivatives take
     if constexpr (In::n > 0) {
-      auto b = torque_by_inputs<Sys, Ev, In>(ev);
+      auto b = torque_by_inputs<Sys, Ev, In>(ev, s);
       const auto fd = forward_derivatives_solving<Sys>(ev, b);
       out.B.bottomRows(m) = b;
       return fd;
