@@ -76,20 +76,13 @@ constexpr bool same_leaf() {
     return std::is_same_v<X, Leaf>;
 }
 
-// Leaf is q_i with d time derivatives (q_i^(d)), or u_i^(d).
-template <class Leaf>
-constexpr bool is_coordinate_leaf(int d) {
-  if constexpr (coordinate_info<Leaf>::value)
-    return int(Leaf::order) == d;
+// d of a leaf q_i^(d) (Info = coordinate_info) or u_i^(d) (speed_info); -1 for any other node.
+template <template <class> class Info, class Leaf>
+constexpr int leaf_order() {
+  if constexpr (Info<Leaf>::value)
+    return int(Leaf::order);
   else
-    return false;
-}
-template <class Leaf>
-constexpr bool is_speed_leaf(int d) {
-  if constexpr (speed_info<Leaf>::value)
-    return int(Leaf::order) == d;
-  else
-    return false;
+    return -1;
 }
 
 // Partial derivative of a scalar by a leaf (q_i, q_i', u_i, t, r_i, ...).
@@ -173,7 +166,7 @@ constexpr auto partial_in(V v) {
   else if constexpr (is_zero_vector_v<V>)
     return v;
   else if constexpr (is_unit<V>::value) {
-    if constexpr (is_coordinate_leaf<Leaf>(0)) {
+    if constexpr (leaf_order<coordinate_info, Leaf>() == 0) {
       using F = typename V::frame;
       using p = joined_frames<A, F>;
       return derived_cross(partial_omega<Leaf::index>(typename p::up{}, typename p::down{}), v);
@@ -189,17 +182,17 @@ constexpr auto partial_in(V v) {
     return -partial_in<A, Leaf>(v.v);
   else if constexpr (is_v<V, vcross>)
     return derived_cross(partial_in<A, Leaf>(v.l), v.r) + derived_cross(v.l, partial_in<A, Leaf>(v.r));
-  else if constexpr (is_v<V, omega> && is_coordinate_leaf<Leaf>(1)) {
+  else if constexpr (is_v<V, omega> && leaf_order<coordinate_info, Leaf>() == 1) {
     // d(^R w^F)/dq_s': the axes of the edges from the root to F turned by q_s
     using p = path<root_of<typename V::frame>, typename V::frame>;
     return partial_omega<Leaf::index>(typename p::up{}, typename p::down{});
-  } else if constexpr (is_v<V, omega> && is_speed_leaf<Leaf>(0)) {
+  } else if constexpr (is_v<V, omega> && leaf_order<speed_info, Leaf>() == 0) {
     // d(^R w^F)/du_r: the axes of the edges from the root to F spinning by u_r
     using p = path<root_of<typename V::frame>, typename V::frame>;
     return partial_omega<Leaf::index, wrt::speeds>(typename p::up{}, typename p::down{});
-  } else if constexpr (is_v<V, omega> && !(is_coordinate_leaf<Leaf>(0)))
+  } else if constexpr (is_v<V, omega> && leaf_order<coordinate_info, Leaf>() != 0)
     return zero_vector{};  // no t, q'' or u' in ^R w^F
-  else if constexpr (is_v<V, angular_velocity_of> && !(is_coordinate_leaf<Leaf>(0)))
+  else if constexpr (is_v<V, angular_velocity_of> && leaf_order<coordinate_info, Leaf>() != 0)
     return partial_in<A, Leaf>(expand(v));
   else if constexpr (is_v<V, alpha> || is_v<V, angular_acceleration_of>)
     static_assert(
