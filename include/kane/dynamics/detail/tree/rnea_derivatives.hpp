@@ -130,6 +130,8 @@ struct tree_partials {
   }();
   // From this many speeds on one path, the columns of the derivatives go in packets (column).
   static constexpr std::size_t packed_from = 12;
+  // Up to this many frames the inward pass is unrolled.
+  static constexpr std::size_t unrolled_frames = 8;
   static constexpr bool packed = one_path && n >= packed_from && !floating;
   // tau, M (when Mass), dtau/dq and dtau/du.
   template <bool Mass = true, class Tau, class Square>
@@ -143,7 +145,7 @@ struct tree_partials {
     [[maybe_unused]] std::array<std::array<S, n>, 6> sc;   // and S, by component
     if constexpr (packed)
       for (std::size_t j = 0; j < n; ++j) put(sc, j, screw[j]);
-    for (std::size_t g = nf - 1; g > 0; --g) {
+    const auto step = [&](std::size_t g) KANE_ALWAYS_INLINE_LAMBDA {
       const auto p = std::size_t(t.parent[g]);
       const int r = t.speed[g];
       if (r >= 0) {
@@ -160,6 +162,7 @@ struct tree_partials {
           ysb[6][std::size_t(r)] = bs.x, ysb[7][std::size_t(r)] = bs.y, ysb[8][std::size_t(r)] = bs.z;
           column<Mass>(std::size_t(r), fq, fu, m, dq, du, sc, ysb);
         } else
+#pragma GCC unroll 16
           for (int c = r; c >= 0; c = t.parent_speed[std::size_t(c)]) {
             const auto j = std::size_t(c);
             const auto l = Eigen::Index(c);
@@ -174,7 +177,11 @@ struct tree_partials {
         if (g == std::size_t(t.free)) free_inward<Mass>(*this, g, tau, m, dq, du);
       }
       if (p > 0) add_to(y[p], y[g]), add_to(b[p], b[g]), f[p] = f[p] + f[g];
-    }
+    };
+    if constexpr (nf <= unrolled_frames)  // leaves first, unrolled: the tree's indices fold
+      static_for<nf - 1>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { step(nf - 1 - i); });
+    else
+      for (std::size_t g = nf - 1; g > 0; --g) step(g);
     if constexpr (packed && Mass)
       for (Eigen::Index c = 1; c < Eigen::Index(n); ++c)
         for (Eigen::Index r = 0; r < c; ++r) m(r, c) = m(c, r);
