@@ -35,8 +35,17 @@ void split(std::size_t n, std::size_t t, const Make& make, const Work& work) {
     });
   for (auto& x : threads) x.join();
 }
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+// status = work(w, i, out + i m) for n items in one thread and in four: the same bits and statuses;
+// the statuses of one thread
+template <class Make, class Work>
+std::vector<int> one_and_four(std::size_t n, std::size_t m, const Make& make, const Work& work) {
+  std::vector<double> one(n * m), four(n * m);
+  std::vector<int> status_one(n), status_four(n);
+  split(n, 1, make, [&](auto& w, std::size_t i) { status_one[i] = work(w, i, &one[i * m]); });
+  split(n, 4, make, [&](auto& w, std::size_t i) { status_four[i] = work(w, i, &four[i * m]); });
+  CHECK(std::memcmp(one.data(), four.data(), one.size() * sizeof(double)) == 0);
+  CHECK(status_one == status_four);
+  return status_one;
 }
 }  // namespace
 
@@ -53,21 +62,16 @@ TEST_CASE("threads: a batch split across four threads gives the bits of one thre
   xs[11][6] = not_a_number;
   disc_state s;
   s.p = {0.3, 1.2, 9.81};
-  std::vector<double> one(n * m), four(n * m);
-  std::vector<int> status_one(n), status_four(n);
-  const auto make_disc = [&] { return disc_rhs(s); };
-  const auto disc = [&](disc_rhs& f, std::size_t i, std::vector<double>& out, std::vector<int>& status) {
-    std::array<double, m> dx;
-    f(xs[i], dx, 0.0);
-    std::memcpy(&out[i * m], dx.data(), sizeof dx);
-    status[i] = int(f.status());
-  };
-  split(n, 1, make_disc, [&](disc_rhs& f, std::size_t i) { disc(f, i, one, status_one); });
-  split(n, 4, make_disc, [&](disc_rhs& f, std::size_t i) { disc(f, i, four, status_four); });
-  CHECK(same_bits(one, four));
-  CHECK(status_one == status_four);
-  CHECK(status_one[11] == int(kane::solve_status::not_finite));
-  CHECK(status_one[0] == int(kane::solve_status::ok));
+  const auto disc = one_and_four(
+      n, m, [&] { return disc_rhs(s); },
+      [&](disc_rhs& f, std::size_t i, double* out) {
+        std::array<double, m> dx;
+        f(xs[i], dx, 0.0);
+        std::memcpy(out, dx.data(), sizeof dx);
+        return int(f.status());
+      });
+  CHECK(disc[11] == int(kane::solve_status::not_finite));
+  CHECK(disc[0] == int(kane::solve_status::ok));
 
   // the driven 6R arm's forward dynamics and its derivatives: the recursive passes
   std::vector<arm_state> states(n);
@@ -79,21 +83,16 @@ TEST_CASE("threads: a batch split across four threads gives the bits of one thre
   }
   states[5].q[2] = not_a_number;
   constexpr std::size_t k = 6 + 36 + 36;  // u', du'/dq, du'/du
-  std::vector<double> arm_one(n * k), arm_four(n * k);
-  std::vector<int> arm_status_one(n), arm_status_four(n);
-  const auto make_arm = [] { return arm_evaluator{}; };
-  const auto arm = [&](arm_evaluator& ev, std::size_t i, std::vector<double>& out, std::vector<int>& status) {
-    ev.update(states[i]);
-    const auto r = kane::forward_dynamics_derivatives<models::arm6::driven>(ev);
-    std::memcpy(&out[i * k], r.ud.data(), 6 * sizeof(double));
-    std::memcpy(&out[i * k + 6], r.dud_dq.data(), 36 * sizeof(double));
-    std::memcpy(&out[i * k + 42], r.dud_du.data(), 36 * sizeof(double));
-    status[i] = int(r.status);
-  };
-  split(n, 1, make_arm, [&](arm_evaluator& ev, std::size_t i) { arm(ev, i, arm_one, arm_status_one); });
-  split(n, 4, make_arm, [&](arm_evaluator& ev, std::size_t i) { arm(ev, i, arm_four, arm_status_four); });
-  CHECK(same_bits(arm_one, arm_four));
-  CHECK(arm_status_one == arm_status_four);
-  CHECK(arm_status_one[5] == int(kane::solve_status::not_finite));
-  CHECK(arm_status_one[0] == int(kane::solve_status::ok));
+  const auto arm = one_and_four(
+      n, k, [] { return arm_evaluator{}; },
+      [&](arm_evaluator& ev, std::size_t i, double* out) {
+        ev.update(states[i]);
+        const auto r = kane::forward_dynamics_derivatives<models::arm6::driven>(ev);
+        std::memcpy(out, r.ud.data(), 6 * sizeof(double));
+        std::memcpy(out + 6, r.dud_dq.data(), 36 * sizeof(double));
+        std::memcpy(out + 42, r.dud_du.data(), 36 * sizeof(double));
+        return int(r.status);
+      });
+  CHECK(arm[5] == int(kane::solve_status::not_finite));
+  CHECK(arm[0] == int(kane::solve_status::ok));
 }

@@ -240,13 +240,5 @@ class cholesky_factor {
     (scatter(x), ...);
   }
 };
-// X = -M^-1 X for each X by one factor of M; false where M is not positive definite.
-template <class S, int N, class... X>
-bool solve_negated(const Eigen::Matrix<S, N, N>& m, X&... x) {
-  const cholesky_factor<S, N> factor(m);
-  if (!factor.ok()) return false;
-  factor.solve_negated(x...);
-  return true;
-}
 }  // namespace kane::detail
 #pragma GCC diagnostic pop

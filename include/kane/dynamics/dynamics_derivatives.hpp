@@ -21,8 +21,8 @@
 #include "kane/dynamics/detail/method.hpp"
 #include "kane/dynamics/detail/tree/articulated_solve.hpp"
 #include "kane/dynamics/detail/tree/rnea_derivatives.hpp"
-#include "kane/dynamics/forward_dynamics.hpp"
 #include "kane/dynamics/results.hpp"
+#include "kane/evaluation/status.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
