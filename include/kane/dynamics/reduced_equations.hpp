@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/wide_stores.hpp"
 #include "kane/dynamics/detail/system_rules.hpp"
 #include "kane/dynamics/generalized_forces.hpp"
 #include "kane/dynamics/mass_matrix_and_forcing.hpp"
@@ -51,24 +52,26 @@ struct independent_speeds {
   template <auto Nz, class V>
   KANE_ALWAYS_INLINE Eigen::Matrix<S, 3, int(n)> columns(const V& v) const {
     Eigen::Matrix<S, 3, int(n)> t;
-    static_for<n>([&](auto k) {
+    store_by_pairs<3 * n>(t.data(), [&](auto rk) KANE_ALWAYS_INLINE_LAMBDA {  // row r of column k
+      constexpr std::size_t r = rk % 3, k = rk / 3;
+      S x = S(0);
       if constexpr (!all_zero(Nz[NH::independents[k] - 1]))
-        t.col(Eigen::Index(k)) = v.col(Eigen::Index(NH::independents[k] - 1));
-      else
-        t.col(Eigen::Index(k)).setZero();
+        x = v(Eigen::Index(r), Eigen::Index(NH::independents[k] - 1));
       static_for<NH::m>([&](auto j) {
         constexpr pattern3 kind = Nz[NH::dependents[j] - 1];
         constexpr int i = column_axis(kind);
         if constexpr (all_zero(kind))
           return;
         else if constexpr (i < 0)
-          t.col(Eigen::Index(k)) +=
-              v.col(Eigen::Index(NH::dependents[j] - 1)) * A(Eigen::Index(j), Eigen::Index(k));
+          x += v(Eigen::Index(r), Eigen::Index(NH::dependents[j] - 1)) * A(Eigen::Index(j), Eigen::Index(k));
+        else if constexpr (std::size_t(i) != r)
+          return;
         else if constexpr (kind[std::size_t(i)] == entry::one)
-          t(i, Eigen::Index(k)) += A(Eigen::Index(j), Eigen::Index(k));
+          x += A(Eigen::Index(j), Eigen::Index(k));
         else
-          t(i, Eigen::Index(k)) -= A(Eigen::Index(j), Eigen::Index(k));
+          x -= A(Eigen::Index(j), Eigen::Index(k));
       });
+      return x;
     });
     return t;
   }
@@ -153,13 +156,13 @@ template <class Sys, class NH, rates Rates, class Ev, class Sol>
 reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_forcing_at(const Ev& ev,
                                                                                         const Sol& sol) {
   using S = typename Ev::scalar;
-  reduced_equations<S, NH::n, NH::p> out;
-  out.T = speeds_of_independents<NH>(sol.A);
-  out.b.setZero();
   std::array<S, NH::m> b_dep;
   const solve_status solved = dependent_rates_at_rest<NH, Rates>(ev, sol, b_dep);
+  // built in place: a copy of the equations would read whole what was written number by number
+  reduced_equations<S, NH::n, NH::p> out{
+      equations_along<Sys, Rates>(ev, independent_speeds<NH, S>{sol.A, b_dep}),
+      speeds_of_independents<NH>(sol.A), Eigen::Matrix<S, int(NH::n), 1>::Zero()};
   for (std::size_t j = 0; j < NH::m; ++j) out.b(Eigen::Index(NH::dependents[j] - 1)) = b_dep[j];
-  out.reduced = equations_along<Sys, Rates>(ev, independent_speeds<NH, S>{sol.A, b_dep});
   if (out.reduced.status == solve_status::ok) out.reduced.status = sol.status;
   if (out.reduced.status == solve_status::ok) out.reduced.status = solved;
   return out;

@@ -61,14 +61,22 @@ constexpr const char* to_string(solve_status s) {
 
 namespace detail {
 // 0 if every number of a is finite, NaN otherwise: x - x is 0 for a finite x and
-// NaN for NaN or inf, and a sum of zeros is 0 (no comparison per number). Sums start
-// at -0, the additive identity the optimizer folds away (x + 0 is not x for x = -0).
+// NaN for NaN or inf, and a sum of zeros is 0 (no comparison per number). The sum is
+// pairwise, so its additions do not wait on each other. An empty sum is -0, the additive
+// identity the optimizer folds away (x + 0 is not x for x = -0).
+template <std::size_t B, std::size_t E, class S, std::size_t N>
+constexpr S pairwise_residue(const std::array<S, N>& a) {
+  if constexpr (E - B == 1)
+    return a[B] - a[B];
+  else
+    return pairwise_residue<B, B + (E - B) / 2>(a) + pairwise_residue<B + (E - B) / 2, E>(a);
+}
 template <class S, std::size_t N>
 constexpr S nonfinite_residue(const std::array<S, N>& a) {
-  S sum = -S(0);
-  [&]<std::size_t... I>(std::index_sequence<I...>) { ((sum += a[I] - a[I]), ...); }
-  (std::make_index_sequence<N>{});
-  return sum;
+  if constexpr (N == 0)
+    return -S(0);
+  else
+    return pairwise_residue<0, N>(a);
 }
 // spoil(x) makes x (an S or a matrix of S) NaN unless ok: for numbers a product
 // by 1 or NaN (no branch, so the results need not merge), else a store.
@@ -90,10 +98,17 @@ template <class S, std::size_t N>
 constexpr bool all_finite(const std::array<S, N>& a) {
   return nonfinite_residue(a) == S(0);
 }
-// The same for an Eigen matrix of fixed size: one sum, no branch per entry.
+// The same for an Eigen matrix of fixed size: one sum, no branch per entry. A small one number by
+// number: its numbers are often just stored one by one, and a wide load of them would wait.
 template <class M>
 bool all_finite_matrix(const M& m) {
-  return (m.array() - m.array()).sum() == typename M::Scalar(0);
+  using S = typename M::Scalar;
+  constexpr int size = M::SizeAtCompileTime;
+  if constexpr (size > 0 && size <= 16) return [&]<std::size_t... I>(std::index_sequence<I...>) {
+      return all_finite(std::array<S, sizeof...(I)>{m.coeff(std::ptrdiff_t(I))...});
+    }
+  (std::make_index_sequence<std::size_t(size)>{});
+  else return (m.array() - m.array()).sum() == S(0);
 }
 // The status of a result x computed at status: not_finite where x is not, and x NaN unless ok.
 template <class M>

@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include "kane/detail/wide_stores.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/evaluate_in.hpp"
 #include "kane/evaluation/evaluator.hpp"
@@ -85,6 +86,15 @@ KANE_ALWAYS_INLINE void set_column(T& t, Eigen::Index c, const V& v) {
   } else
     t.col(c) = v;
 }
+// t = [v...] in 16-byte stores (wide_stores.hpp): a copy of t reads it in pairs.
+template <class T, class... V>
+KANE_ALWAYS_INLINE void set_columns(T& t, const V&... v) {
+  constexpr std::size_t rows = std::size_t(T::RowsAtCompileTime);
+  const auto columns = std::forward_as_tuple(v...);
+  store_by_pairs<rows * sizeof...(V)>(t.data(), [&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
+    return std::get<i / rows>(columns)(Eigen::Index(i % rows));
+  });
+}
 // x = T u + t in A: the table T = [v_1 ... v_n] (rows 1 for a scalar x, 3 for
 // a vector) and the remainder t, each computed only if asked for. Column r is
 // the expression dx/du_r + sum_s dx/dq_s' W_sr, t is x_0 + sum_s dx/dq_s' X_s,
@@ -96,8 +106,7 @@ KANE_ALWAYS_INLINE auto linear_parts_in(const X& x, const Ev& ev) {
   Eigen::Matrix<typename Ev::scalar, rows, int(Sp::n)> t;
   Eigen::Matrix<typename Ev::scalar, rows, 1> rest;
   [&]<std::size_t... R>(std::index_sequence<R...>) {
-    if constexpr (has(Parts, linear_part::table))
-      (set_column(t, Eigen::Index(R), numbers<A>(column_of<Sp, R + 1>(x), ev)), ...);
+    if constexpr (has(Parts, linear_part::table)) set_columns(t, numbers<A>(column_of<Sp, R + 1>(x), ev)...);
     if constexpr (has(Parts, linear_part::remainder)) rest = numbers<A>(remainder_of<Sp>(x), ev);
   }
   (std::make_index_sequence<Sp::n>{});

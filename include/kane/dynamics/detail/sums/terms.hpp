@@ -14,6 +14,7 @@
 
 #include "kane/detail/list.hpp"
 #include "kane/detail/v3.hpp"
+#include "kane/detail/wide_stores.hpp"
 #include "kane/dynamics/bodies.hpp"
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/evaluate.hpp"
@@ -46,10 +47,9 @@ Eigen::Matrix<typename Ev::scalar, 3, 3> inertia_in_own(const Ev& ev) {
   using S = typename Ev::scalar;
   using Cs = std::remove_cvref_t<decltype(I::components)>;
   Eigen::Matrix<S, 3, 3> out;
-  static_for<9>([&](auto jk) {
+  store_by_pairs<9>(out.data(), [&](auto jk) KANE_ALWAYS_INLINE_LAMBDA {  // symmetric: rows as columns
     constexpr std::size_t k = sym_index[jk / 3][jk % 3];
-    out(Eigen::Index(jk / 3), Eigen::Index(jk % 3)) =
-        is_zero_v<std::tuple_element_t<k, Cs>> ? S(0) : S(eval_scalar(std::get<k>(I::components), ev));
+    return is_zero_v<std::tuple_element_t<k, Cs>> ? S(0) : S(eval_scalar(std::get<k>(I::components), ev));
   });
   return out;
 }
