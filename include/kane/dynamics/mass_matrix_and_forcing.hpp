@@ -103,8 +103,7 @@ forward_result<S, N> speed_derivatives_at(const equations_of_motion<S, N>& e) {
                               : !positive                      ? solve_status::singular
                               : !detail::all_finite_matrix(ud) ? solve_status::not_finite
                                                                : solve_status::ok;
-  const auto spoil = nan_unless<S>(opaque(status == solve_status::ok));
-  static_for<N>([&](auto i) { spoil(ud(Eigen::Index(i))); });
+  spoil_unless(ud, opaque(status == solve_status::ok));
   return {ud, status};
 }
 }  // namespace detail

@@ -16,6 +16,7 @@
 
 #include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
+#include "kane/detail/wide_stores.hpp"
 #include "kane/dynamics/bodies.hpp"
 #include "kane/dynamics/detail/sums/columns.hpp"
 #include "kane/dynamics/detail/sums/terms.hpp"
@@ -162,19 +163,23 @@ constexpr std::size_t first_nonzero(const known_table<N>& t, std::size_t r) {  /
   while (c < N && t.m[r * N + c] == 0) ++c;
   return c;
 }
-// x = T b for a table T of numbers: its zeros cost nothing
+// x = T b for a table T of numbers: its zeros cost nothing. x is stored in pairs
+// (detail/wide_stores.hpp).
 template <auto T, class S, int N>
 KANE_ALWAYS_INLINE Eigen::Matrix<S, N, 1> times_known(const Eigen::Matrix<S, N, 1>& b) {
   constexpr std::size_t n = std::size_t(N);
   Eigen::Matrix<S, N, 1> x;
-  static_for_inline<n * n>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
-    constexpr std::size_t I = i, r = I / n, c = I % n, first = first_nonzero(T, r);
-    if constexpr (first == n && c == 0)
-      x(Eigen::Index(r)) = S(0);
-    else if constexpr (c == first)
-      x(Eigen::Index(r)) = S(T.m[I]) * b(Eigen::Index(c));
-    else if constexpr (T.m[I] != 0)
-      x(Eigen::Index(r)) += S(T.m[I]) * b(Eigen::Index(c));
+  store_by_pairs<n>(x.data(), [&](auto r) KANE_ALWAYS_INLINE_LAMBDA {
+    constexpr std::size_t first = first_nonzero(T, r);
+    S sum = S(0);
+    static_for_inline<n>([&](auto c) KANE_ALWAYS_INLINE_LAMBDA {
+      constexpr std::size_t I = r * n + c;
+      if constexpr (c == first)
+        sum = S(T.m[I]) * b(Eigen::Index(c));
+      else if constexpr (c > first && T.m[I] != 0)
+        sum += S(T.m[I]) * b(Eigen::Index(c));
+    });
+    return sum;
   });
   return x;
 }
