@@ -138,7 +138,7 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
   std::array<composite_inertia<S>, nf> c;
   using known = known_inertias<JF, Sys, body_frames<JF, Ev>>;
   if constexpr (known::value)  // constants
-    static_for<nf>([&](auto f) KANE_ALWAYS_INLINE_LAMBDA {
+    static_for_inline<nf>([&](auto f) KANE_ALWAYS_INLINE_LAMBDA {
       constexpr composite_inertia<double> o = known::own[f];
       c[f] = {S(o.mass),
               {S(o.h.x), S(o.h.y), S(o.h.z)},
@@ -168,8 +168,9 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
     else
       return 0;
   }();
-  static_for<nf - 1>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {  // leaves first: c[f] is complete, its column,
-                                                              // then into its parent
+  static_for_inline<nf -
+                    1>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {  // leaves first: c[f] is complete, its column,
+                                                                // then into its parent
     constexpr std::size_t f = nf - 1 - j;
     constexpr int s = t.speed[f];
     const composite_inertia<S>& x = c[f];
