@@ -168,9 +168,8 @@ KANE_ALWAYS_INLINE void composite_mass_matrix(const body_frames<JF, Ev>& bf, con
     else
       return 0;
   }();
-  static_for_inline<nf -
-                    1>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {  // leaves first: c[f] is complete, its column,
-                                                                // then into its parent
+  // leaves first: c[f] is complete, its column, then into its parent
+  static_for_inline<nf - 1>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t f = nf - 1 - j;
     constexpr int s = t.speed[f];
     const composite_inertia<S>& x = c[f];
