@@ -1,6 +1,6 @@
-// Numbers stored in 16-byte pairs. A wide load of numbers that were stored one by one waits
-// until each store has left the store buffer; a load of a pair stored whole is forwarded.
-// Eigen's fixed-size copies and products read doubles in such pairs.
+// Numbers stored in blocks. A wide load of numbers that were stored one by one waits until each
+// store has left the store buffer; a load of a block stored whole is forwarded. The compiler's
+// copies of small objects and Eigen's fixed-size products read doubles in such blocks.
 #pragma once
 
 #include <cstddef>
@@ -16,36 +16,61 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
-// to[i] = value(std::integral_constant<std::size_t, i>{}) for i < N: doubles by pairs.
-template <std::size_t N, class S, class F>
-KANE_ALWAYS_INLINE void store_by_pairs(S* to, const F& value) {
-  [&]<std::size_t... I>(std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA {
-    if constexpr (std::is_same_v<S, double>) {
-      using pair = double __attribute__((vector_size(16)));
-      (
-          [&] {
-            const pair p = {double(value(std::integral_constant<std::size_t, 2 * I>{})),
-                            double(value(std::integral_constant<std::size_t, 2 * I + 1>{}))};
-            std::memcpy(to + 2 * I, &p, sizeof p);
-          }(),
-          ...);
-      if constexpr (N % 2 == 1) to[N - 1] = value(std::integral_constant<std::size_t, N - 1>{});
-    } else {
-      ((to[2 * I] = value(std::integral_constant<std::size_t, 2 * I>{}),
-        to[2 * I + 1] = value(std::integral_constant<std::size_t, 2 * I + 1>{})),
-       ...);
-      if constexpr (N % 2 == 1) to[N - 1] = value(std::integral_constant<std::size_t, N - 1>{});
-    }
+// The widest store of doubles here: the width of the compiler's copies of small objects.
+#ifdef __AVX__
+inline constexpr std::size_t widest_store = 4;
+#else
+inline constexpr std::size_t widest_store = 2;
+#endif
+
+// W doubles in one register
+template <std::size_t W>
+struct block_of;
+template <>
+struct block_of<2> {
+  using type = double __attribute__((vector_size(16)));
+};
+template <>
+struct block_of<4> {
+  using type = double __attribute__((vector_size(32)));
+};
+
+// value(First), ..., value(First + W - 1) stored whole at to + First: W doubles.
+template <std::size_t First, std::size_t W, class F>
+KANE_ALWAYS_INLINE void store_block(double* to, const F& value) {
+  using block = typename block_of<W>::type;
+  const block b = [&]<std::size_t... K>(std::index_sequence<K...>) KANE_ALWAYS_INLINE_LAMBDA {
+    return block{double(value(std::integral_constant<std::size_t, First + K>{}))...};
   }
-  (std::make_index_sequence<N / 2>{});
+  (std::make_index_sequence<W>{});
+  std::memcpy(to + First, &b, sizeof b);
+}
+
+// to[i] = value(std::integral_constant<std::size_t, i>{}) for i < N: doubles in stores of
+// widest_store numbers from to[0], then of two and one, as a copy of N doubles reads them.
+template <std::size_t N, class S, class F>
+KANE_ALWAYS_INLINE void store_in_blocks(S* to, const F& value) {
+  if constexpr (std::is_same_v<S, double>) {
+    constexpr std::size_t wide = N / widest_store * widest_store, pairs = wide + (N - wide) / 2 * 2;
+    [&]<std::size_t... I>(std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA {
+      (store_block<I * widest_store, widest_store>(to, value), ...);
+    }
+    (std::make_index_sequence<N / widest_store>{});
+    if constexpr (pairs > wide) store_block<wide, 2>(to, value);
+    if constexpr (N > pairs) to[pairs] = value(std::integral_constant<std::size_t, pairs>{});
+  } else
+    [&]<std::size_t... I>(std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA {
+      ((to[I] = value(std::integral_constant<std::size_t, I>{})), ...);
+    }
+  (std::make_index_sequence<N>{});
 }
 
 // a b of small fixed sizes, each number a sum over k in ascending order of numbers read one by
 // one: no wide load of a or b, which were often just stored number by number. A matrix is
-// stored in pairs.
+// stored in blocks.
 template <class A, class B>
 KANE_ALWAYS_INLINE Eigen::Matrix<typename A::Scalar, A::RowsAtCompileTime, B::ColsAtCompileTime>
-product_by_pairs(const A& a, const B& b) {
+product_in_blocks(const A& a, const B& b) {
   using S = typename A::Scalar;
   constexpr int rows = A::RowsAtCompileTime, inner = A::ColsAtCompileTime;
   Eigen::Matrix<S, rows, B::ColsAtCompileTime> out;
@@ -67,7 +92,7 @@ product_by_pairs(const A& a, const B& b) {
       ((out.coeffRef(Eigen::Index(I)) = number(std::integral_constant<std::size_t, I>{})), ...);
     }
   (std::make_index_sequence<size>{});
-  else store_by_pairs<size>(out.data(), number);
+  else store_in_blocks<size>(out.data(), number);
   return out;
 }
 

@@ -52,7 +52,7 @@ struct independent_speeds {
   template <auto Nz, class V>
   KANE_ALWAYS_INLINE Eigen::Matrix<S, 3, int(n)> columns(const V& v) const {
     Eigen::Matrix<S, 3, int(n)> t;
-    store_by_pairs<3 * n>(t.data(), [&](auto rk) KANE_ALWAYS_INLINE_LAMBDA {  // row r of column k
+    store_in_blocks<3 * n>(t.data(), [&](auto rk) KANE_ALWAYS_INLINE_LAMBDA {  // row r of column k
       constexpr std::size_t r = rk % 3, k = rk / 3;
       S x = S(0);
       if constexpr (!all_zero(Nz[NH::independents[k] - 1]))

@@ -95,14 +95,14 @@ KANE_ALWAYS_INLINE auto nan_unless(bool ok) {
         x = nan;
     };
 }
-// x (a fixed-size Eigen matrix) NaN unless ok, as nan_unless; doubles rewritten in 16-byte
-// stores (detail/wide_stores.hpp), which a copy of x reads whole.
+// x (a fixed-size Eigen matrix) NaN unless ok, as nan_unless; doubles rewritten in blocks
+// (detail/wide_stores.hpp), which a copy of x reads whole.
 template <class M>
 KANE_ALWAYS_INLINE void spoil_unless(M& x, bool ok) {
   using S = typename M::Scalar;
   if constexpr (std::is_floating_point_v<S> && std::is_base_of_v<Eigen::PlainObjectBase<M>, M>) {
     const S factor = ok ? S(1) : std::numeric_limits<S>::quiet_NaN();
-    store_by_pairs<std::size_t(M::SizeAtCompileTime)>(
+    store_in_blocks<std::size_t(M::SizeAtCompileTime)>(
         x.data(), [&](auto i) KANE_ALWAYS_INLINE_LAMBDA { return S(x.coeff(std::ptrdiff_t(i)) * factor); });
   } else
     nan_unless<S>(ok)(x);

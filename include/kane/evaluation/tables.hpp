@@ -86,12 +86,12 @@ KANE_ALWAYS_INLINE void set_column(T& t, Eigen::Index c, const V& v) {
   } else
     t.col(c) = v;
 }
-// t = [v...] in 16-byte stores (wide_stores.hpp): a copy of t reads it in pairs.
+// t = [v...] in blocks (wide_stores.hpp): a copy of t reads it in blocks.
 template <class T, class... V>
 KANE_ALWAYS_INLINE void set_columns(T& t, const V&... v) {
   constexpr std::size_t rows = std::size_t(T::RowsAtCompileTime);
   const auto columns = std::forward_as_tuple(v...);
-  store_by_pairs<rows * sizeof...(V)>(t.data(), [&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
+  store_in_blocks<rows * sizeof...(V)>(t.data(), [&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
     return std::get<i / rows>(columns)(Eigen::Index(i % rows));
   });
 }

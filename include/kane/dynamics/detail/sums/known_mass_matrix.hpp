@@ -163,13 +163,13 @@ constexpr std::size_t first_nonzero(const known_table<N>& t, std::size_t r) {  /
   while (c < N && t.m[r * N + c] == 0) ++c;
   return c;
 }
-// x = T b for a table T of numbers: its zeros cost nothing. x is stored in pairs
+// x = T b for a table T of numbers: its zeros cost nothing. x is stored in blocks
 // (detail/wide_stores.hpp).
 template <auto T, class S, int N>
 KANE_ALWAYS_INLINE Eigen::Matrix<S, N, 1> times_known(const Eigen::Matrix<S, N, 1>& b) {
   constexpr std::size_t n = std::size_t(N);
   Eigen::Matrix<S, N, 1> x;
-  store_by_pairs<n>(x.data(), [&](auto r) KANE_ALWAYS_INLINE_LAMBDA {
+  store_in_blocks<n>(x.data(), [&](auto r) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t first = first_nonzero(T, r);
     S sum = S(0);
     static_for_inline<n>([&](auto c) KANE_ALWAYS_INLINE_LAMBDA {

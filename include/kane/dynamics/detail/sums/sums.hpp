@@ -135,7 +135,7 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
     const auto v = linear_parts_in<A, linear_part::table>(x, ev);
     if constexpr (has(Parts, parts::forcing)) {
       bias = detail::in_frame_of<A>(x_dot, ev);
-      if constexpr (Rates == rates::of_state) bias -= product_by_pairs(v, ud);
+      if constexpr (Rates == rates::of_state) bias -= product_in_blocks(v, ud);
       cols.template add_bias<nz>(bias, v);
     }
     return Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(v));
@@ -188,7 +188,7 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
                 return detail::inertia_in_root<I>(ev);
             }();
             if constexpr (has(Parts, parts::mass_matrix)) {
-              const Eigen::Matrix<S, 3, int(n)> iw = product_by_pairs(i, w);
+              const Eigen::Matrix<S, 3, int(n)> iw = product_in_blocks(i, w);
               detail::add_upper<reached_columns<Cols, Sp, Om>>(out.M, w, iw);
             }
             if constexpr (has(Parts, parts::forcing)) {
@@ -196,8 +196,8 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
               const auto v = [](const Eigen::Matrix<S, 3, 1>& x) { return v3<S>{x(0), x(1), x(2)}; };
               const v3<S> omega = eval_in<A>(angular_velocity<R, B>(), ev);
               const v3<S> t =
-                  v(product_by_pairs(i, alpha0)) +
-                  cross3(omega, v(product_by_pairs(i, Eigen::Matrix<S, 3, 1>(omega.x, omega.y, omega.z))));
+                  v(product_in_blocks(i, alpha0)) +
+                  cross3(omega, v(product_in_blocks(i, Eigen::Matrix<S, 3, 1>(omega.x, omega.y, omega.z))));
               detail::add_transposed<Cols::template kinds<detail::nonzero_columns<Sp, Om, A>()>()>(
                   out.f, w, Eigen::Matrix<S, 3, 1>(-t.x, -t.y, -t.z));
             }

@@ -47,7 +47,7 @@ Eigen::Matrix<typename Ev::scalar, 3, 3> inertia_in_own(const Ev& ev) {
   using S = typename Ev::scalar;
   using Cs = std::remove_cvref_t<decltype(I::components)>;
   Eigen::Matrix<S, 3, 3> out;
-  store_by_pairs<9>(out.data(), [&](auto jk) KANE_ALWAYS_INLINE_LAMBDA {  // symmetric: rows as columns
+  store_in_blocks<9>(out.data(), [&](auto jk) KANE_ALWAYS_INLINE_LAMBDA {  // symmetric: rows as columns
     constexpr std::size_t k = sym_index[jk / 3][jk % 3];
     return is_zero_v<std::tuple_element_t<k, Cs>> ? S(0) : S(eval_scalar(std::get<k>(I::components), ev));
   });
