@@ -5,7 +5,6 @@
 
 #include <array>
 #include <cstddef>
-#include <cstring>
 #include <iterator>
 #include <limits>
 #include <tuple>
@@ -13,6 +12,7 @@
 
 #include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
+#include "kane/detail/wide_stores.hpp"
 #include "kane/evaluation/status.hpp"
 #include "kane/scalars/coordinate.hpp"
 
@@ -87,19 +87,13 @@ constexpr bool contiguous() {
   else
     return false;
 }
-// to[i] = x[from + i], i < N: for contiguous doubles in pairs of 16 bytes, whose later wide reads
-// (the evaluator's copies) find them whole in the store buffer; narrow stores would stall them.
+// to[i] = x[from + i], i < N: for contiguous doubles in blocks (detail/wide_stores.hpp), whose
+// later wide reads (the evaluator's copies) find them whole in the store buffer.
 template <std::size_t N, class S, class X>
 KANE_ALWAYS_INLINE void copy_wide(S* to, const X& x, std::size_t from) {
   if constexpr (std::is_same_v<S, double> && contiguous<X>()) {
-    using pair = double __attribute__((vector_size(16)));
     const double* in = &x[0] + from;
-    for (std::size_t i = 0; i + 1 < N; i += 2) {
-      pair v;
-      std::memcpy(&v, in + i, sizeof v);
-      std::memcpy(to + i, &v, sizeof v);
-    }
-    if constexpr (N % 2 == 1) to[N - 1] = in[N - 1];
+    store_in_blocks<N>(to, [&](auto i) KANE_ALWAYS_INLINE_LAMBDA { return in[i]; });
   } else
     for (std::size_t i = 0; i < N; ++i) to[i] = x[from + i];
 }
