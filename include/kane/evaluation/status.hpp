@@ -111,17 +111,19 @@ template <class S, std::size_t N>
 constexpr bool all_finite(const std::array<S, N>& a) {
   return nonfinite_residue(a) == S(0);
 }
-// The same for an Eigen matrix of fixed size: one sum, no branch per entry. A small one number by
-// number: its numbers are often just stored one by one, and a wide load of them would wait.
+// The same for an Eigen matrix of fixed size: one sum, no branch per entry.
 template <class M>
 bool all_finite_matrix(const M& m) {
-  using S = typename M::Scalar;
-  constexpr int size = M::SizeAtCompileTime;
-  if constexpr (size > 0 && size <= 16) return [&]<std::size_t... I>(std::index_sequence<I...>) {
-      return all_finite(std::array<S, sizeof...(I)>{m.coeff(std::ptrdiff_t(I))...});
-    }
-  (std::make_index_sequence<std::size_t(size)>{});
-  else return (m.array() - m.array()).sum() == S(0);
+  return (m.array() - m.array()).sum() == typename M::Scalar(0);
+}
+// The same number by number, for a small matrix whose numbers were just stored one by one: a
+// wide load of them would wait.
+template <class M>
+bool all_finite_numbers(const M& m) {
+  return [&]<std::size_t... I>(std::index_sequence<I...>) {
+    return all_finite(std::array<typename M::Scalar, sizeof...(I)>{m.coeff(std::ptrdiff_t(I))...});
+  }
+  (std::make_index_sequence<std::size_t(M::SizeAtCompileTime)>{});
 }
 // The status of a result x computed at status: not_finite where x is not, and x NaN unless ok.
 template <class M>

@@ -262,11 +262,11 @@ auto equations_along(const Ev& ev, const Cols& cols) {
     return out;
   const bool finite = [&] {  // numbers: M's diagonal suffices (M = sum m V^T V + W^T I W)
     if constexpr (known || !with_m)
-      return detail::all_finite_matrix(out.f);
+      return detail::all_finite_numbers(out.f);
     else if constexpr (std::is_floating_point_v<S>)
-      return detail::finite_diagonal(out.M) && detail::all_finite_matrix(out.f);
+      return detail::finite_diagonal(out.M) && detail::all_finite_numbers(out.f);
     else
-      return detail::all_finite_matrix(out.M) && detail::all_finite_matrix(out.f);
+      return detail::all_finite_matrix(out.M) && detail::all_finite_numbers(out.f);
   }();
   if (out.status == solve_status::ok && !finite) out.status = solve_status::not_finite;
   return out;
