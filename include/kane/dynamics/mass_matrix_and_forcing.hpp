@@ -99,10 +99,10 @@ forward_result<S, N> speed_derivatives_at(const equations_of_motion<S, N>& e) {
   Eigen::Matrix<S, int(N), 1> ud = Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN());
   using detail::solve_positive_definite;  // jets: theirs (argument-dependent lookup)
   const bool positive = solve_positive_definite(e.M, e.f, ud);
-  const solve_status status = e.status != solve_status::ok     ? e.status
-                              : !positive                      ? solve_status::singular
-                              : !detail::all_finite_matrix(ud) ? solve_status::not_finite
-                                                               : solve_status::ok;
+  const solve_status status = e.status != solve_status::ok      ? e.status
+                              : !positive                       ? solve_status::singular
+                              : !detail::all_finite_numbers(ud) ? solve_status::not_finite
+                                                                : solve_status::ok;
   spoil_unless(ud, opaque(status == solve_status::ok));
   return {ud, status};
 }

@@ -120,9 +120,12 @@ bool all_finite_matrix(const M& m) {
 // wide load of them would wait.
 template <class M>
 bool all_finite_numbers(const M& m) {
-  return [&]<std::size_t... I>(std::index_sequence<I...>) {
-    return all_finite(std::array<typename M::Scalar, sizeof...(I)>{m.coeff(std::ptrdiff_t(I))...});
-  }
+  if constexpr (M::SizeAtCompileTime > 16)
+    return all_finite_matrix(m);
+  else
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+      return all_finite(std::array<typename M::Scalar, sizeof...(I)>{m.coeff(std::ptrdiff_t(I))...});
+    }
   (std::make_index_sequence<std::size_t(M::SizeAtCompileTime)>{});
 }
 // The status of a result x computed at status: not_finite where x is not, and x NaN unless ok.
