@@ -6,7 +6,6 @@
 
 #include <array>
 #include <cstddef>
-#include <cstring>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -73,17 +72,12 @@ constexpr auto remainder_of(const X& x) {
     return remainder_u<Sp>(x, std::make_index_sequence<Sp::rows>{});
 }
 
-// Column c of t set to v: for doubles the first two numbers as one 16-byte store, since the
-// copy that reads them next (into the caller's matrix) reads them as one, and a wide load of
-// two narrow stores waits for both to leave the store buffer.
+// Column c of t set to v, three rows in blocks (wide_stores.hpp), as a copy reads them.
 template <class T, class V>
 KANE_ALWAYS_INLINE void set_column(T& t, Eigen::Index c, const V& v) {
-  if constexpr (std::is_same_v<typename T::Scalar, double> && T::RowsAtCompileTime == 3) {
-    using pair = double __attribute__((vector_size(16)));
-    const pair xy = {v(0), v(1)};
-    std::memcpy(&t(0, c), &xy, sizeof xy);
-    t(2, c) = v(2);
-  } else
+  if constexpr (T::RowsAtCompileTime == 3)
+    store_in_blocks<3>(&t(0, c), [&](auto i) KANE_ALWAYS_INLINE_LAMBDA { return v(Eigen::Index(i)); });
+  else
     t.col(c) = v;
 }
 // t = [v...] in blocks (wide_stores.hpp): a copy of t reads it in blocks.
