@@ -17,6 +17,7 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/list.hpp"
 #include "kane/detail/packet.hpp"
+#include "kane/detail/wide_stores.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -165,33 +166,34 @@ bool solve_positive_definite(const Eigen::Matrix<S, N, N>& m, const Eigen::Matri
   return true;
 }
 
-// M = L L^T by plain loops (for a few speeds, where a blocked solver's bookkeeping outweighs its
-// arithmetic), factored once; ok() is false where M is not positive definite. solve_negated sets
+// M = L D L^T, L unit lower triangular, by plain loops (for a few speeds, where a blocked solver's
+// bookkeeping outweighs its arithmetic), factored once; ok() is false where M is not positive
+// definite. No square root: the next column waits on one division. solve_negated sets
 // X = -M^-1 X for every column of each X (N rows, fixed columns): the columns of all X lie side by
 // side in rows of packets, so one l_ik scales W columns.
 template <class S, int N>
 class cholesky_factor {
   static constexpr std::size_t n = std::size_t(N), W = packet_width<S>;
-  std::array<S, n * n> l{};
-  std::array<S, n> inv{};
+  std::array<S, n * n> l{};  // l_ij at i n + j below the diagonal, l_ij d_j at j n + i above it
+  std::array<S, n> inv{};    // 1 / d_i
   bool positive = true;
 
  public:
   explicit cholesky_factor(const Eigen::Matrix<S, N, N>& m) {
     const auto entry = [&](std::size_t i, std::size_t j, auto&& sum) KANE_ALWAYS_INLINE_LAMBDA {
       S s = m(Eigen::Index(i), Eigen::Index(j));
-      sum([&](std::size_t k) KANE_ALWAYS_INLINE_LAMBDA { s -= l[i * n + k] * l[j * n + k]; });
+      sum([&](std::size_t k) KANE_ALWAYS_INLINE_LAMBDA { s -= l[k * n + i] * l[j * n + k]; });
       if (i != j)
-        l[i * n + j] = s * inv[j];
+        l[j * n + i] = s, l[i * n + j] = s * inv[j];
       else {
         positive = positive && s > S(0);
-        l[i * n + i] = std::sqrt(s), inv[i] = S(1) / l[i * n + i];
+        inv[i] = S(1) / s;
       }
     };
     if constexpr (n <= 12)  // unrolled
-      static_for<n>([&](auto i) {
-        static_for<i + 1>([&](auto j) {
-          entry(i, j, [](auto&& f) { static_for<decltype(j)::value>([&](auto k) { f(k); }); });
+      static_for_inline<n>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
+        static_for_inline<i + 1>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {
+          entry(i, j, [](auto&& f) { static_for_inline<decltype(j)::value>([&](auto k) { f(k); }); });
         });
       });
     else
@@ -206,38 +208,63 @@ class cholesky_factor {
   void solve_negated(X&... x) const {
     constexpr std::size_t cols = (std::size_t(X::ColsAtCompileTime) + ... + 0);
     constexpr std::size_t P = (cols + W - 1) / W, R = P * W;  // packets and numbers a row
-    std::array<S, n * R> b{};                                 // row i: (X_0 row i, X_1 row i, ...)
+    std::array<S, n * R> b;                                   // row i: (X_0 row i, X_1 row i, ...)
+    std::array<S*, cols> column{};
     std::size_t c0 = 0;
-    const auto gather = [&](const auto& xt) {
-      for (std::size_t j = 0; j < std::size_t(xt.cols()); ++j, ++c0)
-        for (std::size_t i = 0; i < n; ++i) b[i * R + c0] = xt(Eigen::Index(i), Eigen::Index(j));
-    };
-    (gather(x), ...);
-    // L y = b, then L^T w = -y (w = -z, with L^T z = y), V packets of each row from p0 at a time
-    in_packets<8>(0, P, [&](std::size_t p0, auto v) KANE_ALWAYS_INLINE_LAMBDA {
+    (
+        [&] {
+          for (Eigen::Index j = 0; j < x.cols(); ++j) column[c0++] = &x(0, j);
+        }(),
+        ...);
+    for (std::size_t i = 0; i < n; ++i)  // each packet of a row built in a register, stored whole
+      static_for_inline<P>([&](auto p) KANE_ALWAYS_INLINE_LAMBDA {
+        packet<S, W> row = splat<W>(S(0));
+        static_for_inline<W>([&](auto k) KANE_ALWAYS_INLINE_LAMBDA {
+          constexpr std::size_t c = std::remove_cvref_t<decltype(p)>::value * W + decltype(k)::value;
+          if constexpr (c < cols) row[decltype(k)::value] = column[c][i];
+        });
+        store_packet<W>(row, &b[i * R + p * W]);
+      });
+    // L y = b, then L^T w = -D^-1 y (w = -z, with L^T z = D^-1 y), V packets of each row from p0 at
+    // a time. Row i waits on the row solved just before it: that product comes last, the others
+    // first (above 8 rows in two chains, even and odd k).
+    const auto sweep = [&](std::size_t p0, auto v) KANE_ALWAYS_INLINE_LAMBDA {
       constexpr std::size_t V = decltype(v)::value;
       // row i of y (Back false: rows k < i, l_ik) or of w (Back true: rows k > i, l_ki)
       const auto step = [&]<bool Back>(std::size_t i, std::bool_constant<Back>) KANE_ALWAYS_INLINE_LAMBDA {
-        std::array<packet<S, W>, V> acc;
-        static_for_inline<V>([&](auto g) {
-          acc[g] = load_packet<W>(&b[i * R + (p0 + g) * W]);
-          if constexpr (Back) acc[g] = -acc[g];
-        });
-        for (std::size_t k = Back ? i + 1 : 0; k < (Back ? n : i); ++k) {
+        using row = std::array<packet<S, W>, V>;
+        const auto at = [&](std::size_t k, auto g)
+                            KANE_ALWAYS_INLINE_LAMBDA -> S* { return &b[k * R + (p0 + g) * W]; };
+        const auto add = [&](row& acc, std::size_t k) KANE_ALWAYS_INLINE_LAMBDA {
           const S a = Back ? l[k * n + i] : l[i * n + k];
-          static_for_inline<V>([&](auto g) { acc[g] -= a * load_packet<W>(&b[k * R + (p0 + g) * W]); });
+          static_for_inline<V>([&](auto g) { acc[g] -= a * load_packet<W>(at(k, g)); });
+        };
+        row even, odd;
+        static_for_inline<V>([&](auto g) KANE_ALWAYS_INLINE_LAMBDA {
+          even[g] = load_packet<W>(at(i, g));
+          if constexpr (Back) even[g] = -inv[i] * even[g];
+          odd[g] = splat<W>(S(0));
+        });
+        const std::size_t lo = Back ? i + 1 : 0, hi = Back ? n : i;
+        if (lo < hi) {
+          const std::size_t last = Back ? lo : hi - 1, end = Back ? hi : hi - 1;
+          std::size_t k = Back ? lo + 1 : lo;
+          if constexpr (n > 8)
+            for (; k + 1 < end; k += 2) add(even, k), add(odd, k + 1);
+          for (; k < end; ++k) add(even, k);
+          if constexpr (n > 8) static_for_inline<V>([&](auto g) { even[g] += odd[g]; });
+          add(even, last);
         }
-        static_for_inline<V>([&](auto g) { store_packet<W>(inv[i] * acc[g], &b[i * R + (p0 + g) * W]); });
+        static_for_inline<V>([&](auto g) { store_packet<W>(even[g], at(i, g)); });
       };
       for (std::size_t i = 0; i < n; ++i) step(i, std::false_type{});
       for (std::size_t i = n; i-- > 0;) step(i, std::true_type{});
-    });
-    c0 = 0;
-    const auto scatter = [&](auto& xt) {
-      for (std::size_t j = 0; j < std::size_t(xt.cols()); ++j, ++c0)
-        for (std::size_t i = 0; i < n; ++i) xt(Eigen::Index(i), Eigen::Index(j)) = b[i * R + c0];
     };
-    (scatter(x), ...);
+    constexpr std::size_t most = 8;  // packets a sweep
+    for (std::size_t p0 = 0; p0 + most <= P; p0 += most) sweep(p0, index_c<most>{});
+    if constexpr (P % most != 0) sweep(P - P % most, index_c<P % most>{});
+    for (std::size_t c = 0; c < cols; ++c)  // each column stored in blocks
+      store_in_blocks<n>(column[c], [&](auto i) KANE_ALWAYS_INLINE_LAMBDA { return b[i * R + c]; });
   }
 };
 }  // namespace kane::detail
