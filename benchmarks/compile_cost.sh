@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Compile cost of kane's translation units: $CXX (default g++) -O2, one unit at a time, user CPU
 # seconds and peak memory by /usr/bin/time. One list of units (units() below): Eigen and kane.hpp
-# alone, the examples, the benchmarks' kane side, the tests, the bicycle in one unit, a type error.
+# alone, the examples, the benchmarks' kane side, the tests, the bicycle in one unit and as a user's
+# unit (benchmarks/compile/), a type error.
 # Usage: benchmarks/compile_cost.sh table [--print] [MATCH...]
 #          every unit; rewrites the block "<!-- generated: compile -->" of docs/performance.md, or
 #          prints the table (--print, or the units whose source contains a MATCH)
@@ -43,6 +44,7 @@ examples/bicycle_benchmark.cpp|bicycle: the example that calls the two
 @bicycle_in_one_unit.cpp|bicycle: the same three files as one unit
 examples/pendulum3d.cpp|3D double pendulum, u' by kane::motion
 examples/models/free_body_motion.cpp|free body: the model compiled once
+benchmarks/compile/bicycle_whole.cpp|bicycle as a user's one unit: u', reduced equations, F_r and F*_r, linearization, eigenvalues
 examples/free_body_dynamics.cpp|free body: the example that calls it
 EOF
   local root f n glob
