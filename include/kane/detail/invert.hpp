@@ -206,6 +206,9 @@ class cholesky_factor {
   bool ok() const { return positive; }
   template <class... X>
   void solve_negated(X&... x) const {
+    static_assert(((X::RowsAtCompileTime == N && !X::IsRowMajor &&
+                    std::is_base_of_v<Eigen::PlainObjectBase<X>, X>)&&...),
+                  "solve_negated: each X a plain column-major matrix of N rows, its columns contiguous");
     constexpr std::size_t cols = (std::size_t(X::ColsAtCompileTime) + ... + 0);
     constexpr std::size_t P = (cols + W - 1) / W, R = P * W;  // packets and numbers a row
     std::array<S, n * R> b;                                   // row i: (X_0 row i, X_1 row i, ...)
@@ -239,20 +242,22 @@ class cholesky_factor {
           const S a = Back ? l[k * n + i] : l[i * n + k];
           static_for_inline<V>([&](auto g) { acc[g] -= a * load_packet<W>(at(k, g)); });
         };
-        row even, odd;
+        constexpr bool two = n > 8;  // chains
+        row even;
+        [[maybe_unused]] row odd;
         static_for_inline<V>([&](auto g) KANE_ALWAYS_INLINE_LAMBDA {
           even[g] = load_packet<W>(at(i, g));
           if constexpr (Back) even[g] = -inv[i] * even[g];
-          odd[g] = splat<W>(S(0));
+          if constexpr (two) odd[g] = splat<W>(S(0));
         });
         const std::size_t lo = Back ? i + 1 : 0, hi = Back ? n : i;
         if (lo < hi) {
           const std::size_t last = Back ? lo : hi - 1, end = Back ? hi : hi - 1;
           std::size_t k = Back ? lo + 1 : lo;
-          if constexpr (n > 8)
+          if constexpr (two)
             for (; k + 1 < end; k += 2) add(even, k), add(odd, k + 1);
           for (; k < end; ++k) add(even, k);
-          if constexpr (n > 8) static_for_inline<V>([&](auto g) { even[g] += odd[g]; });
+          if constexpr (two) static_for_inline<V>([&](auto g) { even[g] += odd[g]; });
           add(even, last);
         }
         static_for_inline<V>([&](auto g) { store_packet<W>(even[g], at(i, g)); });

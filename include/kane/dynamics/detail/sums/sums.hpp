@@ -193,11 +193,12 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
             }
             if constexpr (has(Parts, parts::forcing)) {
               // -(I alpha0 + w x I w) number by number: no wide load of what was stored so
-              const auto v = [](const Eigen::Matrix<S, 3, 1>& x) { return v3<S>{x(0), x(1), x(2)}; };
+              const auto as_v3 = [](const Eigen::Matrix<S, 3, 1>& x) { return v3<S>{x(0), x(1), x(2)}; };
               const v3<S> omega = eval_in<A>(angular_velocity<R, B>(), ev);
               const v3<S> t =
-                  v(product_in_blocks(i, alpha0)) +
-                  cross3(omega, v(product_in_blocks(i, Eigen::Matrix<S, 3, 1>(omega.x, omega.y, omega.z))));
+                  as_v3(product_in_blocks(i, alpha0)) +
+                  cross3(omega,
+                         as_v3(product_in_blocks(i, Eigen::Matrix<S, 3, 1>(omega.x, omega.y, omega.z))));
               detail::add_transposed<Cols::template kinds<detail::nonzero_columns<Sp, Om, A>()>()>(
                   out.f, w, Eigen::Matrix<S, 3, 1>(-t.x, -t.y, -t.z));
             }
