@@ -2,6 +2,7 @@
 // set, and kane::motion<System, Speeds> (the system's own evaluator) called per state.
 #include "../../examples/models/gyrostat.hpp"
 #include "../../examples/models/heavy_top.hpp"
+#include "../../examples/models/pendulum_absolute.hpp"
 #include "small_models.hpp"
 
 namespace {
@@ -34,12 +35,8 @@ kane::motion<system> motion{kane::state_of<system>{}};
 }  // namespace pendulum
 
 namespace pendulum_absolute {  // B turned from N by q2, as a textbook writes it
-using pendulum::A, pendulum::N, pendulum::O, pendulum::P1;
-struct B : kane::frame<N, kane::simple<kane::axis::z, q<2>>> {};
-struct P2 : kane::point<P1, literal(0.8) * e<B, 1>> {};
-using system = kane::system<kane::particle<P1, literal(1.0)>, kane::particle<P2, literal(0.7)>,
-                            kane::gravity<literal(9.81) * e<N, 1>>>;
-kane::motion<system> motion{kane::state_of<system>{}};
+namespace m = models::pendulum_absolute;
+kane::motion<m::system> motion{kane::state_of<m::system>{}};
 }  // namespace pendulum_absolute
 
 // the status as the checked twins give it: 0 ok

@@ -3,6 +3,8 @@
 
 #include <type_traits>
 
+#include "kane/detail/lane_traits.hpp"
+
 // Entry points of evaluation inline their whole expression tree: common
 // subexpressions of one call meet in one function body (at -O2 too).
 #ifndef KANE_FLATTEN
@@ -62,10 +64,12 @@ KANE_ALWAYS_INLINE bool opaque(bool b) {
   return b;
 #endif
 }
-// f() in one function body when S is a number; other scalars (jets) keep
+// f() in one function body when S is a number or lanes of numbers; other scalars (jets) keep
 // their calls, whose flattened bodies would multiply the compile's cost.
 template <class S, class F>
-requires std::is_floating_point_v<S> KANE_FLATTEN decltype(auto) flat(F&& f) { return f(); }
+requires(std::is_floating_point_v<S> || lane_traits<S>::width > 1) KANE_FLATTEN decltype(auto) flat(F&& f) {
+  return f();
+}
 template <class S, class F>
 decltype(auto) flat(F&& f) {
   return f();

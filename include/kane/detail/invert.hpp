@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/lane_traits.hpp"
 #include "kane/detail/list.hpp"
 #include "kane/detail/packet.hpp"
 #include "kane/detail/wide_stores.hpp"
@@ -99,12 +100,13 @@ Eigen::Matrix<S, N, 1> solve_block(const Eigen::Matrix<S, N, N>& inv, const Eige
 // m = L D L^T with every index known at compile time (no loop, no square root): what the
 // optimizer knows of m (constants, zeros) it carries through. a_ij = L_ij d_j.
 template <class S, int N>
-inline bool solve_unrolled(const Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<S, N, 1>& f,
-                           Eigen::Matrix<S, N, 1>& x) {
+inline typename lane_traits<S>::mask solve_unrolled(const Eigen::Matrix<S, N, N>& m,
+                                                    const Eigen::Matrix<S, N, 1>& f,
+                                                    Eigen::Matrix<S, N, 1>& x) {
   constexpr std::size_t n = std::size_t(N);
   std::array<S, n * n> a, l;
   std::array<S, n> inv, y;
-  bool positive = true;
+  auto positive = lane_traits<S>::truth(true);
   static_for<n>([&](auto i) {
     static_for<i>([&](auto j) {
       S s = m(Eigen::Index(i), Eigen::Index(j));
@@ -135,8 +137,10 @@ inline bool solve_unrolled(const Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<
 // x = m^-1 f for a symmetric m by Cholesky; false if m is not positive definite. Jets
 // overload it (jet.hpp).
 template <class S, int N>
-bool solve_positive_definite(const Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<S, N, 1>& f,
-                             Eigen::Matrix<S, N, 1>& x) {
+typename lane_traits<S>::mask solve_positive_definite(const Eigen::Matrix<S, N, N>& m,
+                                                      const Eigen::Matrix<S, N, 1>& f,
+                                                      Eigen::Matrix<S, N, 1>& x) {
+  auto positive = lane_traits<S>::truth(true);
   if constexpr (N <= 12) {
     return solve_unrolled(m, f, x);
   } else {  // m = L L^T by rows (contiguous dot products; Eigen's blocked path packs panels)
@@ -150,7 +154,10 @@ bool solve_positive_definite(const Eigen::Matrix<S, N, N>& m, const Eigen::Matri
         const S* lj = &l[std::size_t(j * N)];
         const S d = m(i, j) - (j == 0 ? S(0) : row(li, j).dot(row(lj, j)));
         if (i == j) {
-          if (!(d > S(0))) return false;
+          if constexpr (lane_traits<S>::width == 1) {
+            if (!(d > S(0))) return false;
+          } else
+            positive = positive && d > S(0);  // NaN rows in the lanes that fail
           li[i] = sqrt(d), inv[std::size_t(i)] = S(1) / li[i];
         } else
           li[j] = d * inv[std::size_t(j)];
@@ -163,7 +170,7 @@ bool solve_positive_definite(const Eigen::Matrix<S, N, N>& m, const Eigen::Matri
       x(i) = d * inv[std::size_t(i)];
     }
   }
-  return true;
+  return positive;
 }
 
 // M = L D L^T, L unit lower triangular, by plain loops (for a few speeds, where a blocked solver's

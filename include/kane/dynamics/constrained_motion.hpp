@@ -128,7 +128,7 @@ class constrained_motion
   template <class X, class DX>
   void step(const X& x, DX& dxdt, scalar time) {
     if (!detail::size_fits<size, scalar>(x, dxdt)) {
-      status_ = solve_status::wrong_size;
+      status_ = status_of<scalar>(solve_status::wrong_size);
       return;
     }
     for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
@@ -139,7 +139,7 @@ class constrained_motion
     const auto [ud, status] = detail::speed_derivatives_at(
         detail::reduced_mass_matrix_and_forcing_at<Sys, NH, detail::rates::at_rest>(ev, sol).reduced);
     status_ = status;
-    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status == solve_status::ok);
+    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status);
     for (std::size_t k = 0; k < p; ++k) dxdt[nq + k] = ud(Eigen::Index(k));
   }
 };

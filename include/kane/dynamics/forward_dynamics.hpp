@@ -50,7 +50,7 @@ forward_result<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
     else {
       const auto e = equations_along<Sys, Rates, parts::forcing>(ev, all_speeds<n>{});
       Eigen::Matrix<S, int(n), 1> ud = times_known<inverse>(e.f);
-      const solve_status status = finished(ud, e.status);
+      const auto status = finished(ud, e.status);
       return {ud, status};
     }
   } else

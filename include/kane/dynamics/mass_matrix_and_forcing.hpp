@@ -47,12 +47,12 @@ Out recursive_equations(const Ev& ev) {
   out.status = ev.status();
   const body_frames<JF, Ev> bf(ev);
   composite_mass_matrix<JF, Sys>(bf, ev, out.M);
-  bool finite = finite_diagonal(out.M);
+  auto finite = finite_diagonal(out.M);
   if constexpr (requires { out.f; }) {
     joint_forces<rates::at_rest, JF, Sys, sign::minus>(bf, ev, out.f);
     finite = finite && all_finite_matrix(out.f);
   }
-  if (out.status == solve_status::ok && !finite) out.status = solve_status::not_finite;
+  fail_unless(out.status, finite, solve_status::not_finite);
   return out;
 }
 template <class Sys, rates Rates, class Ev>
@@ -98,12 +98,11 @@ template <class S, std::size_t N>
 forward_result<S, N> speed_derivatives_at(const equations_of_motion<S, N>& e) {
   Eigen::Matrix<S, int(N), 1> ud = Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN());
   using detail::solve_positive_definite;  // jets: theirs (argument-dependent lookup)
-  const bool positive = solve_positive_definite(e.M, e.f, ud);
-  const solve_status status = e.status != solve_status::ok      ? e.status
-                              : !positive                       ? solve_status::singular
-                              : !detail::all_finite_numbers(ud) ? solve_status::not_finite
-                                                                : solve_status::ok;
-  spoil_unless(ud, opaque(status == solve_status::ok));
+  const auto positive = solve_positive_definite(e.M, e.f, ud);
+  status_of<S> status = e.status;
+  fail_unless(status, positive, solve_status::singular);
+  fail_unless(status, detail::all_finite_numbers(ud), solve_status::not_finite);
+  spoil_unless(ud, opaque_ok<S>(status));
   return {ud, status};
 }
 }  // namespace detail

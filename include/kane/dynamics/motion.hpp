@@ -5,6 +5,7 @@
 //   kane::motion<System> rhs(s);              // s: a kane::state_of<System>, its parameters
 //   kane::motion<System, Speeds> rhs2(s2);    // with a speed set: kane::state_of<System, Speeds>
 //   kane::motion<System, Evaluator> rhs3(s3); // an evaluator of one's own (float, more frames)
+//   kane::motion<System, Speeds, S> rhs4(s4); // the system's evaluator over S (float, kane::lanes)
 //   rhs(x, dxdt, t);                          // Boost.Odeint's signature; x: nq + nu numbers
 //   rhs.inputs() = r;                         // inputs r (kane::r<i> in loads) of the calls from now on
 //
@@ -32,12 +33,12 @@ namespace kane {
 
 // x' = (q', u') of the system Sys for any integrator: f(x, dxdt, t). EvOrSpeeds: the evaluator, or
 // the speed set (none: u = q') of the system's own evaluator.
-template <System Sys, class EvOrSpeeds = void>
+template <System Sys, class EvOrSpeeds = void, Scalar S = double>
 class motion
-    : public detail::rates_function<motion<Sys, EvOrSpeeds>, detail::evaluator_or_own_t<Sys, EvOrSpeeds>,
-                                    detail::evaluator_or_own_t<Sys, EvOrSpeeds>::state_type::nq +
-                                        detail::evaluator_or_own_t<Sys, EvOrSpeeds>::nu> {
-  using Ev = detail::evaluator_or_own_t<Sys, EvOrSpeeds>;
+    : public detail::rates_function<motion<Sys, EvOrSpeeds, S>, detail::own_evaluator_t<Sys, EvOrSpeeds, S>,
+                                    detail::own_evaluator_t<Sys, EvOrSpeeds, S>::state_type::nq +
+                                        detail::own_evaluator_t<Sys, EvOrSpeeds, S>::nu> {
+  using Ev = detail::own_evaluator_t<Sys, EvOrSpeeds, S>;
   using base = detail::rates_function<motion, Ev, Ev::state_type::nq + Ev::nu>;
   friend base;
   using base::s_;
@@ -89,7 +90,7 @@ class motion
   template <class X, class DX>
   void step(const X& x, DX& dxdt, scalar time) {
     if (!detail::size_fits<size, scalar>(x, dxdt)) {
-      status_ = solve_status::wrong_size;
+      status_ = status_of<scalar>(solve_status::wrong_size);
       return;
     }
     auto& u = detail::speeds_of_state<Ev>(s_);
@@ -103,7 +104,7 @@ class motion
       ev.template update_for<detail::equation_reads<Sys, Ev, true>>(s_);
     const auto [ud, status] = detail::forward_at<Sys, detail::rates::at_rest>(ev);
     status_ = status;
-    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status == solve_status::ok);
+    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status);
     for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = ud(Eigen::Index(i));
   }
 };

@@ -25,7 +25,7 @@ struct equations_of_motion {
   // the forcing, N x 1
   Eigen::Matrix<S, int(N), 1> f;
   // ok, or why M and f are NaN
-  solve_status status;  // the evaluator's, or not_finite
+  status_of<S> status;  // the evaluator's, or not_finite
 };
 
 // M alone: mass_matrix.
@@ -34,7 +34,7 @@ struct mass_matrix_only {
   // the mass matrix, N x N
   Eigen::Matrix<S, int(N), int(N)> M;
   // the evaluator's, or not_finite
-  solve_status status;
+  status_of<S> status;
 };
 
 // u' = M^-1 f: forward_dynamics, speed_derivatives.
@@ -43,7 +43,7 @@ struct forward_result {
   // u'_1 .. u'_N
   Eigen::Matrix<S, int(N), 1> ud;
   // the evaluator's, singular (M not positive definite) or not_finite
-  solve_status status;
+  status_of<S> status;
 };
 
 // tau = M u' - f: inverse_dynamics.
@@ -52,7 +52,7 @@ struct inverse_result {
   // the generalized forces that, added to the system's loads, give the state's u'
   Eigen::Matrix<S, int(N), 1> tau;
   // the evaluator's, or not_finite
-  solve_status status;
+  status_of<S> status;
 };
 
 // f alone (the bias -f is tau at u' = 0): forcing.
@@ -61,7 +61,7 @@ struct forcing_result {
   // the forcing, N x 1
   Eigen::Matrix<S, int(N), 1> f;
   // the evaluator's, or not_finite
-  solve_status status;
+  status_of<S> status;
 };
 
 // tau and its derivatives: inverse_dynamics_derivatives.
@@ -76,7 +76,7 @@ struct inverse_derivatives {
   // d tau / du', the mass matrix
   Eigen::Matrix<S, int(N), int(N)> M;
   // the evaluator's, or not_finite
-  solve_status status;
+  status_of<S> status;
 };
 
 // u' and its derivatives: forward_dynamics_derivatives.
@@ -89,7 +89,7 @@ struct forward_derivatives {
   // d u' / du = -M^-1 d tau / du
   Eigen::Matrix<S, int(N), int(N)> dud_du;
   // the evaluator's, singular (M not positive definite) or not_finite
-  solve_status status;
+  status_of<S> status;
 };
 
 }  // namespace kane

@@ -149,21 +149,26 @@ using system_evaluator = detail::evaluator_reading<Sys, Speeds, L, St>;
 
 namespace detail {
 // X itself where it is an evaluator, else the system's evaluator with the speed set X (none: u = q').
-template <class Sys, class X, level L = level::acceleration, class More = list<>>
+template <class Sys, class X, level L = level::acceleration, class More = list<>, class S = double>
 constexpr auto evaluator_or_own() {
-  if constexpr (is_evaluator<X>::value)
+  if constexpr (is_evaluator<X>::value) {
+    static_assert(std::is_same_v<S, double> || std::is_same_v<S, typename X::scalar>,
+                  "kane: an evaluator brings its scalar: name it in the evaluator's state, not here");
     return std::type_identity<X>{};
-  else {
+  } else {
     static_assert(std::is_void_v<X> || SpeedSet<X>,
                   "kane: the second argument is an evaluator (kane::evaluator<...>) or a speed set "
                   "(kane::speeds<...>), or none");
     // x holds u = q' in full: the speed set of q' reads it without asking s.qd (evaluator.hpp)
     using Sp = std::conditional_t<SpeedSet<X>, X, qdot_speeds<system_sizes<Sys, void, More>().q>>;
-    return std::type_identity<evaluator_reading<Sys, Sp, L, state_of<Sys, Sp, double, More>, More>>{};
+    return std::type_identity<evaluator_reading<Sys, Sp, L, state_of<Sys, Sp, S, More>, More>>{};
   }
 }
 template <class Sys, class X, level L = level::acceleration, class More = list<>>
 using evaluator_or_own_t = typename decltype(evaluator_or_own<Sys, X, L, More>())::type;
+// The same over the scalar S (double: the evaluator's own where X is one)
+template <class Sys, class X, class S>
+using own_evaluator_t = typename decltype(evaluator_or_own<Sys, X, level::acceleration, list<>, S>())::type;
 }  // namespace detail
 
 }  // namespace kane

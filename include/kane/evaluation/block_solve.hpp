@@ -55,24 +55,30 @@ constexpr S pow2(int e) {
 // that 2^-e is normal; x finite and positive. For doubles from the bits: no call, which would keep
 // the stores of a local evaluator alive.
 template <class S>
-KANE_ALWAYS_INLINE typename real_type<S>::type inverse_power_of_two(const S& x) {
+KANE_ALWAYS_INLINE auto inverse_power_of_two(const S& x) {
   using real = typename real_type<S>::type;
-  using limits = std::numeric_limits<real>;
-  int e = 0;
-  if constexpr (std::is_same_v<S, double> && limits::is_iec559) {
-    const int biased = int((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff);
-    e = biased != 0 ? biased - 1022 : x >= pow2<double>(-1023) ? -1022 : -1023;  // subnormal: clamped
+  if constexpr (lane_traits<S>::width > 1) {  // lane by lane
+    S r;
+    for (std::size_t i = 0; i < lane_traits<S>::width; ++i) r.set(i, inverse_power_of_two(x[i]));
+    return r;
   } else {
-    using std::frexp;
-    frexp(x, &e);
-  }
-  if (e < limits::min_exponent - 2) e = limits::min_exponent - 2;  // a subnormal scale
-  if (e > limits::max_exponent - 2) e = limits::max_exponent - 2;
-  if constexpr (std::is_same_v<real, double> && limits::is_iec559)
-    return std::bit_cast<double>(std::uint64_t(1023 - e) << 52);
-  else {
-    using std::ldexp;
-    return ldexp(real(1), -e);
+    using limits = std::numeric_limits<real>;
+    int e = 0;
+    if constexpr (std::is_same_v<S, double> && limits::is_iec559) {
+      const int biased = int((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff);
+      e = biased != 0 ? biased - 1022 : x >= pow2<double>(-1023) ? -1022 : -1023;  // subnormal: clamped
+    } else {
+      using std::frexp;
+      frexp(x, &e);
+    }
+    if (e < limits::min_exponent - 2) e = limits::min_exponent - 2;  // a subnormal scale
+    if (e > limits::max_exponent - 2) e = limits::max_exponent - 2;
+    if constexpr (std::is_same_v<real, double> && limits::is_iec559)
+      return std::bit_cast<double>(std::uint64_t(1023 - e) << 52);
+    else {
+      using std::ldexp;
+      return ldexp(real(1), -e);
+    }
   }
 }
 
@@ -82,8 +88,9 @@ template <class S, std::size_t N>
 struct structured_factors {
   table<S, N, N> inverse;
   S scale;
-  typename real_type<S>::type f;  // a number (on jets: no derivatives)
-  bool singular;
+  // a number (on jets: no derivatives; on lanes one per lane)
+  std::conditional_t<lane_traits<S>::width == 1, typename real_type<S>::type, S> f;
+  typename lane_traits<S>::mask singular;
 };
 // A matrix of a known zero pattern and its factors: more right-hand sides later.
 template <class S, std::size_t N>
@@ -103,9 +110,9 @@ KANE_ALWAYS_INLINE S entry_value(const table<S, Sys::n, Sys::n>& m, index_c<I>, 
 
 // f M_B of the coupled block of size unknowns from the place first of the block order (M's zeros
 // and ones from the pattern: only its other entries are read).
-template <class Sys, std::size_t First, std::size_t Size, class S>
+template <class Sys, std::size_t First, std::size_t Size, class S, class F>
 KANE_ALWAYS_INLINE Eigen::Matrix<S, int(Size), int(Size)> scaled_block(const table<S, Sys::n, Sys::n>& m,
-                                                                       typename real_type<S>::type f) {
+                                                                       F f) {
   Eigen::Matrix<S, int(Size), int(Size)> block;
   static_for_inline<Size * Size>([&](auto ab) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t a = ab / Size, e = ab % Size, row = Sys::form.row[Sys::form.order[First + a]],
@@ -137,11 +144,12 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
   constexpr std::size_t n = Sys::n;
   auto value = [&](auto i, auto j) { return entry_value<Sys>(m, i, j); };
   structured_factors<S, n> out{};
+  out.singular = lane_traits<S>::truth(false);
   static_for_inline<n * n>([&](auto ij) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t i = ij / n, j = ij % n;
     if constexpr (Sys::m[i][j] != entry::zero) {
       const S a = abs(value(index_c<i>{}, index_c<j>{}));
-      out.scale = a > out.scale ? a : out.scale;
+      out.scale = lane_traits<S>::select(a > out.scale, a, out.scale);
     }
   });
   const S scale = out.scale;
@@ -153,10 +161,12 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
     return false;
   }();
   if constexpr (coupled) {
-    if (constexpr real lo = pow2<real>(limits::min_exponent / 2), hi = pow2<real>(limits::max_exponent / 2);
-        scale > S(0) && scale <= limits::max() && !(scale >= S(lo) && scale <= S(hi))) {
+    constexpr real lo = pow2<real>(limits::min_exponent / 2), hi = pow2<real>(limits::max_exponent / 2);
+    const auto outside = scale > S(0) && scale <= limits::max() && !(scale >= S(lo) && scale <= S(hi));
+    if constexpr (lane_traits<S>::width > 1)
+      out.f = lane_traits<S>::select(outside, inverse_power_of_two(scale), out.f);
+    else if (outside)
       out.f = inverse_power_of_two(scale);
-    }
   }
   static_for_inline<Sys::form.count>([&](auto b) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t first = Sys::form.start[b], size = Sys::form.start[b + 1] - first;
@@ -169,7 +179,7 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
         out.singular = out.singular || (pivot == pivot && !(abs(pivot) * S(inverse_tol) > scale));
       }
     } else if constexpr (orthogonal_block<Sys>(b)) {  // B^-1 = B^T (B B^T)^-1, B B^T diagonal
-      const real f = out.f;
+      const auto f = out.f;
       const S tol = limits::epsilon() * S(n) * (scale * f);
       const auto block = scaled_block<Sys, first, size>(m, f);
       Eigen::Matrix<S, int(size), int(size)> inverse;
@@ -183,11 +193,14 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
         out.inverse[Sys::form.order[first + a]][Sys::form.order[first + e]] = inverse(a, e);
       });
     } else {
-      const real f = out.f;
+      const auto f = out.f;
       const S tol = limits::epsilon() * S(n) * (scale * f);
       const auto block = scaled_block<Sys, first, size>(m, f);
       Eigen::Matrix<S, int(size), int(size)> inverse;
-      if (!factor_block(block, inverse, tol)) {
+      if constexpr (lane_traits<S>::width > 1) {  // factor_block of lanes (lanes.hpp): NaN where it fails
+        const auto factored = factor_block(block, inverse, tol);
+        out.singular = out.singular || (!factored && all_finite_matrix(block));
+      } else if (!factor_block(block, inverse, tol)) {
         out.singular = out.singular || block.allFinite();
         inverse.setConstant(limits::quiet_NaN());
       }
@@ -204,7 +217,7 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
 // form (blocks_of(m)), x (solution_pattern). The zeros and ones of X are written unless the
 // caller keeps them (known_entries::left).
 template <class Sys, known_entries Known = known_entries::written, class S>
-KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys::n>& m,
+KANE_ALWAYS_INLINE status_of<S> substitute_structured(const table<S, Sys::n, Sys::n>& m,
                                                       const structured_factors<S, Sys::n>& fac,
                                                       const table<S, Sys::n, Sys::k>& r,
                                                       table<S, Sys::n, Sys::k>& x) {
@@ -276,11 +289,9 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
     constexpr std::size_t c = cj / k, j = cj % k;
     if constexpr (Sys::x[c][j] == entry::other) residue += x[c][j] - x[c][j];
   });
-  const solve_status status = !(fac.scale <= limits::max()) ? solve_status::not_finite
-                              : fac.singular                ? solve_status::singular
-                              : residue == S(0)             ? solve_status::ok
-                                                            : solve_status::not_finite;
-  const auto spoil = nan_unless<S>(status == solve_status::ok);
+  const auto status = checks<S>(fac.scale <= limits::max(), solve_status::not_finite, !fac.singular,
+                                solve_status::singular, residue == S(0), solve_status::not_finite);
+  const auto spoil = nan_unless<S>(ok_of<S>(status));
   static_for_inline<n * k>([&](auto cj) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t c = cj / k, j = cj % k;
     if constexpr (Sys::x[c][j] == entry::other) spoil(x[c][j]);
@@ -289,7 +300,7 @@ KANE_ALWAYS_INLINE solve_status substitute_structured(const table<S, Sys::n, Sys
 }
 
 template <class Sys, known_entries Known = known_entries::written, class S>
-KANE_ALWAYS_INLINE solve_status solve_structured(const table<S, Sys::n, Sys::n>& m,
+KANE_ALWAYS_INLINE status_of<S> solve_structured(const table<S, Sys::n, Sys::n>& m,
                                                  const table<S, Sys::n, Sys::k>& r,
                                                  table<S, Sys::n, Sys::k>& x) {
   return substitute_structured<Sys, Known>(m, factor_structured<Sys>(m), r, x);

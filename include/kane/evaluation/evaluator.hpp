@@ -243,11 +243,9 @@ class evaluator<St, frames<Fs...>, Level, Given>
     scalar residue =
         detail::nonfinite_residue(s.q) + detail::nonfinite_residue(s.p) + (s.t - s.t) + norm_residue;
     if constexpr (Rates) residue += rates_residue<ud_of<Reads>>(s);
-    const bool finite = residue == scalar(0);
-    this->status_ = !finite      ? solve_status::not_finite
-                    : !rotations ? solve_status::not_a_rotation
-                    : conflict   ? solve_status::conflicting_rates
-                                 : solve_status::ok;
+    this->status_ =
+        detail::checks<scalar>(residue == scalar(0), solve_status::not_finite, rotations,
+                               solve_status::not_a_rotation, !conflict, solve_status::conflicting_rates);
     if constexpr (!solves) {
       this->template pass<detail::stages::pose | rate_stages, Reads>(
           tr, *this);  // frame after frame, all levels at once
@@ -281,8 +279,11 @@ class evaluator<St, frames<Fs...>, Level, Given>
     else
       st_.ud = s.ud;
     const scalar residue = rates_residue<ud_of<Reads>>(s);
-    this->status_ = this->status_ == solve_status::ok && !(residue == scalar(0)) ? solve_status::not_finite
-                                                                                 : this->status_;
+    if constexpr (lane_traits<scalar>::width == 1)  // a select (g++ then keeps fewer stores than by a branch)
+      this->status_ = this->status_ == solve_status::ok && !(residue == scalar(0)) ? solve_status::not_finite
+                                                                                   : this->status_;
+    else
+      detail::fail_unless(this->status_, residue == scalar(0), solve_status::not_finite);
     rates_at<Reads>(s, this->cached_trig());
   }
 

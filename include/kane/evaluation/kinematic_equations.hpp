@@ -73,7 +73,7 @@ class kinematic_equations {
   using matrixn = Eigen::Matrix<scalar, int(nq), int(nq)>;
   using vectorn = Eigen::Matrix<scalar, int(nq), 1>;
 
-  solve_status status() const { return status_; }
+  status_of<scalar> status() const { return status_; }
   // q' = W u + X (W the identity and X zero without a speed set).
   matrixn W() const {
     matrixn w;
@@ -173,13 +173,13 @@ class kinematic_equations {
         y[r][c] = eval_scalar(e, ev);
       }
     });
-    const solve_status solved = [&] {
+    const status_of<scalar> solved = [&] {
       if constexpr (!direct && orthogonal_form<system>())
         return solve_orthogonal<system, inverse_norms<system, Speeds, typename Ev::closure>()>(y, kde_w_);
       else
         return solve_structured<system, known_entries::left>(y, y, kde_w_);
     }();
-    if (status_ == solve_status::ok) status_ = solved;
+    then(status_, solved);
     std::array<scalar, nq> z;
     static_for<nq>([&](auto r) {
       if constexpr (system::z[r] != entry::zero) {
@@ -187,15 +187,15 @@ class kinematic_equations {
         z[r] = -eval_scalar(e, ev);
       }
     });
-    bool finite = true;  // X = -W Z may overflow where W does not
+    auto finite = truth<scalar>(true);  // X = -W Z may overflow where W does not
     static_for<nq>([&](auto c) {
       if constexpr (system::offset[c]) {
         kde_x_[c] = apply_row<c, map::linear, nq>(z);
         finite = finite & (kde_x_[c] - kde_x_[c] == scalar(0));
       }
     });
-    if (status_ == solve_status::ok && !finite) status_ = solve_status::not_finite;
-    const auto spoil = nan_unless<scalar>(status_ == solve_status::ok);
+    fail_unless(status_, finite, solve_status::not_finite);
+    const auto spoil = nan_unless<scalar>(ok_of<scalar>(status_));
     static_for<nq * nq>([&](auto rc) {
       constexpr std::size_t r = rc / nq, c = rc % nq;
       if constexpr (system::x[r][c] == entry::other) spoil(kde_w_[r][c]);
@@ -209,9 +209,8 @@ class kinematic_equations {
     } else {
       qd_ = apply<map::affine, nd>(s.u);
     }
-    if (status_ == solve_status::ok && !all_finite(qd_)) status_ = solve_status::not_finite;
-    if (status_ != solve_status::ok)  // a branch, as for q'': as products (nan_unless) they measured slower
-      fill_nan(qd_);
+    fail_unless(status_, all_finite(qd_), solve_status::not_finite);
+    nan_where_failed<scalar>(status_, qd_);  // a branch for one state, as for q'': products measured slower
   }
   // (W v)_c (+ X_c) for v zero beyond its first Cols entries, skipping the zeros of W and X.
   template <std::size_t C, map Kind, std::size_t Cols, class V>
@@ -272,15 +271,15 @@ class kinematic_equations {
           qdd_[c] = nan;
       });
     }
-    bool finite = true;
+    auto finite = truth<scalar>(true);
     static_for<nq>([&](auto c) {
       if constexpr (Reads::qdd[c]) finite = finite & (qdd_[c] - qdd_[c] == scalar(0));
     });
-    if (status_ == solve_status::ok && !finite) status_ = solve_status::not_finite;
-    if (status_ != solve_status::ok) fill_nan(qdd_);
+    fail_unless(status_, finite, solve_status::not_finite);
+    nan_where_failed<scalar>(status_, qdd_);
   }
 
-  solve_status status_ = solve_status::ok;
+  status_of<scalar> status_{};
   // held only where solved (nr) and where Y is no identity (nw)
   static constexpr std::size_t nr = solves ? nq : 0, nw = direct ? 0 : nq;
   std::array<scalar, nr> qd_, qdd_;  // read at the velocity level and above

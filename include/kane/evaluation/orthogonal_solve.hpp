@@ -111,10 +111,10 @@ constexpr std::array<double, Sys::n> inverse_norms() {
 // or inf. The zeros and ones of X are not written. A row r with Inverse[r] != 0 is known to
 // have 1 / |row|^2 = Inverse[r] (+-c q_i over Euler parameters of unit norm).
 template <class Sys, auto Inverse = std::array<double, Sys::n>{}, class S>
-KANE_ALWAYS_INLINE solve_status solve_orthogonal(const table<S, Sys::n, Sys::n>& m,
+KANE_ALWAYS_INLINE status_of<S> solve_orthogonal(const table<S, Sys::n, Sys::n>& m,
                                                  table<S, Sys::n, Sys::n>& x) {
   S residue = -S(0);  // NaN or inf in a row, or a row norm that overflows
-  bool singular = false;
+  auto singular = lane_traits<S>::truth(false);
   static_for<Sys::form.count>([&](auto b) {
     constexpr std::size_t first = Sys::form.start[b], size = Sys::form.start[b + 1] - first;
     if constexpr (size > 1) {
@@ -140,9 +140,7 @@ KANE_ALWAYS_INLINE solve_status solve_orthogonal(const table<S, Sys::n, Sys::n>&
       });
     }
   });
-  return !(residue == S(0)) && !singular ? solve_status::not_finite
-         : singular                      ? solve_status::singular
-                                         : solve_status::ok;
+  return checks<S>(!singular, solve_status::singular, residue == S(0), solve_status::not_finite);
 }
 
 }  // namespace kane::detail

@@ -17,7 +17,9 @@
 #include <utility>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/v3.hpp"
 #include "kane/detail/wide_stores.hpp"
+#include "kane/scalars/scalar.hpp"
 
 #if (defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__)) && \
     !defined(KANE_ALLOW_FAST_MATH)
@@ -60,7 +62,95 @@ constexpr const char* to_string(solve_status s) {
   return "unknown";
 }
 
+// The statuses of one call over kane::lanes (kane/scalars/lanes.hpp): one per lane.
+template <std::size_t W>
+struct lane_status {
+  // the statuses' codes in one vector, 64 bits a lane as the masks of doubles (named through W:
+  // g++ drops a vector size that depends on W from a type that does not)
+  using code_type = std::conditional_t<W != 0, long long, long>;
+  typedef code_type codes __attribute__((vector_size(sizeof(long long) * W)));
+  codes code{};
+  constexpr lane_status() = default;
+  // s in every lane
+  constexpr explicit lane_status(solve_status s) : code(codes{} + static_cast<long long>(s)) {}
+  // lane i's
+  constexpr solve_status operator[](std::size_t i) const { return solve_status(code[i]); }
+  // every lane ok
+  constexpr bool all_ok() const {
+    bool ok = true;
+    for (std::size_t i = 0; i < W; ++i) ok = ok && code[i] == 0;
+    return ok;
+  }
+  friend constexpr bool operator==(const lane_status& a, const lane_status& b) {
+    bool same = true;
+    for (std::size_t i = 0; i < W; ++i) same = same && a.code[i] == b.code[i];
+    return same;
+  }
+};
+// The status of a call over S: one solve_status, or one per lane
+template <class S>
+using status_of =
+    std::conditional_t<lane_traits<S>::width == 1, solve_status, lane_status<lane_traits<S>::width>>;
+
 namespace detail {
+// st = why where st is ok and good is false (lane by lane where good is a mask).
+template <class Status, class Mask>
+KANE_ALWAYS_INLINE void fail_unless(Status& st, const Mask& good, solve_status why) {
+  static_assert(int(solve_status::ok) == 0);
+  if constexpr (std::is_same_v<Status, solve_status>) {
+    if (st == solve_status::ok && !good) st = why;  // a branch: g++ threads it (a select keeps more)
+  } else {
+    using codes = typename Status::codes;
+    codes bad;
+    if constexpr (std::is_same_v<Mask, bool>)  // the same in every lane
+      bad = codes{} - (!good ? 1 : 0);
+    else
+      bad = __builtin_convertvector(good.bits, codes) == 0;
+    st.code = (st.code == 0) & bad ? codes{} + static_cast<long long>(why) : st.code;
+  }
+}
+// The status of the first condition that fails, ok where all hold: checks<S>(c1, s1, c2, s2, ...);
+// for one state the chain !c1 ? s1 : !c2 ? s2 : ... : ok.
+template <class S, class C, class... A>
+KANE_ALWAYS_INLINE status_of<S> checks(const C& c, solve_status why, const A&... rest) {
+  if constexpr (lane_traits<S>::width == 1) {
+    if constexpr (sizeof...(A) == 0)
+      return !c ? why : solve_status::ok;
+    else
+      return !c ? why : checks<S>(rest...);
+  } else {
+    status_of<S> st{};
+    fail_unless(st, c, why);
+    if constexpr (sizeof...(A) > 0) {
+      const status_of<S> later = checks<S>(rest...);
+      st.code = st.code == 0 ? later.code : st.code;
+    }
+    return st;
+  }
+}
+// st = next where st is ok (lane by lane)
+template <class Status>
+KANE_ALWAYS_INLINE void then(Status& st, const Status& next) {
+  if constexpr (std::is_same_v<Status, solve_status>) {
+    if (st == solve_status::ok) st = next;
+  } else
+    st.code = st.code == 0 ? next.code : st.code;
+}
+// b in every lane, as S's truth values
+template <class S>
+KANE_ALWAYS_INLINE typename lane_traits<S>::mask truth(bool b) {
+  return lane_traits<S>::truth(b);
+}
+// st ok, as S's truth values (one per lane for lanes)
+template <class S>
+KANE_ALWAYS_INLINE typename lane_traits<S>::mask ok_of(const status_of<S>& st) {
+  if constexpr (lane_traits<S>::width == 1)
+    return st == solve_status::ok;
+  else {
+    using mask = typename lane_traits<S>::mask;
+    return mask{__builtin_convertvector(st.code == 0, typename mask::vector)};
+  }
+}
 // 0 if every number of a is finite, NaN otherwise: x - x is 0 for a finite x and
 // NaN for NaN or inf, and a sum of zeros is 0 (no comparison per number). The sum is
 // pairwise, so its additions do not wait on each other. An empty sum is -0, the additive
@@ -81,10 +171,14 @@ constexpr S nonfinite_residue(const std::array<S, N>& a) {
 }
 // spoil(x) makes x (an S or a matrix of S) NaN unless ok: for numbers a product
 // by 1 or NaN (no branch, so the results need not merge), else a store.
-template <class S>
-KANE_ALWAYS_INLINE auto nan_unless(bool ok) {
+template <class S, class Mask = bool>
+KANE_ALWAYS_INLINE auto nan_unless(const Mask& ok) {
   if constexpr (std::is_floating_point_v<S>)
     return [factor = ok ? S(1) : std::numeric_limits<S>::quiet_NaN()](auto& x) { x *= factor; };
+  else if constexpr (lane_traits<S>::width > 1)
+    return [factor = lane_traits<S>::select(ok, S(1), std::numeric_limits<S>::quiet_NaN())](auto& x) {
+      x *= factor;
+    };
   else
     return [ok](auto& x) {
       if (ok) return;
@@ -97,8 +191,8 @@ KANE_ALWAYS_INLINE auto nan_unless(bool ok) {
 }
 // x (a fixed-size Eigen matrix) NaN unless ok, as nan_unless; doubles rewritten in blocks
 // (detail/wide_stores.hpp), which a copy of x reads whole.
-template <class M>
-KANE_ALWAYS_INLINE void spoil_unless(M& x, bool ok) {
+template <class M, class Mask = bool>
+KANE_ALWAYS_INLINE void spoil_unless(M& x, const Mask& ok) {
   using S = typename M::Scalar;
   if constexpr (std::is_floating_point_v<S> && std::is_base_of_v<Eigen::PlainObjectBase<M>, M>) {
     const S factor = ok ? S(1) : std::numeric_limits<S>::quiet_NaN();
@@ -108,18 +202,18 @@ KANE_ALWAYS_INLINE void spoil_unless(M& x, bool ok) {
     nan_unless<S>(ok)(x);
 }
 template <class S, std::size_t N>
-constexpr bool all_finite(const std::array<S, N>& a) {
+constexpr auto all_finite(const std::array<S, N>& a) {
   return nonfinite_residue(a) == S(0);
 }
 // The same for an Eigen matrix of fixed size: one sum, no branch per entry.
 template <class M>
-bool all_finite_matrix(const M& m) {
+auto all_finite_matrix(const M& m) {
   return (m.array() - m.array()).sum() == typename M::Scalar(0);
 }
 // The same number by number, for a small matrix whose numbers were just stored one by one: a
 // wide load of them would wait.
 template <class M>
-bool all_finite_numbers(const M& m) {
+auto all_finite_numbers(const M& m) {
   if constexpr (M::SizeAtCompileTime > 16)
     return all_finite_matrix(m);
   else
@@ -128,17 +222,39 @@ bool all_finite_numbers(const M& m) {
     }
   (std::make_index_sequence<std::size_t(M::SizeAtCompileTime)>{});
 }
+// ok_of(st) hidden from the optimizer for one state (detail/inline.hpp: opaque)
+template <class S>
+KANE_ALWAYS_INLINE typename lane_traits<S>::mask opaque_ok(const status_of<S>& st) {
+  if constexpr (lane_traits<S>::width == 1)
+    return opaque(st == solve_status::ok);
+  else
+    return ok_of<S>(st);
+}
+// The numbers of x (a std::array) NaN where st is not ok: a branch for one state, products for lanes.
+template <class S, class X>
+KANE_ALWAYS_INLINE void nan_where_failed(const status_of<S>& st, X& x) {
+  if constexpr (lane_traits<S>::width == 1) {
+    if (st != solve_status::ok) fill_nan(x);
+  } else {
+    const auto spoil = nan_unless<S>(ok_of<S>(st));
+    for (auto& e : x) spoil(e);
+  }
+}
 // The status of a result x computed at status: not_finite where x is not, and x NaN unless ok.
 template <class M>
-solve_status finished(M& x, solve_status status) {
-  if (status == solve_status::ok && !all_finite_matrix(x)) status = solve_status::not_finite;
-  if (status != solve_status::ok) x.setConstant(std::numeric_limits<typename M::Scalar>::quiet_NaN());
+status_of<typename M::Scalar> finished(M& x, status_of<typename M::Scalar> status) {
+  using S = typename M::Scalar;
+  fail_unless(status, all_finite_matrix(x), solve_status::not_finite);
+  if constexpr (lane_traits<S>::width > 1)
+    nan_unless<S>(ok_of<S>(status))(x);
+  else if (status != solve_status::ok)
+    x.setConstant(std::numeric_limits<S>::quiet_NaN());
   return status;
 }
 // The diagonal of a mass matrix M finite: so is all of M, |M_rs| <= (M_rr M_ss)^1/2 (M positive
 // semidefinite).
 template <class M>
-bool finite_diagonal(const M& m) {
+auto finite_diagonal(const M& m) {
   using S = typename M::Scalar;
   return [&]<int... I>(std::integer_sequence<int, I...>) { return ((m(I, I) - m(I, I)) + ...) == S(0); }
   (std::make_integer_sequence<int, M::RowsAtCompileTime>{});

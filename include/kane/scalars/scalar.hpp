@@ -3,6 +3,8 @@
 
 #include <concepts>
 
+#include "kane/detail/lane_traits.hpp"
+
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane {

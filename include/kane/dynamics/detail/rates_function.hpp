@@ -101,8 +101,8 @@ KANE_ALWAYS_INLINE void copy_wide(S* to, const X& x, std::size_t from) {
 // the optimizer cannot thread, since a branch here keeps the local evaluator's dead stores (and
 // the work behind them, such as sin and cos of an angle nothing reads) alive.
 template <std::size_t N, class S, class Q, class DX>
-KANE_ALWAYS_INLINE void write_rates(DX& dxdt, const Q& qd, bool ok) {
-  const auto spoil = nan_unless<S>(opaque(ok));
+KANE_ALWAYS_INLINE void write_rates(DX& dxdt, const Q& qd, const status_of<S>& status) {
+  const auto spoil = nan_unless<S>(opaque_ok<S>(status));
   static_for<N>([&](auto i) {
     S v = qd[i];
     spoil(v);
@@ -136,7 +136,7 @@ class rates_function {
     flat<scalar>([&] { static_cast<Derived*>(this)->step(x, dxdt, time); });
   }
   // the status of the last call: ok, or why dxdt is NaN
-  solve_status status() const { return status_; }
+  status_of<scalar> status() const { return status_; }
   // The inputs r of the calls from now on (a controller's torques), kept between calls.
   typename state_type::inputs_type& inputs() { return s_.r; }
   // An evaluator updated at the last call's state (before the first call, s's), u' = 0: energies,
@@ -158,7 +158,7 @@ class rates_function {
   explicit rates_function(const state_type& s) : s_(s) {}
   // the state of the last call (before the first, the constructor's)
   state_type s_;
-  solve_status status_ = solve_status::ok;
+  status_of<scalar> status_{};
 };
 
 }  // namespace kane::detail

@@ -45,7 +45,7 @@ namespace detail {
 template <class S, std::size_t N>
 struct forcing_only {
   Eigen::Matrix<S, int(N), 1> f;
-  solve_status status;
+  status_of<S> status;
 };
 template <class R, class X, class Ev>
 Eigen::Matrix<typename Ev::scalar, 3, 1> in_root(const X& x, const Ev& ev) {
@@ -261,7 +261,7 @@ auto equations_along(const Ev& ev, const Cols& cols) {
   if constexpr (!known && with_m) out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
   if constexpr (known && !with_m)  // the caller checks M^-1 f: a NaN or inf of f reaches it
     return out;
-  const bool finite = [&] {  // numbers: M's diagonal suffices (M = sum m V^T V + W^T I W)
+  const auto finite = [&] {  // numbers: M's diagonal suffices (M = sum m V^T V + W^T I W)
     if constexpr (known || !with_m)
       return detail::all_finite_numbers(out.f);
     else if constexpr (std::is_floating_point_v<S>)
@@ -269,7 +269,7 @@ auto equations_along(const Ev& ev, const Cols& cols) {
     else
       return detail::all_finite_matrix(out.M) && detail::all_finite_numbers(out.f);
   }();
-  if (out.status == solve_status::ok && !finite) out.status = solve_status::not_finite;
+  fail_unless(out.status, finite, solve_status::not_finite);
   return out;
 }
 }  // namespace detail

@@ -1,0 +1,127 @@
+// Many states per call (lanes_models.hpp): 64 states of each small model per row, by the hand
+// and SymPy functions state by state, kane's scalar path, and kane's lanes of 4 and 8 doubles and
+// 16 floats. The states are those of ../small/small_bench.cpp.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "../common/harness.hpp"
+#include "lanes_models.hpp"
+
+namespace {
+template <int N>
+std::vector<small::input<N>> inputs(unsigned seed, void (*fix)(small::input<N>&, std::mt19937&)) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> d(-3, 3);
+  std::vector<small::input<N>> in(lanes_bench::batch);
+  for (auto& s : in) {
+    for (double& x : s.x) x = d(rng);
+    fix(s, rng);
+  }
+  return in;
+}
+const auto tops = inputs<6>(3, [](small::top_in& s, std::mt19937& rng) {
+  s.x[1] = std::uniform_real_distribution<double>(0.3, 2.8)(rng);  // away from the 3-1-3 singularity
+});
+const auto spacecrafts = inputs<14>(5, [](small::spacecraft_in& s, std::mt19937&) {
+  const double n = std::sqrt(s.x[0] * s.x[0] + s.x[1] * s.x[1] + s.x[2] * s.x[2] + s.x[3] * s.x[3]);
+  for (int i = 0; i < 4; ++i) s.x[i] /= n;  // a unit quaternion
+});
+const auto pendulums = inputs<4>(7, [](small::pendulum_in&, std::mt19937&) {});
+const auto arms = [] {  // as ../dynamics6/dynamics6_bench.cpp
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> d(-3, 3);
+  std::vector<dynamics6::input> in(lanes_bench::batch);
+  for (auto& x : in)
+    for (int i = 0; i < 6; ++i) x.q[std::size_t(i)] = d(rng), x.qd[std::size_t(i)] = d(rng);
+  return in;
+}();
+
+template <class In, class Out>
+In input_of(void (*)(const In&, Out&));
+template <class In, class Out>
+Out output_of(void (*)(const In*, Out*));
+// One state's function over the batch
+template <auto F>
+void each(const decltype(input_of(F))* in, decltype(bench::output_of(F))* out) {
+  for (int i = 0; i < lanes_bench::batch; ++i) F(in[i], out[i]);
+}
+// Times F over the batch States (64 states an iteration).
+template <auto F, const auto& States>
+void run(benchmark::State& st) {
+  std::array<decltype(output_of(F)), lanes_bench::batch> out{};
+  for (auto _ : st) {
+    F(States.data(), out.data());
+    benchmark::DoNotOptimize(out);
+    benchmark::ClobberMemory();
+  }
+}
+
+// Every kane batch agrees with the hand code: doubles to 1e-12, floats to 1e-4 relative; every
+// status 0.
+template <int N>
+void agree(const std::vector<small::input<N>>& states,
+           void (*hand)(const small::input<N>&, small::output<N>&),
+           std::initializer_list<lanes_bench::batch_function<N>> doubles,
+           lanes_bench::batch_function<N> floats) {
+  std::array<small::output<N>, lanes_bench::batch> h{}, o{};
+  for (int i = 0; i < lanes_bench::batch; ++i) hand(states[std::size_t(i)], h[std::size_t(i)]);
+  for (auto f : doubles) {
+    f(states.data(), o.data());
+    for (int i = 0; i < lanes_bench::batch; ++i) {
+      bench::require_agreement(bench::max_diff(o[std::size_t(i)].xd, h[std::size_t(i)].xd, N));
+      bench::require_agreement(o[std::size_t(i)].status);
+    }
+  }
+  floats(states.data(), o.data());
+  for (int i = 0; i < lanes_bench::batch; ++i)
+    for (int k = 0; k < N; ++k) {
+      const double a = o[std::size_t(i)].xd[k], b = h[std::size_t(i)].xd[k];
+      bench::require_agreement(std::abs(a - b) <= 1e-4 * (1 + std::abs(b)) ? 0 : 1);
+    }
+}
+void agree() {
+  using namespace lanes_bench;
+  agree<6>(tops, small::top_hand, {top_kane, top_kane_x4, top_kane_x8}, top_kane_float_x16);
+  agree<14>(spacecrafts, small::spacecraft_hand, {spacecraft_kane, spacecraft_kane_x4, spacecraft_kane_x8},
+            spacecraft_kane_float_x16);
+  agree<4>(pendulums, small::pendulum_absolute_hand,
+           {pendulum_absolute_kane, pendulum_absolute_kane_x4, pendulum_absolute_kane_x8},
+           pendulum_absolute_kane_float_x16);
+  std::array<dynamics6::output, batch> h{}, o{};
+  each<dynamics6::hand_forward>(arms.data(), h.data());
+  for (auto f : {arm6_forward_kane, arm6_forward_kane_x4, arm6_forward_kane_x8}) {
+    f(arms.data(), o.data());
+    for (std::size_t i = 0; i < h.size(); ++i)
+      bench::require_agreement(bench::max_diff(o[i].qdd, h[i].qdd, 6));
+  }
+  arm6_forward_kane_float_x16(arms.data(), o.data());
+  for (std::size_t i = 0; i < h.size(); ++i)
+    for (int k = 0; k < 6; ++k)
+      bench::require_agreement(std::abs(o[i].qdd[k] - h[i].qdd[k]) <= 1e-3 * (1 + std::abs(h[i].qdd[k])) ? 0
+                                                                                                         : 1);
+}
+}  // namespace
+
+#define KANE_LANES_ROWS(model, states)                                                                \
+  BENCHMARK(run<each<small::model##_hand>, states>)->Name("lanes/" #model "/hand");                   \
+  BENCHMARK(run<each<small::model##_sympy>, states>)->Name("lanes/" #model "/sympy");                 \
+  BENCHMARK(run<each<small::model##_sympy_checked>, states>)->Name("lanes/" #model "/sympy_checked"); \
+  BENCHMARK(run<lanes_bench::model##_kane, states>)->Name("lanes/" #model "/kane");                   \
+  BENCHMARK(run<lanes_bench::model##_kane_x4, states>)->Name("lanes/" #model "/kane_x4");             \
+  BENCHMARK(run<lanes_bench::model##_kane_x8, states>)->Name("lanes/" #model "/kane_x8");             \
+  BENCHMARK(run<lanes_bench::model##_kane_float_x16, states>)->Name("lanes/" #model "/kane_float_x16")
+
+KANE_LANES_ROWS(top, tops);
+KANE_LANES_ROWS(spacecraft, spacecrafts);
+KANE_LANES_ROWS(pendulum_absolute, pendulums);
+BENCHMARK(run<each<dynamics6::hand_forward>, arms>)->Name("lanes/arm6_forward/hand");
+BENCHMARK(run<lanes_bench::arm6_forward_kane, arms>)->Name("lanes/arm6_forward/kane");
+BENCHMARK(run<lanes_bench::arm6_forward_kane_x4, arms>)->Name("lanes/arm6_forward/kane_x4");
+BENCHMARK(run<lanes_bench::arm6_forward_kane_x8, arms>)->Name("lanes/arm6_forward/kane_x8");
+BENCHMARK(run<lanes_bench::arm6_forward_kane_float_x16, arms>)->Name("lanes/arm6_forward/kane_float_x16");
+
+int main(int argc, char** argv) { return bench::main(argc, argv, agree); }

@@ -1,0 +1,125 @@
+// kane over a batch of 64 states (lanes_models.hpp): kane::motion<System, Speeds, S> with S
+// double (one state a call), kane::lanes<double, 4>, kane::lanes<double, 8> and
+// kane::lanes<float, 16>. The lanes load W states, call once and store W results and statuses.
+#include <kane/scalars/lanes.hpp>
+
+#include "../../examples/models/arm6_dynamics.hpp"
+#include "../../examples/models/gyrostat.hpp"
+#include "../../examples/models/heavy_top.hpp"
+#include "../../examples/models/pendulum_absolute.hpp"
+#include "lanes_models.hpp"
+
+namespace {
+template <class S>
+using top = kane::motion<models::heavy_top::system, models::heavy_top::speeds, S>;
+template <class S>
+using spacecraft = kane::motion<models::gyrostat::system, models::gyrostat::speeds, S>;
+template <class S>
+using pendulum_absolute = kane::motion<models::pendulum_absolute::system, void, S>;
+
+// out[i] = x' at in[i], W states a call
+template <class Motion, int N>
+void batches(const small::input<N>* in, small::output<N>* out) {
+  using L = typename Motion::scalar;
+  using S = typename kane::real_type<L>::type;
+  constexpr int W = int(kane::lane_traits<L>::width);
+  static Motion motion{typename Motion::state_type{}};
+  for (int first = 0; first < lanes_bench::batch; first += W) {
+    std::array<L, N> x, xd;
+    if constexpr (W == 1)
+      for (int k = 0; k < N; ++k) x[k] = in[first].x[k];
+    else
+      for (int k = 0; k < N; ++k)
+        x[k] = L::generate([&](std::size_t l) { return S(in[first + int(l)].x[k]); });
+    motion(x, xd, L(S(0)));
+    const auto status = motion.status();
+    for (int l = 0; l < W; ++l) {
+      small::output<N>& o = out[first + l];
+      if constexpr (W == 1) {
+        for (int k = 0; k < N; ++k) o.xd[k] = xd[k];
+        o.status = status == kane::solve_status::ok ? 0 : 1;
+      } else {
+        for (int k = 0; k < N; ++k) o.xd[k] = double(xd[k][l]);
+        o.status = status[l] == kane::solve_status::ok ? 0 : 1;
+      }
+    }
+  }
+}
+
+// q'' = u' of the arm at q and u = q', W states a call, as dynamics6_kane.cpp writes it
+template <class L>
+void arm6_batches(const dynamics6::input* in, dynamics6::output* out) {
+  using S = typename kane::real_type<L>::type;
+  constexpr int W = int(kane::lane_traits<L>::width);
+  using state = kane::state<L, 6>;
+  using evaluator =
+      kane::evaluator<state, kane::frames<models::arm6::B6>, kane::level::pose, kane::qdot_speeds<6>>;
+  for (int first = 0; first < lanes_bench::batch; first += W) {
+    state s;
+    for (std::size_t k = 0; k < 6; ++k) {
+      if constexpr (W == 1)
+        s.q[k] = in[first].q[k], s.u[k] = in[first].qd[k];
+      else
+        s.q[k] = L::generate([&](std::size_t l) { return S(in[first + int(l)].q[k]); }),
+        s.u[k] = L::generate([&](std::size_t l) { return S(in[first + int(l)].qd[k]); });
+    }
+    evaluator ev;
+    ev.update(s);
+    const auto ud = kane::forward_dynamics<models::arm6::links>(ev).ud;
+    for (int l = 0; l < W; ++l)
+      for (int k = 0; k < 6; ++k) {
+        if constexpr (W == 1)
+          out[first].qdd[k] = ud(k);
+        else
+          out[first + l].qdd[k] = double(ud(k)[std::size_t(l)]);
+      }
+  }
+}
+}  // namespace
+
+namespace lanes_bench {
+void top_kane(const small::top_in* in, small::top_out* out) { batches<top<double>>(in, out); }
+void top_kane_x4(const small::top_in* in, small::top_out* out) {
+  batches<top<kane::lanes<double, 4>>>(in, out);
+}
+void top_kane_x8(const small::top_in* in, small::top_out* out) {
+  batches<top<kane::lanes<double, 8>>>(in, out);
+}
+void top_kane_float_x16(const small::top_in* in, small::top_out* out) {
+  batches<top<kane::lanes<float, 16>>>(in, out);
+}
+void spacecraft_kane(const small::spacecraft_in* in, small::spacecraft_out* out) {
+  batches<spacecraft<double>>(in, out);
+}
+void spacecraft_kane_x4(const small::spacecraft_in* in, small::spacecraft_out* out) {
+  batches<spacecraft<kane::lanes<double, 4>>>(in, out);
+}
+void spacecraft_kane_x8(const small::spacecraft_in* in, small::spacecraft_out* out) {
+  batches<spacecraft<kane::lanes<double, 8>>>(in, out);
+}
+void spacecraft_kane_float_x16(const small::spacecraft_in* in, small::spacecraft_out* out) {
+  batches<spacecraft<kane::lanes<float, 16>>>(in, out);
+}
+void pendulum_absolute_kane(const small::pendulum_in* in, small::pendulum_out* out) {
+  batches<pendulum_absolute<double>>(in, out);
+}
+void pendulum_absolute_kane_x4(const small::pendulum_in* in, small::pendulum_out* out) {
+  batches<pendulum_absolute<kane::lanes<double, 4>>>(in, out);
+}
+void pendulum_absolute_kane_x8(const small::pendulum_in* in, small::pendulum_out* out) {
+  batches<pendulum_absolute<kane::lanes<double, 8>>>(in, out);
+}
+void pendulum_absolute_kane_float_x16(const small::pendulum_in* in, small::pendulum_out* out) {
+  batches<pendulum_absolute<kane::lanes<float, 16>>>(in, out);
+}
+void arm6_forward_kane(const dynamics6::input* in, dynamics6::output* out) { arm6_batches<double>(in, out); }
+void arm6_forward_kane_x4(const dynamics6::input* in, dynamics6::output* out) {
+  arm6_batches<kane::lanes<double, 4>>(in, out);
+}
+void arm6_forward_kane_x8(const dynamics6::input* in, dynamics6::output* out) {
+  arm6_batches<kane::lanes<double, 8>>(in, out);
+}
+void arm6_forward_kane_float_x16(const dynamics6::input* in, dynamics6::output* out) {
+  arm6_batches<kane::lanes<float, 16>>(in, out);
+}
+}  // namespace lanes_bench

@@ -1,0 +1,34 @@
+// Many states per call: the right-hand sides of the small models (../small/small_models.hpp) over
+// a batch of 64 states, by kane's scalar path (one state a call), by lanes of 4 and 8 doubles and
+// 16 floats (kane/scalars/lanes.hpp; each batch loaded into lanes and stored back), and by the
+// hand-written and SymPy functions called state by state; the same for the 6-revolute arm's forward
+// dynamics. A row's time is that of 64 states.
+#pragma once
+
+#include "../dynamics6/dynamics6.hpp"
+#include "../small/small_models.hpp"
+
+namespace lanes_bench {
+inline constexpr int batch = 64;
+// F over the batch: in[0..63] -> out[0..63]
+template <int N>
+using batch_function = void (*)(const small::input<N>*, small::output<N>*);
+
+void top_kane(const small::top_in*, small::top_out*);
+void top_kane_x4(const small::top_in*, small::top_out*);
+void top_kane_x8(const small::top_in*, small::top_out*);
+void top_kane_float_x16(const small::top_in*, small::top_out*);
+void spacecraft_kane(const small::spacecraft_in*, small::spacecraft_out*);
+void spacecraft_kane_x4(const small::spacecraft_in*, small::spacecraft_out*);
+void spacecraft_kane_x8(const small::spacecraft_in*, small::spacecraft_out*);
+void spacecraft_kane_float_x16(const small::spacecraft_in*, small::spacecraft_out*);
+void pendulum_absolute_kane(const small::pendulum_in*, small::pendulum_out*);
+void pendulum_absolute_kane_x4(const small::pendulum_in*, small::pendulum_out*);
+void pendulum_absolute_kane_x8(const small::pendulum_in*, small::pendulum_out*);
+void pendulum_absolute_kane_float_x16(const small::pendulum_in*, small::pendulum_out*);
+// the 6-revolute arm's forward dynamics (../dynamics6/dynamics6.hpp): q'' of each state
+void arm6_forward_kane(const dynamics6::input*, dynamics6::output*);
+void arm6_forward_kane_x4(const dynamics6::input*, dynamics6::output*);
+void arm6_forward_kane_x8(const dynamics6::input*, dynamics6::output*);
+void arm6_forward_kane_float_x16(const dynamics6::input*, dynamics6::output*);
+}  // namespace lanes_bench

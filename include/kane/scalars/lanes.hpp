@@ -1,0 +1,274 @@
+// Lanes: W states in one number. kane::lanes<double, 8> is the scalar of a state that holds eight
+// states at once; every operation acts lane by lane in vector registers, and comparisons give a
+// mask of W truth values. Statuses come per lane (kane::lane_status), so a lane that is singular
+// or not finite reports its own status and NaN while the other lanes go on.
+//
+//   using L = kane::lanes<double, 8>;
+//   L x = 0.5;                 // every lane 0.5
+//   x.set(3, 1.0);             // lane 3
+//   double y = x[3];           // 1.0
+//
+// The arithmetic is GCC's and Clang's vector types; sine, cosine and square roots come from
+// <experimental/simd>. Optional: kane.hpp does not include this header.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <concepts>
+#include <cstddef>
+#include <experimental/simd>
+#include <limits>
+#include <type_traits>
+#include <utility>
+
+#include <Eigen/Core>
+
+#include "kane/detail/invert.hpp"
+#include "kane/scalars/scalar.hpp"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wpsabi"
+namespace kane {
+
+// W truth values: what comparisons of kane::lanes give.
+template <std::floating_point S, std::size_t W>
+struct lane_mask {
+  // an integer of S's size per lane: all bits set where true
+  using bits_type = std::conditional_t<sizeof(S) == 8, long long, int>;
+  typedef bits_type vector __attribute__((vector_size(sizeof(S) * W)));
+  vector bits;
+
+  // lane i
+  bool operator[](std::size_t i) const { return bits[i] != 0; }
+  friend lane_mask operator&(const lane_mask& a, const lane_mask& b) { return {a.bits & b.bits}; }
+  friend lane_mask operator|(const lane_mask& a, const lane_mask& b) { return {a.bits | b.bits}; }
+  friend lane_mask operator!(const lane_mask& a) { return {~a.bits}; }
+  // both operands evaluated: && and || of masks do not short-circuit
+  friend lane_mask operator&&(const lane_mask& a, const lane_mask& b) { return a & b; }
+  friend lane_mask operator||(const lane_mask& a, const lane_mask& b) { return a | b; }
+  // every lane true
+  friend bool all_of(const lane_mask& m) {
+    bool all = true;
+    for (std::size_t i = 0; i < W; ++i) all = all && m.bits[i] != 0;
+    return all;
+  }
+  // some lane true
+  friend bool any_of(const lane_mask& m) {
+    bool any = false;
+    for (std::size_t i = 0; i < W; ++i) any = any || m.bits[i] != 0;
+    return any;
+  }
+};
+
+// W numbers of S, one per state, computed together.
+template <std::floating_point S, std::size_t W>
+struct lanes {
+  static_assert(W >= 2 && (W & (W - 1)) == 0, "kane: lanes<S, W> takes W a power of two, 2 or more");
+  // the vector register (or registers) of W numbers
+  typedef S vector __attribute__((vector_size(sizeof(S) * W)));
+  static constexpr std::size_t width = W;
+  vector v;
+
+  lanes() = default;  // like a double: uninitialised; lanes x{}; is zero
+  // every lane x
+  template <class T>
+  requires std::is_arithmetic_v<T> lanes(T x) : v(vector{} + S(x)) {}  // NOLINT: numbers convert
+  explicit lanes(vector x) : v(x) {}
+
+  // Lane i f(i), built in registers (one wide value, where W stores of one lane each and a wide
+  // load of them would wait on the stores).
+  template <class F>
+  static lanes generate(F f) {
+    return [&]<std::size_t... I>(std::index_sequence<I...>) { return lanes(vector{S(f(I))...}); }
+    (std::make_index_sequence<W>{});
+  }
+  // lane i
+  S operator[](std::size_t i) const { return v[i]; }
+  // lane i set to x
+  void set(std::size_t i, S x) { v[i] = x; }
+
+  friend lanes operator+(const lanes& a, const lanes& b) { return lanes(a.v + b.v); }
+  friend lanes operator-(const lanes& a, const lanes& b) { return lanes(a.v - b.v); }
+  friend lanes operator*(const lanes& a, const lanes& b) { return lanes(a.v * b.v); }
+  friend lanes operator/(const lanes& a, const lanes& b) { return lanes(a.v / b.v); }
+  friend lanes operator+(const lanes& a) { return a; }
+  friend lanes operator-(const lanes& a) { return lanes(-a.v); }
+  lanes& operator+=(const lanes& b) { return v += b.v, *this; }
+  lanes& operator-=(const lanes& b) { return v -= b.v, *this; }
+  lanes& operator*=(const lanes& b) { return v *= b.v, *this; }
+  lanes& operator/=(const lanes& b) { return v /= b.v, *this; }
+
+  friend lane_mask<S, W> operator==(const lanes& a, const lanes& b) { return {a.v == b.v}; }
+  friend lane_mask<S, W> operator!=(const lanes& a, const lanes& b) { return {a.v != b.v}; }
+  friend lane_mask<S, W> operator<(const lanes& a, const lanes& b) { return {a.v < b.v}; }
+  friend lane_mask<S, W> operator>(const lanes& a, const lanes& b) { return {a.v > b.v}; }
+  friend lane_mask<S, W> operator<=(const lanes& a, const lanes& b) { return {a.v <= b.v}; }
+  friend lane_mask<S, W> operator>=(const lanes& a, const lanes& b) { return {a.v >= b.v}; }
+
+  // m ? a : b, lane by lane
+  friend lanes select(const lane_mask<S, W>& m, const lanes& a, const lanes& b) {
+    return lanes(m.bits ? a.v : b.v);
+  }
+
+  friend lanes sin(const lanes& a) {
+    return by_simd(a, [](const auto& x) { return sin(x); });
+  }
+  friend lanes cos(const lanes& a) {
+    return by_simd(a, [](const auto& x) { return cos(x); });
+  }
+  friend lanes tan(const lanes& a) {
+    return by_simd(a, [](const auto& x) { return tan(x); });
+  }
+  friend lanes sqrt(const lanes& a) {
+    return by_simd(a, [](const auto& x) { return sqrt(x); });
+  }
+  friend lanes exp(const lanes& a) {
+    return by_simd(a, [](const auto& x) { return exp(x); });
+  }
+  friend lanes log(const lanes& a) {
+    return by_simd(a, [](const auto& x) { return log(x); });
+  }
+  friend lanes atan(const lanes& a) {
+    return by_simd(a, [](const auto& x) { return atan(x); });
+  }
+  friend lanes atan2(const lanes& y, const lanes& x) {
+    return by_simd(y, x, [](const auto& a, const auto& b) { return atan2(a, b); });
+  }
+  friend lanes abs(const lanes& a) { return select(a < lanes(S(0)), -a, a); }
+
+ private:
+  using simd = std::experimental::simd<S, std::experimental::simd_abi::deduce_t<S, W>>;
+  static simd to_simd(const lanes& a) {
+    return simd(reinterpret_cast<const S*>(&a.v), std::experimental::vector_aligned);
+  }
+  static lanes of_simd(const simd& x) {
+    lanes r;
+    x.copy_to(reinterpret_cast<S*>(&r.v), std::experimental::vector_aligned);
+    return r;
+  }
+  template <class F>
+  static lanes by_simd(const lanes& a, F f) {
+    return of_simd(f(to_simd(a)));
+  }
+  template <class F>
+  static lanes by_simd(const lanes& a, const lanes& b, F f) {
+    return of_simd(f(to_simd(a), to_simd(b)));
+  }
+};
+
+template <class S, std::size_t W>
+struct is_scalar<lanes<S, W>> : std::true_type {};
+// S, the real numbers of every lane
+template <class S, std::size_t W>
+struct real_type<lanes<S, W>> {
+  // S
+  using type = S;
+};
+// W states, masks of W truth values
+template <class S, std::size_t W>
+struct lane_traits<lanes<S, W>> {
+  static constexpr std::size_t width = W;
+  using mask = lane_mask<S, W>;
+  static bool lane(const mask& m, std::size_t i) { return m[i]; }
+  static lanes<S, W> select(const mask& m, const lanes<S, W>& a, const lanes<S, W>& b) {
+    return lanes<S, W>(m.bits ? a.v : b.v);
+  }
+  static mask truth(bool b) {
+    mask m;
+    m.bits = typename mask::vector{} + (b ? -1 : 0);
+    return m;
+  }
+};
+
+// count states (count <= W), each N numbers, as N lanes of W: lane l holds states[l]; lanes past count
+// repeat states[0], so that no empty lane reports a status of its own.
+template <std::size_t W, class S, std::size_t N>
+std::array<lanes<S, W>, N> to_lanes(const std::array<S, N>* states, std::size_t count) {
+  std::array<lanes<S, W>, N> x;
+  for (std::size_t k = 0; k < N; ++k)
+    x[k] = lanes<S, W>::generate([&](std::size_t l) { return states[l < count ? l : 0][k]; });
+  return x;
+}
+// The first count lanes of x (N lanes of W) into count states of N numbers.
+template <class S, std::size_t W, std::size_t N>
+void from_lanes(const std::array<lanes<S, W>, N>& x, std::array<S, N>* states, std::size_t count) {
+  for (std::size_t l = 0; l < count && l < W; ++l)
+    for (std::size_t k = 0; k < N; ++k) states[l][k] = x[k][l];
+}
+
+// A coupled block of a structured solve (evaluation/block_solve.hpp), lane by lane: full pivoting
+// picks its pivots per state. inv NaN, and the mask false, in the lanes whose pivot fails.
+template <class S, std::size_t W, int N>
+lane_mask<S, W> factor_block(const Eigen::Matrix<lanes<S, W>, N, N>& b, Eigen::Matrix<lanes<S, W>, N, N>& inv,
+                             const lanes<S, W>& tol) {
+  using L = lanes<S, W>;
+  if constexpr (N == 2) {  // detail::invert's closed form, its rule in every lane
+    const L a = b(0, 0), c01 = b(0, 1), c10 = b(1, 0), d = b(1, 1);
+    const L ab = select(abs(a) > abs(c01), abs(a), abs(c01)),
+            cd = select(abs(c10) > abs(d), abs(c10), abs(d));
+    const L best = select(ab > cd, ab, cd), det = a * d - c01 * c10;
+    const L t = select(tol < L(S(0)), L(std::numeric_limits<S>::epsilon() * S(2)) * best, tol);
+    const lane_mask<S, W> ok = best > t && abs(det) > t * best && det - det == L(S(0));
+    const L r = select(ok, L(S(1)) / det, L(std::numeric_limits<S>::quiet_NaN()));
+    inv << d * r, -c01 * r, -c10 * r, a * r;
+    return ok;
+  }
+  lane_mask<S, W> factored;
+  for (std::size_t l = 0; l < W; ++l) {
+    Eigen::Matrix<S, N, N> bl, il;
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) bl(i, j) = b(i, j)[l];
+    const bool ok = detail::invert(bl, il, tol[l]);
+    if (!ok) il.setConstant(std::numeric_limits<S>::quiet_NaN());
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) inv(i, j).set(l, il(i, j));
+    factored.bits[l] = ok ? -1 : 0;
+  }
+  return factored;
+}
+
+}  // namespace kane
+#pragma GCC diagnostic pop
+
+// the limits of S in every lane
+template <class S, std::size_t W>
+class std::numeric_limits<kane::lanes<S, W>> : public std::numeric_limits<S> {
+ public:
+  static kane::lanes<S, W> epsilon() noexcept { return std::numeric_limits<S>::epsilon(); }
+  static kane::lanes<S, W> quiet_NaN() noexcept { return std::numeric_limits<S>::quiet_NaN(); }
+  static kane::lanes<S, W> infinity() noexcept { return std::numeric_limits<S>::infinity(); }
+  static kane::lanes<S, W> max() noexcept { return std::numeric_limits<S>::max(); }
+  static kane::lanes<S, W> min() noexcept { return std::numeric_limits<S>::min(); }
+  static kane::lanes<S, W> lowest() noexcept { return std::numeric_limits<S>::lowest(); }
+};
+
+// Eigen's traits of S for lanes: one vector operation per number
+template <class S, std::size_t W>
+struct Eigen::NumTraits<kane::lanes<S, W>> : Eigen::NumTraits<S> {
+  using Real = kane::lanes<S, W>;
+  using NonInteger = kane::lanes<S, W>;
+  using Nested = kane::lanes<S, W>;
+  using Literal = kane::lanes<S, W>;
+  enum {
+    IsComplex = 0,
+    IsInteger = 0,
+    IsSigned = 1,
+    RequireInitialization = 0,
+    ReadCost = 1,
+    AddCost = 1,
+    MulCost = 1
+  };
+  static inline Real epsilon() { return Eigen::NumTraits<S>::epsilon(); }
+  static inline Real dummy_precision() { return Eigen::NumTraits<S>::dummy_precision(); }
+  static inline Real highest() { return Eigen::NumTraits<S>::highest(); }
+  static inline Real lowest() { return Eigen::NumTraits<S>::lowest(); }
+  static inline int digits10() { return Eigen::NumTraits<S>::digits10(); }
+};
+
+// Eigen's fixed-size storage of lanes: their own alignment (a vector's), above the alignment Eigen
+// would request for the array's bytes (which Clang refuses to lower).
+template <class S, std::size_t W, int Size>
+requires(Size != Eigen::Dynamic) struct Eigen::internal::compute_default_alignment<kane::lanes<S, W>, Size> {
+  enum { value = 0 };
+};

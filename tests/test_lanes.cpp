@@ -1,0 +1,138 @@
+// kane::lanes as the scalar of kane::motion: W states in one call, lane by lane equal to the scalar
+// path, with every lane's own status (good, singular and non-finite states mixed in one batch),
+// and a batch that is not a multiple of W.
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <kane/kane.hpp>
+#include <kane/scalars/lanes.hpp>
+
+#include "../examples/models/gyrostat.hpp"
+#include "../examples/models/heavy_top.hpp"
+#include "../examples/models/pendulum_absolute.hpp"
+
+namespace {
+
+// x' of count states by the scalar motion Scalar and by lanes of W (Lanes), compared lane by lane:
+// equal statuses, NaN where not ok, |lane - scalar| <= tol (1 + |scalar|) where ok.
+template <class Scalar, class Lanes, class S, std::size_t N>
+void compare(const std::vector<std::array<S, N>>& xs, S tol) {
+  using L = typename Lanes::scalar;
+  constexpr std::size_t W = L::width;
+  Scalar one{typename Scalar::state_type{}};
+  Lanes many{typename Lanes::state_type{}};
+  for (std::size_t first = 0; first < xs.size(); first += W) {
+    const std::size_t count = xs.size() - first < W ? xs.size() - first : W;
+    const auto x = kane::to_lanes<W>(&xs[first], count);
+    std::array<L, N> xd;
+    many(x, xd, L(S(0)));
+    std::vector<std::array<S, N>> out(W);
+    kane::from_lanes(xd, out.data(), count);
+    const auto statuses = many.status();
+    for (std::size_t l = 0; l < count; ++l) {
+      std::array<S, N> xd1;
+      one(xs[first + l], xd1, S(0));
+      INFO("state " << first + l << ": scalar " << kane::to_string(one.status()) << ", lane "
+                    << kane::to_string(statuses[l]));
+      CHECK(statuses[l] == one.status());
+      for (std::size_t k = 0; k < N; ++k) {
+        if (one.status() == kane::solve_status::ok)
+          CHECK(std::abs(out[l][k] - xd1[k]) <= tol * (1 + std::abs(xd1[k])));
+        else
+          CHECK(std::isnan(out[l][k]));
+      }
+    }
+    for (std::size_t l = count; l < W; ++l)  // the padding repeats the batch's first state
+      CHECK(statuses[l] == statuses[0]);
+  }
+}
+
+// count random states of N numbers in [-2, 2].
+template <class S, std::size_t N>
+std::vector<std::array<S, N>> states(std::size_t count, unsigned seed) {
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> d(-2, 2);
+  std::vector<std::array<S, N>> xs(count);
+  for (auto& x : xs)
+    for (auto& v : x) v = S(d(g));
+  return xs;
+}
+
+template <class S, std::size_t W>
+using lanes_motion_top =
+    kane::motion<models::heavy_top::system, models::heavy_top::speeds, kane::lanes<S, W>>;
+template <class S>
+using scalar_motion_top = kane::motion<models::heavy_top::system, models::heavy_top::speeds, S>;
+
+}  // namespace
+
+TEST_CASE("lanes: arithmetic, comparisons and functions act lane by lane", "[lanes]") {
+  using L = kane::lanes<double, 8>;
+  L a, b;
+  for (std::size_t i = 0; i < 8; ++i) a.set(i, 0.3 * double(i) - 1.1), b.set(i, 1.7 - 0.2 * double(i));
+  const L s = a * b + a / b - b, c = sin(a), k = cos(b), r = sqrt(abs(a)), t = atan2(a, b);
+  const auto less = a < b;
+  const L m = select(less, a, b);
+  for (std::size_t i = 0; i < 8; ++i) {
+    const double x = a[i], y = b[i];
+    CHECK(s[i] == x * y + x / y - y);
+    CHECK(c[i] == Approx(std::sin(x)).epsilon(1e-15));
+    CHECK(k[i] == Approx(std::cos(y)).epsilon(1e-15));
+    CHECK(r[i] == std::sqrt(std::abs(x)));
+    CHECK(t[i] == Approx(std::atan2(x, y)).epsilon(1e-15));
+    CHECK(less[i] == (x < y));
+    CHECK(m[i] == (x < y ? x : y));
+  }
+  CHECK(any_of(less));
+  CHECK_FALSE(all_of(less));
+  CHECK(all_of(a == a));
+}
+
+TEST_CASE("lanes: to_lanes pads a short batch with its first state, from_lanes writes count states",
+          "[lanes]") {
+  std::vector<std::array<double, 3>> xs{{1, 2, 3}, {4, 5, 6}, {7, 8, 9}};
+  const auto x = kane::to_lanes<4>(xs.data(), 3);
+  CHECK(x[0][0] == 1);
+  CHECK(x[2][1] == 6);
+  CHECK(x[1][3] == 2);  // lane 3: the first state again
+  std::array<std::array<double, 3>, 4> back{};
+  kane::from_lanes(x, back.data(), 3);
+  CHECK(back[2] == xs[2]);
+  CHECK(back[3] == std::array<double, 3>{0, 0, 0});  // not written
+}
+
+TEST_CASE("lanes: the heavy top's motion, lane by lane as the scalar path, statuses per lane", "[lanes]") {
+  auto xs = states<double, 6>(21, 7);  // 21 = 2 * 8 + 5: the last batch short
+  xs[2][1] = 0;                        // q2 = 0: the body rates do not define q' (singular)
+  xs[5][4] = std::numeric_limits<double>::quiet_NaN();
+  xs[9][0] = std::numeric_limits<double>::infinity();
+  xs[17][1] = 0;  // a singular lane in the short batch
+  compare<scalar_motion_top<double>, lanes_motion_top<double, 8>>(xs, 1e-13);
+  compare<scalar_motion_top<double>, lanes_motion_top<double, 4>>(xs, 1e-13);
+  auto fs = states<float, 6>(21, 8);
+  fs[3][1] = 0;
+  fs[12][5] = std::numeric_limits<float>::quiet_NaN();
+  compare<scalar_motion_top<float>, lanes_motion_top<float, 16>>(fs, 1e-5f);
+}
+
+TEST_CASE("lanes: the spacecraft on Euler parameters, lane by lane as the scalar path", "[lanes]") {
+  namespace m = models::gyrostat;
+  auto xs = states<double, 14>(19, 11);
+  xs[4][0] = xs[4][1] = xs[4][2] = xs[4][3] = 0;  // no attitude: the parameters' norm is 0
+  xs[7][10] = std::numeric_limits<double>::quiet_NaN();
+  compare<kane::motion<m::system, m::speeds>, kane::motion<m::system, m::speeds, kane::lanes<double, 8>>>(
+      xs, 1e-13);
+}
+
+TEST_CASE("lanes: the double pendulum on absolute angles (u = q'), lane by lane as the scalar path",
+          "[lanes]") {
+  auto xs = states<double, 4>(13, 5);
+  xs[6][3] = std::numeric_limits<double>::infinity();
+  using system = models::pendulum_absolute::system;
+  compare<kane::motion<system>, kane::motion<system, void, kane::lanes<double, 8>>>(xs, 1e-13);
+}
