@@ -47,7 +47,8 @@ done >"$work/runs.csv"
 
 # One table per benchmark group (the first part of a name, group/problem/implementation):
 # per preset the median [min-max] CPU ns of each implementation, kane / hand, kane / SymPy's
-# C, kane / SymPy's C checked as kane is (../common/checked.hpp) and KDL / kane of the medians.
+# C, kane / SymPy's C checked as kane is (../common/checked.hpp) and KDL / kane of the medians; with
+# lanes (kane_x4, kane_x8) kane / kane_x4, kane / kane_x8 and kane_x8 / SymPy's C.
 awk -F, -v reps=$reps -v dir="$work" '
   BEGIN { rank["hand"] = 1; rank["hand_checked"] = 2; rank["sympy"] = 3; rank["sympy_checked"] = 4
           rank["kdl"] = 5; rank["kane"] = 6 }
@@ -78,6 +79,9 @@ awk -F, -v reps=$reps -v dir="$work" '
       if ((G, "sympy") in has) refs = refs ", kane/SymPy"
       if ((G, "sympy_checked") in has) refs = refs ", kane/checked SymPy"
       if ((G, "kdl") in has) refs = refs ", KDL/kane"
+      if ((G, "kane_x4") in has) refs = refs ", kane/kane_x4"
+      if ((G, "kane_x8") in has) refs = refs ", kane/kane_x8"
+      if ((G, "kane_x8") in has && (G, "sympy") in has) refs = refs ", kane_x8/SymPy"
       head = "| " G
       for (j = 1; j <= 2; ++j) head = head " | " pn[j] ": " names (refs == "" ? "" : " | " substr(refs, 3))
       print head " |" > out
@@ -96,6 +100,9 @@ awk -F, -v reps=$reps -v dir="$work" '
           if ((G, "sympy") in has) r = r ", " ratio(m["kane"], m["sympy"])
           if ((G, "sympy_checked") in has) r = r ", " ratio(m["kane"], m["sympy_checked"])
           if ((G, "kdl") in has) r = r ", " ratio(m["kdl"], m["kane"])
+          if ((G, "kane_x4") in has) r = r ", " ratio(m["kane"], m["kane_x4"])
+          if ((G, "kane_x8") in has) r = r ", " ratio(m["kane"], m["kane_x8"])
+          if ((G, "kane_x8") in has && (G, "sympy") in has) r = r ", " ratio(m["kane_x8"], m["sympy"])
           row = row " | " cells (r == "" ? "" : " | " substr(r, 3))
         }
         print row " |" > out

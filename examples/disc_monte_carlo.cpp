@@ -1,10 +1,13 @@
 // A Monte Carlo of the rolling disc (models/disc.hpp): random initial lean, lean rate and rolling
 // speed, each start integrated 3 s by RK4 (dt = 2 ms) through kane::constrained_motion. A start stays
 // upright if |lean| stays below 1 rad. The fraction that stays upright, by speed, is printed and, with a
-// path, plotted as SVG. The starts are split across OpenMP threads (g++ -fopenmp), one right-hand side per
-// thread; without OpenMP they run in one thread with the same results. A progress line goes to stderr.
+// path ("-": none), plotted as SVG. W starts go through one call as kane::lanes<double, W> (by default as
+// wide as the target's vector registers; 1 is the scalar path), each lane with its own stop: a disc that
+// falls stops counting, the others roll on.
+// The batches are split across OpenMP threads (g++ -fopenmp), one right-hand side per thread; without
+// OpenMP they run in one thread with the same results. A progress line goes to stderr.
 //
-//   example_disc_monte_carlo [starts] [plot.svg]
+//   example_disc_monte_carlo [starts] [plot.svg] [W: 1, 4 or 8]
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -13,31 +16,101 @@
 #include <cstdio>
 #include <cstdlib>
 #include <random>
+#include <string_view>
 #include <vector>
+
+#include <kane/scalars/lanes.hpp>
 
 #include "models/disc.hpp"
 #include "rk4.hpp"
 
 namespace d = models::disc;
-using rhs = kane::constrained_motion<d::system, d::rolling>;
-using vector = std::array<double, rhs::size>;  // yaw, lean, spin angle, x, y, u1, u2, u3
+template <class S>
+using rhs = kane::constrained_motion<d::system, d::rolling, S>;  // x: yaw, lean, spin, x, y, u1, u2, u3
 
 constexpr double radius = 0.3, top_speed = 3.6;  // m, m/s
+// lanes as wide as the target's vector registers (built without -mavx: one state a call)
+#if defined(__AVX512F__)
+constexpr long native_width = 8;
+#elif defined(__AVX__)
+constexpr long native_width = 4;
+#else
+constexpr long native_width = 1;
+#endif
 constexpr int bins = 12;
 
 struct start {
   double lean, lean_rate, speed;
 };
 
-// The disc from s for 3 s: true if it stays upright and every step's status is ok.
-bool stays_upright(rhs& f, const start& s) {
-  vector x = {0.0, s.lean, 0.0, 0.0, 0.0, s.lean_rate, -s.speed / radius, 0.0};
+// Lane l of a number and of a status (W = 1: the number and the status themselves).
+double lane(double x, std::size_t) { return x; }
+kane::solve_status lane(kane::solve_status s, std::size_t) { return s; }
+template <class T>
+auto lane(const T& x, std::size_t l) {
+  return x[l];
+}
+
+// The discs from s[0..count) for 3 s, W at once: upright[i] true if disc i stays upright and every
+// step's status is ok. Lanes past count repeat s[0].
+template <class S>
+void stay_upright(rhs<S>& f, const start* s, std::size_t count, char* upright) {
+  constexpr std::size_t W = kane::lane_traits<S>::width;
+  const auto of = [&](auto g) {
+    if constexpr (W == 1)
+      return S(g(0));
+    else
+      return S::generate([&](std::size_t l) { return g(l < count ? l : 0); });
+  };
+  std::array<S, rhs<S>::size> x = {S(0.0),
+                                   of([&](std::size_t l) { return s[l].lean; }),
+                                   S(0.0),
+                                   S(0.0),
+                                   S(0.0),
+                                   of([&](std::size_t l) { return s[l].lean_rate; }),
+                                   of([&](std::size_t l) { return -s[l].speed / radius; }),
+                                   S(0.0)};
+  std::array<bool, W> up;
+  up.fill(true);
   const double dt = 2e-3;
   for (int step = 0; step < 1500; ++step) {
     rk4_step(f, x, step * dt, dt);
-    if (f.status() != kane::solve_status::ok || !(std::abs(x[1]) < 1.0)) return false;
+    bool any = false;
+    for (std::size_t l = 0; l < W; ++l) {
+      up[l] = up[l] && lane(f.status(), l) == kane::solve_status::ok && std::abs(lane(x[1], l)) < 1.0;
+      any = any || (up[l] && l < count);
+    }
+    if (!any) break;  // every disc of the batch has fallen
   }
-  return true;
+  for (std::size_t l = 0; l < count; ++l) upright[l] = up[l];
+}
+
+// Every start, W at a time, split across threads; the run time in seconds.
+template <class S>
+double run(const std::vector<start>& starts, std::vector<char>& upright) {
+  constexpr std::size_t W = kane::lane_traits<S>::width;
+  const long n = long(starts.size()), batches = (n + long(W) - 1) / long(W);
+  kane::state_of<d::system, d::speeds5, S> s;
+  s.p = {S(radius), S(1.2), S(9.81)};  // r, m, g
+  std::atomic<long> done{0};
+  const auto t0 = std::chrono::steady_clock::now();
+#if defined(_OPENMP)
+#pragma omp parallel
+#endif
+  {
+    rhs<S> f(s);  // one right-hand side per thread
+#if defined(_OPENMP)
+#pragma omp for schedule(dynamic, 4)
+#endif
+    for (long b = 0; b < batches; ++b) {
+      const std::size_t first = std::size_t(b) * W, count = std::min(W, starts.size() - first);
+      stay_upright(f, &starts[first], count, &upright[first]);
+      const long k = ++done;
+      if (k % (batches / 20 > 0 ? batches / 20 : 1) == 0)
+        std::fprintf(stderr, "\r%3ld%% of %ld starts", 100 * k / batches, n);
+    }
+  }
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 void plot(const char* path, const std::array<int, bins>& up, const std::array<int, bins>& all) {
@@ -69,31 +142,17 @@ void plot(const char* path, const std::array<int, bins>& up, const std::array<in
 
 int main(int argc, char** argv) {
   const long n = argc > 1 ? std::atol(argv[1]) : 1000;
+  const long width = argc > 3 ? std::atol(argv[3]) : native_width;
   std::vector<start> starts(std::size_t(n > 0 ? n : 0));
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> lean(-0.2, 0.2), rate(-0.5, 0.5), speed(0.0, top_speed);
   for (auto& s : starts) s = {lean(rng), rate(rng), speed(rng)};
   std::vector<char> upright(starts.size());
-  kane::state_of<d::system, d::speeds5> s;
-  s.p = {radius, 1.2, 9.81};  // r, m, g
-  std::atomic<long> done{0};
-  const auto t0 = std::chrono::steady_clock::now();
-#if defined(_OPENMP)
-#pragma omp parallel
-#endif
-  {
-    rhs f(s);  // one right-hand side per thread
-#if defined(_OPENMP)
-#pragma omp for schedule(dynamic, 16)
-#endif
-    for (long i = 0; i < n; ++i) {
-      upright[std::size_t(i)] = stays_upright(f, starts[std::size_t(i)]);
-      const long k = ++done;
-      if (k % (n / 20 > 0 ? n / 20 : 1) == 0) std::fprintf(stderr, "\r%3ld%% of %ld starts", 100 * k / n, n);
-    }
-  }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::fprintf(stderr, "\n%ld starts in %.2f s\n", n, seconds);
+  const double seconds = width == 1   ? run<double>(starts, upright)
+                         : width == 4 ? run<kane::lanes<double, 4>>(starts, upright)
+                                      : run<kane::lanes<double, 8>>(starts, upright);
+  std::fprintf(stderr, "\n%ld starts in %.2f s, %ld a call\n", n, seconds,
+               width == 1 || width == 4 ? width : 8);
   std::array<int, bins> up{}, all{};
   for (std::size_t i = 0; i < starts.size(); ++i) {
     const int b = std::min(bins - 1, int(starts[i].speed / top_speed * bins));
@@ -104,7 +163,7 @@ int main(int argc, char** argv) {
     std::printf("%4.1f-%3.1f  %6d  %6.3f\n", b * top_speed / bins, (b + 1) * top_speed / bins,
                 all[std::size_t(b)],
                 all[std::size_t(b)] ? double(up[std::size_t(b)]) / all[std::size_t(b)] : 0.0);
-  if (argc > 2) plot(argv[2], up, all);
+  if (argc > 2 && std::string_view(argv[2]) != "-") plot(argv[2], up, all);
   // slow discs fall and fast ones roll on: the fraction rises from the first bin to the last
   const bool pass =
       n < bins * 10 || (double(up[0]) / all[0] < 0.5 && double(up[bins - 1]) / all[bins - 1] > 0.9);

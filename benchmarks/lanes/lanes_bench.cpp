@@ -8,8 +8,17 @@
 #include <random>
 #include <vector>
 
+#include "../../examples/models/bicycle.hpp"
 #include "../common/harness.hpp"
 #include "lanes_models.hpp"
+
+const disc_dynamics::params disc_dynamics::p = {0.3, 1.2, 9.81};
+const std::array<double, 27> bicycle::p = [] {
+  std::array<double, 27> out{};
+  const auto s = models::bicycle::benchmark_parameters();
+  for (std::size_t i = 0; i < 27; ++i) out[i] = s.p[i];
+  return out;
+}();
 
 namespace {
 template <int N>
@@ -44,6 +53,42 @@ template <class In, class Out>
 In input_of(void (*)(const In&, Out&));
 template <class In, class Out>
 Out output_of(void (*)(const In*, Out*));
+const auto discs = [] {  // as ../disc_dynamics/disc_dynamics_bench.cpp
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> d(-3, 3), lean(-1.2, 1.2);
+  std::vector<disc_dynamics::input> in(lanes_bench::batch);
+  for (auto& s : in) {
+    for (double& x : s.x) x = d(rng);
+    s.x[1] = lean(rng);
+  }
+  return in;
+}();
+const auto bicycles = [] {  // as ../bicycle/bicycle_bench.cpp: the pitch closes the constraint
+  namespace b = models::bicycle;
+  std::mt19937 rng(2007);
+  std::uniform_real_distribution<double> xy(-2, 2), yaw(-M_PI, M_PI), angle(-0.5, 0.5), rate(-1, 1), v(2, 8);
+  std::vector<bicycle::input> in(lanes_bench::batch);
+  for (auto& x : in) {
+    b::dynamics_state s = b::benchmark_parameters();
+    s.q = {xy(rng), xy(rng), yaw(rng), angle(rng), 0.0, angle(rng)};
+    b::dynamics_evaluator ev;
+    if (kane::solve_configuration<b::pitch>(ev, s).status != kane::solve_status::ok)
+      bench::require_agreement(1);
+    for (std::size_t i = 0; i < 6; ++i) x.x[i] = s.q[i];
+    x.x[6] = rate(rng), x.x[7] = rate(rng), x.x[8] = v(rng) / s.p[1];
+  }
+  return in;
+}();
+const auto chains = [] {  // as ../chain_dynamics/chain_dynamics_bench.cpp
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> d(-3, 3);
+  std::vector<chain_dynamics::input> in(lanes_bench::batch);
+  for (auto& x : in)
+    for (std::size_t i = 0; i < chain_dynamics::max_n; ++i)
+      x.q[i] = d(rng), x.qd[i] = d(rng), x.qdd[i] = d(rng);
+  return in;
+}();
+
 // One state's function over the batch
 template <auto F>
 void each(const decltype(input_of(F))* in, decltype(bench::output_of(F))* out) {
@@ -83,6 +128,24 @@ void agree(const std::vector<small::input<N>>& states,
       bench::require_agreement(std::abs(a - b) <= 1e-4 * (1 + std::abs(b)) ? 0 : 1);
     }
 }
+// Batches of N-entry x' against the batch ref: doubles to tol times the largest |x'| of a state (at
+// least 1), floats to 1e-3.
+template <int N, class In, class Out>
+void outputs_agree(const std::vector<In>& states, void (*ref)(const In*, Out*),
+                   std::initializer_list<void (*)(const In*, Out*)> doubles, void (*floats)(const In*, Out*),
+                   double tol) {
+  std::array<Out, lanes_bench::batch> h{}, o{};
+  ref(states.data(), h.data());
+  const auto check = [&](double t) {
+    for (std::size_t i = 0; i < h.size(); ++i) {
+      double scale = 1;
+      for (int k = 0; k < N; ++k) scale = std::max(scale, std::abs(h[i].xd[k]));
+      bench::require_agreement(bench::max_diff(o[i].xd, h[i].xd, N) <= t * scale ? 0 : 1);
+    }
+  };
+  for (auto f : doubles) f(states.data(), o.data()), check(tol);
+  floats(states.data(), o.data()), check(1e-3);
+}
 void agree() {
   using namespace lanes_bench;
   agree<6>(tops, small::top_hand, {top_kane, top_kane_x4, top_kane_x8}, top_kane_float_x16);
@@ -103,6 +166,18 @@ void agree() {
     for (int k = 0; k < 6; ++k)
       bench::require_agreement(std::abs(o[i].qdd[k] - h[i].qdd[k]) <= 1e-3 * (1 + std::abs(h[i].qdd[k])) ? 0
                                                                                                          : 1);
+
+  outputs_agree<8>(discs, each<disc_dynamics::hand_rates>, {disc_kane, disc_kane_x4, disc_kane_x8},
+                   disc_kane_float_x16, 1e-12);
+  outputs_agree<9>(bicycles, each<bicycle::sympy_rates>, {bicycle_kane, bicycle_kane_x4, bicycle_kane_x8},
+                   bicycle_kane_float_x16, 1e-10);
+  std::array<chain_dynamics::output, batch> ch{}, co{};
+  each<chain_dynamics::hand_forward<24>>(chains.data(), ch.data());
+  for (auto f : {chain24_forward_kane, chain24_forward_kane_x4, chain24_forward_kane_x8}) {
+    f(chains.data(), co.data());
+    for (std::size_t i = 0; i < ch.size(); ++i)
+      bench::require_agreement(bench::max_diff(co[i].qdd, ch[i].qdd, 24) * 1e-3);
+  }
 }
 }  // namespace
 
@@ -123,5 +198,23 @@ BENCHMARK(run<lanes_bench::arm6_forward_kane, arms>)->Name("lanes/arm6_forward/k
 BENCHMARK(run<lanes_bench::arm6_forward_kane_x4, arms>)->Name("lanes/arm6_forward/kane_x4");
 BENCHMARK(run<lanes_bench::arm6_forward_kane_x8, arms>)->Name("lanes/arm6_forward/kane_x8");
 BENCHMARK(run<lanes_bench::arm6_forward_kane_float_x16, arms>)->Name("lanes/arm6_forward/kane_float_x16");
+BENCHMARK(run<each<chain_dynamics::hand_forward<24>>, chains>)->Name("lanes/chain24_forward/hand");
+BENCHMARK(run<lanes_bench::chain24_forward_kane, chains>)->Name("lanes/chain24_forward/kane");
+BENCHMARK(run<lanes_bench::chain24_forward_kane_x4, chains>)->Name("lanes/chain24_forward/kane_x4");
+BENCHMARK(run<lanes_bench::chain24_forward_kane_x8, chains>)->Name("lanes/chain24_forward/kane_x8");
+BENCHMARK(run<lanes_bench::chain24_forward_kane_float_x16, chains>)
+    ->Name("lanes/chain24_forward/kane_float_x16");
+BENCHMARK(run<each<disc_dynamics::hand_rates>, discs>)->Name("lanes/disc/hand");
+BENCHMARK(run<each<disc_dynamics::sympy_rates>, discs>)->Name("lanes/disc/sympy");
+BENCHMARK(run<each<disc_dynamics::sympy_rates_checked>, discs>)->Name("lanes/disc/sympy_checked");
+BENCHMARK(run<lanes_bench::disc_kane, discs>)->Name("lanes/disc/kane");
+BENCHMARK(run<lanes_bench::disc_kane_x4, discs>)->Name("lanes/disc/kane_x4");
+BENCHMARK(run<lanes_bench::disc_kane_x8, discs>)->Name("lanes/disc/kane_x8");
+BENCHMARK(run<lanes_bench::disc_kane_float_x16, discs>)->Name("lanes/disc/kane_float_x16");
+BENCHMARK(run<each<bicycle::sympy_rates>, bicycles>)->Name("lanes/bicycle/sympy");
+BENCHMARK(run<lanes_bench::bicycle_kane, bicycles>)->Name("lanes/bicycle/kane");
+BENCHMARK(run<lanes_bench::bicycle_kane_x4, bicycles>)->Name("lanes/bicycle/kane_x4");
+BENCHMARK(run<lanes_bench::bicycle_kane_x8, bicycles>)->Name("lanes/bicycle/kane_x8");
+BENCHMARK(run<lanes_bench::bicycle_kane_float_x16, bicycles>)->Name("lanes/bicycle/kane_float_x16");
 
 int main(int argc, char** argv) { return bench::main(argc, argv, agree); }

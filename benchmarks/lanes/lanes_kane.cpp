@@ -4,9 +4,12 @@
 #include <kane/scalars/lanes.hpp>
 
 #include "../../examples/models/arm6_dynamics.hpp"
+#include "../../examples/models/bicycle.hpp"
+#include "../../examples/models/disc.hpp"
 #include "../../examples/models/gyrostat.hpp"
 #include "../../examples/models/heavy_top.hpp"
 #include "../../examples/models/pendulum_absolute.hpp"
+#include "../chain_dynamics/chain_model.hpp"
 #include "lanes_models.hpp"
 
 namespace {
@@ -17,13 +20,12 @@ using spacecraft = kane::motion<models::gyrostat::system, models::gyrostat::spee
 template <class S>
 using pendulum_absolute = kane::motion<models::pendulum_absolute::system, void, S>;
 
-// out[i] = x' at in[i], W states a call
-template <class Motion, int N>
-void batches(const small::input<N>* in, small::output<N>* out) {
+// out[i] = x' at in[i] by motion, W states a call (In: x; Out: xd, and status where it has one)
+template <class Motion, class In, class Out>
+void batches(Motion& motion, const In* in, Out* out) {
   using L = typename Motion::scalar;
   using S = typename kane::real_type<L>::type;
-  constexpr int W = int(kane::lane_traits<L>::width);
-  static Motion motion{typename Motion::state_type{}};
+  constexpr int W = int(kane::lane_traits<L>::width), N = int(Motion::size);
   for (int first = 0; first < lanes_bench::batch; first += W) {
     std::array<L, N> x, xd;
     if constexpr (W == 1)
@@ -34,18 +36,88 @@ void batches(const small::input<N>* in, small::output<N>* out) {
     motion(x, xd, L(S(0)));
     const auto status = motion.status();
     for (int l = 0; l < W; ++l) {
-      small::output<N>& o = out[first + l];
+      Out& o = out[first + l];
       if constexpr (W == 1) {
         for (int k = 0; k < N; ++k) o.xd[k] = xd[k];
-        o.status = status == kane::solve_status::ok ? 0 : 1;
+        if constexpr (requires { o.status; }) o.status = status == kane::solve_status::ok ? 0 : 1;
       } else {
         for (int k = 0; k < N; ++k) o.xd[k] = double(xd[k][l]);
-        o.status = status[l] == kane::solve_status::ok ? 0 : 1;
+        if constexpr (requires { o.status; }) o.status = status[l] == kane::solve_status::ok ? 0 : 1;
       }
     }
   }
 }
+// The right-hand side F over S, built once with the parameters p (none: the default state).
+template <class F>
+F& instance() {
+  static F f{typename F::state_type{}};
+  return f;
+}
+template <class F, std::size_t NP>
+F& instance(const std::array<double, NP>& p) {
+  static F f = [&] {
+    typename F::state_type s{};
+    for (std::size_t i = 0; i < NP; ++i)
+      s.p[i] = typename F::scalar(typename kane::real_type<typename F::scalar>::type(p[i]));
+    return F(s);
+  }();
+  return f;
+}
+template <class Motion, class In, class Out>
+void batches(const In* in, Out* out) {
+  batches(instance<Motion>(), in, out);
+}
 
+template <class S>
+using disc = kane::constrained_motion<models::disc::system, models::disc::rolling, S>;
+template <class S>
+using bicycle_evaluator =
+    kane::evaluator<kane::state<S, 6, 8, 27>, kane::frames<models::bicycle::Wr, models::bicycle::Wf>,
+                    kane::level::acceleration, models::bicycle::speeds>;
+template <class S>
+using bike =
+    kane::constrained_motion<models::bicycle::system, models::bicycle::rolling, bicycle_evaluator<S>>;
+template <class S>
+void disc_batches(const disc_dynamics::input* in, disc_dynamics::output* out) {
+  batches(
+      instance<disc<S>>(std::array<double, 3>{disc_dynamics::p.r, disc_dynamics::p.m, disc_dynamics::p.g}),
+      in, out);
+}
+template <class S>
+void bicycle_batches(const bicycle::input* in, bicycle::rates* out) {
+  batches(instance<bike<S>>(bicycle::p), in, out);
+}
+
+// q'' of the chain of 24 links at q and u = q' (../chain_dynamics/chain_model.hpp), W states a call
+template <class L>
+void chain24_batches(const chain_dynamics::input* in, chain_dynamics::output* out) {
+  using S = typename kane::real_type<L>::type;
+  constexpr int W = int(kane::lane_traits<L>::width);
+  constexpr std::size_t n = 24;
+  using state = kane::state<L, n>;
+  using evaluator =
+      kane::evaluator<state, kane::frames<chain_model::B<n>>, kane::level::pose, kane::qdot_speeds<n>>;
+  for (int first = 0; first < lanes_bench::batch; first += W) {
+    state s;
+    for (std::size_t k = 0; k < n; ++k) {
+      if constexpr (W == 1)
+        s.q[k] = in[first].q[k], s.u[k] = in[first].qd[k];
+      else
+        s.q[k] = L::generate([&](std::size_t l) { return S(in[first + int(l)].q[k]); }),
+        s.u[k] = L::generate([&](std::size_t l) { return S(in[first + int(l)].qd[k]); });
+    }
+    evaluator ev;
+    ev.update(s);
+    const auto ud = kane::forward_dynamics<chain_model::system<n>>(ev).ud;
+    for (int l = 0; l < W; ++l)
+      for (int k = 0; k < int(n); ++k) {
+        if constexpr (W == 1)
+          out[first].qdd[k] = ud(k);
+        else
+          out[first + l].qdd[k] = double(ud(k)[std::size_t(l)]);
+      }
+  }
+}
 // q'' = u' of the arm at q and u = q', W states a call, as dynamics6_kane.cpp writes it
 template <class L>
 void arm6_batches(const dynamics6::input* in, dynamics6::output* out) {
@@ -122,4 +194,12 @@ void arm6_forward_kane_x8(const dynamics6::input* in, dynamics6::output* out) {
 void arm6_forward_kane_float_x16(const dynamics6::input* in, dynamics6::output* out) {
   arm6_batches<kane::lanes<float, 16>>(in, out);
 }
+#define KANE_LANES_KANE(name, In, Out, call)                                             \
+  void name##_kane(const In* in, Out* out) { call<double>(in, out); }                    \
+  void name##_kane_x4(const In* in, Out* out) { call<kane::lanes<double, 4>>(in, out); } \
+  void name##_kane_x8(const In* in, Out* out) { call<kane::lanes<double, 8>>(in, out); } \
+  void name##_kane_float_x16(const In* in, Out* out) { call<kane::lanes<float, 16>>(in, out); }
+KANE_LANES_KANE(disc, disc_dynamics::input, disc_dynamics::output, disc_batches)
+KANE_LANES_KANE(bicycle, bicycle::input, bicycle::rates, bicycle_batches)
+KANE_LANES_KANE(chain24_forward, chain_dynamics::input, chain_dynamics::output, chain24_batches)
 }  // namespace lanes_bench

@@ -1,10 +1,14 @@
 // Many states per call: the right-hand sides of the small models (../small/small_models.hpp) over
 // a batch of 64 states, by kane's scalar path (one state a call), by lanes of 4 and 8 doubles and
 // 16 floats (kane/scalars/lanes.hpp; each batch loaded into lanes and stored back), and by the
-// hand-written and SymPy functions called state by state; the same for the 6-revolute arm's forward
-// dynamics. A row's time is that of 64 states.
+// hand-written and SymPy functions called state by state; the same for the 6-revolute arm's and the
+// 24-link chain's forward dynamics and the rolling disc's and the bicycle's u'. A row's time is that
+// of 64 states.
 #pragma once
 
+#include "../bicycle/bicycle.hpp"
+#include "../chain_dynamics/chain_dynamics.hpp"
+#include "../disc_dynamics/disc_dynamics.hpp"
 #include "../dynamics6/dynamics6.hpp"
 #include "../small/small_models.hpp"
 
@@ -31,4 +35,17 @@ void arm6_forward_kane(const dynamics6::input*, dynamics6::output*);
 void arm6_forward_kane_x4(const dynamics6::input*, dynamics6::output*);
 void arm6_forward_kane_x8(const dynamics6::input*, dynamics6::output*);
 void arm6_forward_kane_float_x16(const dynamics6::input*, dynamics6::output*);
+// the rolling disc's and the bicycle's u' (constrained_motion), the 24-link chain's forward dynamics
+void disc_kane(const disc_dynamics::input*, disc_dynamics::output*);
+void disc_kane_x4(const disc_dynamics::input*, disc_dynamics::output*);
+void disc_kane_x8(const disc_dynamics::input*, disc_dynamics::output*);
+void disc_kane_float_x16(const disc_dynamics::input*, disc_dynamics::output*);
+void bicycle_kane(const bicycle::input*, bicycle::rates*);
+void bicycle_kane_x4(const bicycle::input*, bicycle::rates*);
+void bicycle_kane_x8(const bicycle::input*, bicycle::rates*);
+void bicycle_kane_float_x16(const bicycle::input*, bicycle::rates*);
+void chain24_forward_kane(const chain_dynamics::input*, chain_dynamics::output*);
+void chain24_forward_kane_x4(const chain_dynamics::input*, chain_dynamics::output*);
+void chain24_forward_kane_x8(const chain_dynamics::input*, chain_dynamics::output*);
+void chain24_forward_kane_float_x16(const chain_dynamics::input*, chain_dynamics::output*);
 }  // namespace lanes_bench

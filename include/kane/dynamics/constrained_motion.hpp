@@ -4,6 +4,7 @@
 //
 //   kane::constrained_motion<System, NH> rhs(s);  // s: kane::state_of<System, NH::speed_set>
 //   kane::constrained_motion<System, NH, Evaluator> rhs2(s2);  // an evaluator of one's own
+//   kane::constrained_motion<System, NH, S> rhs3(s3);          // the own one over S (kane::lanes)
 //   rhs(x, dxdt, t);                           // x: nq + p numbers
 //   rhs.project<H>(x);                         // closes holonomic constraints H between steps
 #pragma once
@@ -51,11 +52,11 @@ using constraint_terms = decltype(listed(NH::equations));
 // A nonholonomic system (constraints NH): x = (q, u_ind), p independent speeds;
 // at each call u_dep = A u_ind + B, then u_ind' from Kane's reduced equations. Ev: the system's
 // own evaluator with NH's speed set and the frames of its constraints, or one's own.
-template <System Sys, Nonholonomic NH,
-          class Ev = detail::evaluator_or_own_t<Sys, typename NH::speed_set, level::acceleration,
-                                                detail::constraint_terms<NH>>>
+template <System Sys, Nonholonomic NH, class EvOrScalar = double,
+          class Ev =
+              detail::own_evaluator_t<Sys, typename NH::speed_set, EvOrScalar, detail::constraint_terms<NH>>>
 class constrained_motion
-    : public detail::rates_function<constrained_motion<Sys, NH, Ev>, Ev, Ev::state_type::nq + NH::p> {
+    : public detail::rates_function<constrained_motion<Sys, NH, EvOrScalar>, Ev, Ev::state_type::nq + NH::p> {
   using base = detail::rates_function<constrained_motion, Ev, Ev::state_type::nq + NH::p>;
   friend base;
   using base::s_;

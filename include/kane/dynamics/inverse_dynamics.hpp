@@ -47,7 +47,7 @@ Out inverse_at(const Ev& ev) {
     else
       tau = -e.f;
   }
-  const solve_status status = finished(tau, ev.status());
+  const auto status = finished(tau, ev.status());
   return {tau, status};
 }
 

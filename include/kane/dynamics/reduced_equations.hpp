@@ -138,8 +138,8 @@ Eigen::Matrix<typename Ev::scalar, int(NH::m), 1> constraint_rates_at_rest(const
 // b_dep of u_dep' = A u_ind' + b_dep: -C_dep^-1 (C' u + c0'), with the factors of C_dep that
 // solve_constraints found.
 template <class NH, rates Rates, class Ev, class Sol>
-solve_status dependent_rates_at_rest(const Ev& ev, const Sol& sol,
-                                     std::array<typename Ev::scalar, NH::m>& b_dep) {
+status_of<typename Ev::scalar> dependent_rates_at_rest(const Ev& ev, const Sol& sol,
+                                                       std::array<typename Ev::scalar, NH::m>& b_dep) {
   using S = typename Ev::scalar;
   constexpr std::size_t m = NH::m;
   static_assert(detail::same_speeds_v<Ev, NH> && detail::solution_of_v<Sol, NH>);
@@ -147,8 +147,7 @@ solve_status dependent_rates_at_rest(const Ev& ev, const Sol& sol,
   using Dep = detail::dense_right_side<detail::constraint_system<NH>>;
   detail::table<S, m, 1> right, bd;
   for (std::size_t k = 0; k < m; ++k) right[k][0] = rest(Eigen::Index(k));
-  const solve_status solved =
-      detail::substitute_structured<Dep>(sol.dependent.m, sol.dependent.factors, right, bd);
+  const auto solved = detail::substitute_structured<Dep>(sol.dependent.m, sol.dependent.factors, right, bd);
   for (std::size_t j = 0; j < m; ++j) b_dep[j] = -bd[j][0];
   return solved;
 }
@@ -157,14 +156,14 @@ reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_for
                                                                                         const Sol& sol) {
   using S = typename Ev::scalar;
   std::array<S, NH::m> b_dep;
-  const solve_status solved = dependent_rates_at_rest<NH, Rates>(ev, sol, b_dep);
+  const auto solved = dependent_rates_at_rest<NH, Rates>(ev, sol, b_dep);
   // built in place: a copy of the equations would read whole what was written number by number
   reduced_equations<S, NH::n, NH::p> out{
       equations_along<Sys, Rates>(ev, independent_speeds<NH, S>{sol.A, b_dep}),
       speeds_of_independents<NH>(sol.A), Eigen::Matrix<S, int(NH::n), 1>::Zero()};
   for (std::size_t j = 0; j < NH::m; ++j) out.b(Eigen::Index(NH::dependents[j] - 1)) = b_dep[j];
-  if (out.reduced.status == solve_status::ok) out.reduced.status = sol.status;
-  if (out.reduced.status == solve_status::ok) out.reduced.status = solved;
+  detail::then(out.reduced.status, sol.status);
+  detail::then(out.reduced.status, solved);
   return out;
 }
 }  // namespace detail
@@ -210,10 +209,9 @@ equations_of_motion<typename Ev::scalar, NH::n> constrained_mass_matrix_and_forc
       out.M.row(r) = sol.C.row(Eigen::Index(j));
       out.f(r) = -rest(Eigen::Index(j));
     }
-    if (out.status == solve_status::ok) out.status = sol.status;
-    if (out.status == solve_status::ok &&
-        !(detail::all_finite_matrix(out.M) && detail::all_finite_matrix(out.f)))
-      out.status = solve_status::not_finite;
+    detail::then(out.status, sol.status);
+    detail::fail_unless(out.status, detail::all_finite_matrix(out.M) && detail::all_finite_matrix(out.f),
+                        solve_status::not_finite);
     return out;
   }
 }
@@ -228,7 +226,7 @@ struct reduced_forces {
   Eigen::Matrix<S, int(P), 1> active;   // F~_r
   Eigen::Matrix<S, int(P), 1> inertia;  // F~*_r
   // the evaluator's, the solution's, or not_finite
-  solve_status status;
+  status_of<S> status;
 };
 // F~ and F~* of Sys at ev's state, with sol the solution of the constraints NH
 template <System Sys, Nonholonomic NH, Evaluator Ev, class Sol>
@@ -248,10 +246,10 @@ reduced_forces<typename Ev::scalar, NH::p> reduced_generalized_forces(const Ev& 
     const Eigen::Matrix<S, int(n), 1> inertia = e.f - active - e.M * detail::speed_rates(ev);
     const Eigen::Matrix<S, int(n), int(p)> t = detail::speeds_of_independents<NH>(sol.A);
     reduced_forces<S, p> out{t.transpose() * active, t.transpose() * inertia, e.status};
-    if (out.status == solve_status::ok) out.status = sol.status;
-    if (out.status == solve_status::ok &&
-        !(detail::all_finite_matrix(out.active) && detail::all_finite_matrix(out.inertia)))
-      out.status = solve_status::not_finite;
+    detail::then(out.status, sol.status);
+    detail::fail_unless(out.status,
+                        detail::all_finite_matrix(out.active) && detail::all_finite_matrix(out.inertia),
+                        solve_status::not_finite);
     return out;
   }
 }

@@ -166,9 +166,12 @@ constexpr auto evaluator_or_own() {
 }
 template <class Sys, class X, level L = level::acceleration, class More = list<>>
 using evaluator_or_own_t = typename decltype(evaluator_or_own<Sys, X, L, More>())::type;
-// The same over the scalar S (double: the evaluator's own where X is one)
-template <class Sys, class X, class S>
-using own_evaluator_t = typename decltype(evaluator_or_own<Sys, X, level::acceleration, list<>, S>())::type;
+// The evaluator E where E is one, else the system's own (speed set X) over the scalar E.
+template <class Sys, class X, class E, class More = list<>>
+using own_evaluator_t = typename std::conditional_t<
+    is_evaluator<E>::value, std::type_identity<E>,
+    decltype(evaluator_or_own<Sys, X, level::acceleration, More,
+                              std::conditional_t<is_evaluator<E>::value, double, E>>())>::type;
 }  // namespace detail
 
 }  // namespace kane

@@ -46,7 +46,7 @@ struct constraint_solution {
   // B of u_dep = A u_ind + B
   Eigen::Matrix<S, int(M), 1> B;
   // ok, or why A and B are NaN
-  solve_status status;
+  status_of<S> status;
   // C of C u + c0 = 0: M x (M + P), all speeds
   Eigen::Matrix<S, int(M), int(M + P)> C;
   // c0 of C u + c0 = 0
@@ -105,14 +105,14 @@ KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
   });
   out.dependent.m = dep;
   out.dependent.factors = detail::factor_structured<Sys>(dep);
-  const solve_status solved = detail::substitute_structured<Sys>(dep, out.dependent.factors, right, x);
-  out.status = ev.status() != solve_status::ok ? ev.status() : solved;
+  const auto solved = detail::substitute_structured<Sys>(dep, out.dependent.factors, right, x);
+  out.status = detail::failed_first(ev.status(), solved);
   for (std::size_t k = 0; k < m; ++k) {
     const auto row = static_cast<Eigen::Index>(k);
     for (std::size_t j = 0; j < p; ++j) out.A(row, static_cast<Eigen::Index>(j)) = -x[k][j];
     out.B(row) = -x[k][p];
   }
-  const auto spoil = detail::nan_unless<S>(out.status == solve_status::ok);
+  const auto spoil = detail::nan_unless<S>(detail::ok_of<S>(out.status));
   spoil(out.A);
   spoil(out.B);
   return out;

@@ -136,6 +136,17 @@ KANE_ALWAYS_INLINE void then(Status& st, const Status& next) {
   } else
     st.code = st.code == 0 ? next.code : st.code;
 }
+// a where a is not ok, else b (lane by lane): a select for one state
+template <class Status>
+KANE_ALWAYS_INLINE Status failed_first(const Status& a, const Status& b) {
+  if constexpr (std::is_same_v<Status, solve_status>)
+    return a != solve_status::ok ? a : b;
+  else {
+    Status st;
+    st.code = a.code != 0 ? a.code : b.code;
+    return st;
+  }
+}
 // b in every lane, as S's truth values
 template <class S>
 KANE_ALWAYS_INLINE typename lane_traits<S>::mask truth(bool b) {
