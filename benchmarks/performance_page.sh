@@ -37,9 +37,10 @@ trap 'rm -rf "$work"' EXIT
 for p in "${presets[@]}"; do
   if [ $build = 1 ]; then
     cmake --preset "$p" >/dev/null
-    cmake --build --preset "$p" ${only:+--target bench_$only} >/dev/null
+    cmake --build --preset "$p" ${only:+--target bench_$only} >/dev/null 2>&1 || [ -n "$only" ]
   fi
   for b in ./build/"$p"/benchmarks/bench_${only:-*}; do
+    [ -x "$b" ] || continue  # a binary of one preset alone (bench_lanes_avx2)
     "$b" --benchmark_repetitions=$reps --benchmark_enable_random_interleaving=true --benchmark_format=csv 2>/dev/null | grep '^"' |
       grep -Ev '_(mean|median|stddev|cv)"' | sed "s/^/$p,/"
   done
@@ -51,14 +52,14 @@ done >"$work/runs.csv"
 # lanes (kane_x4, kane_x8) kane / kane_x4, kane / kane_x8 and kane_x8 / SymPy's C.
 awk -F, -v reps=$reps -v dir="$work" '
   BEGIN { rank["hand"] = 1; rank["hand_checked"] = 2; rank["sympy"] = 3; rank["sympy_checked"] = 4
-          rank["kdl"] = 5; rank["kane"] = 6 }
+          rank["kdl"] = 5; rank["kane"] = 6; rank["kane_x4"] = 7; rank["kane_x8"] = 8; rank["kane_float_x16"] = 9 }
   { gsub(/"/, "", $2); n = split($2, part, "/"); impl = part[n]; group = part[1]
     prob = substr($2, length(group) + 2, length($2) - length(group) - length(impl) - 2)
     t = $5 + 0; if ($6 == "us") t *= 1e3; else if ($6 == "ms") t *= 1e6
     key = $1 SUBSEP group SUBSEP prob SUBSEP impl; runs[key, ++count[key]] = t
     if (!((group, prob) in seen)) { seen[group, prob] = 1; probs[group, ++np[group]] = prob }
     if (!((group, impl) in has)) {  # implementations in the order of rank, others last
-      has[group, impl] = 1; r = impl in rank ? rank[impl] : 7
+      has[group, impl] = 1; r = impl in rank ? rank[impl] : 10
       for (i = ++ni[group]; i > 1 && impl_rank[group, i - 1] > r; --i) { impls[group, i] = impls[group, i - 1]; impl_rank[group, i] = impl_rank[group, i - 1] }
       impls[group, i] = impl; impl_rank[group, i] = r }
     if (!(group in gseen)) { gseen[group] = 1; groups[++ng] = group } }

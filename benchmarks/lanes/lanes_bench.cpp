@@ -20,6 +20,11 @@ const std::array<double, 27> bicycle::p = [] {
   return out;
 }();
 
+// The group of the rows: lanes, or lanes_avx2 for the binary built without AVX-512
+#ifndef KANE_LANES_GROUP
+#define KANE_LANES_GROUP "lanes"
+#endif
+
 namespace {
 template <int N>
 std::vector<small::input<N>> inputs(unsigned seed, void (*fix)(small::input<N>&, std::mt19937&)) {
@@ -182,39 +187,46 @@ void agree() {
 }  // namespace
 
 #define KANE_LANES_ROWS(model, states)                                                                \
-  BENCHMARK(run<each<small::model##_hand>, states>)->Name("lanes/" #model "/hand");                   \
-  BENCHMARK(run<each<small::model##_sympy>, states>)->Name("lanes/" #model "/sympy");                 \
-  BENCHMARK(run<each<small::model##_sympy_checked>, states>)->Name("lanes/" #model "/sympy_checked"); \
-  BENCHMARK(run<lanes_bench::model##_kane, states>)->Name("lanes/" #model "/kane");                   \
-  BENCHMARK(run<lanes_bench::model##_kane_x4, states>)->Name("lanes/" #model "/kane_x4");             \
-  BENCHMARK(run<lanes_bench::model##_kane_x8, states>)->Name("lanes/" #model "/kane_x8");             \
-  BENCHMARK(run<lanes_bench::model##_kane_float_x16, states>)->Name("lanes/" #model "/kane_float_x16")
+  BENCHMARK(run<each<small::model##_hand>, states>)->Name(KANE_LANES_GROUP "/" #model "/hand");       \
+  BENCHMARK(run<each<small::model##_sympy>, states>)->Name(KANE_LANES_GROUP "/" #model "/sympy");     \
+  BENCHMARK(run<each<small::model##_sympy_checked>, states>)                                          \
+      ->Name(KANE_LANES_GROUP "/" #model "/sympy_checked");                                           \
+  BENCHMARK(run<lanes_bench::model##_kane, states>)->Name(KANE_LANES_GROUP "/" #model "/kane");       \
+  BENCHMARK(run<lanes_bench::model##_kane_x4, states>)->Name(KANE_LANES_GROUP "/" #model "/kane_x4"); \
+  BENCHMARK(run<lanes_bench::model##_kane_x8, states>)->Name(KANE_LANES_GROUP "/" #model "/kane_x8"); \
+  BENCHMARK(run<lanes_bench::model##_kane_float_x16, states>)                                         \
+      ->Name(KANE_LANES_GROUP "/" #model "/kane_float_x16")
 
 KANE_LANES_ROWS(top, tops);
 KANE_LANES_ROWS(spacecraft, spacecrafts);
 KANE_LANES_ROWS(pendulum_absolute, pendulums);
-BENCHMARK(run<each<dynamics6::hand_forward>, arms>)->Name("lanes/arm6_forward/hand");
-BENCHMARK(run<lanes_bench::arm6_forward_kane, arms>)->Name("lanes/arm6_forward/kane");
-BENCHMARK(run<lanes_bench::arm6_forward_kane_x4, arms>)->Name("lanes/arm6_forward/kane_x4");
-BENCHMARK(run<lanes_bench::arm6_forward_kane_x8, arms>)->Name("lanes/arm6_forward/kane_x8");
-BENCHMARK(run<lanes_bench::arm6_forward_kane_float_x16, arms>)->Name("lanes/arm6_forward/kane_float_x16");
-BENCHMARK(run<each<chain_dynamics::hand_forward<24>>, chains>)->Name("lanes/chain24_forward/hand");
-BENCHMARK(run<lanes_bench::chain24_forward_kane, chains>)->Name("lanes/chain24_forward/kane");
-BENCHMARK(run<lanes_bench::chain24_forward_kane_x4, chains>)->Name("lanes/chain24_forward/kane_x4");
-BENCHMARK(run<lanes_bench::chain24_forward_kane_x8, chains>)->Name("lanes/chain24_forward/kane_x8");
+BENCHMARK(run<each<dynamics6::hand_forward>, arms>)->Name(KANE_LANES_GROUP "/arm6_forward/hand");
+BENCHMARK(run<lanes_bench::arm6_forward_kane, arms>)->Name(KANE_LANES_GROUP "/arm6_forward/kane");
+BENCHMARK(run<lanes_bench::arm6_forward_kane_x4, arms>)->Name(KANE_LANES_GROUP "/arm6_forward/kane_x4");
+BENCHMARK(run<lanes_bench::arm6_forward_kane_x8, arms>)->Name(KANE_LANES_GROUP "/arm6_forward/kane_x8");
+BENCHMARK(run<lanes_bench::arm6_forward_kane_float_x16, arms>)
+    ->Name(KANE_LANES_GROUP "/arm6_forward/kane_float_x16");
+BENCHMARK(run<each<chain_dynamics::hand_forward<24>>, chains>)
+    ->Name(KANE_LANES_GROUP "/chain24_forward/hand");
+BENCHMARK(run<lanes_bench::chain24_forward_kane, chains>)->Name(KANE_LANES_GROUP "/chain24_forward/kane");
+BENCHMARK(run<lanes_bench::chain24_forward_kane_x4, chains>)
+    ->Name(KANE_LANES_GROUP "/chain24_forward/kane_x4");
+BENCHMARK(run<lanes_bench::chain24_forward_kane_x8, chains>)
+    ->Name(KANE_LANES_GROUP "/chain24_forward/kane_x8");
 BENCHMARK(run<lanes_bench::chain24_forward_kane_float_x16, chains>)
-    ->Name("lanes/chain24_forward/kane_float_x16");
-BENCHMARK(run<each<disc_dynamics::hand_rates>, discs>)->Name("lanes/disc/hand");
-BENCHMARK(run<each<disc_dynamics::sympy_rates>, discs>)->Name("lanes/disc/sympy");
-BENCHMARK(run<each<disc_dynamics::sympy_rates_checked>, discs>)->Name("lanes/disc/sympy_checked");
-BENCHMARK(run<lanes_bench::disc_kane, discs>)->Name("lanes/disc/kane");
-BENCHMARK(run<lanes_bench::disc_kane_x4, discs>)->Name("lanes/disc/kane_x4");
-BENCHMARK(run<lanes_bench::disc_kane_x8, discs>)->Name("lanes/disc/kane_x8");
-BENCHMARK(run<lanes_bench::disc_kane_float_x16, discs>)->Name("lanes/disc/kane_float_x16");
-BENCHMARK(run<each<bicycle::sympy_rates>, bicycles>)->Name("lanes/bicycle/sympy");
-BENCHMARK(run<lanes_bench::bicycle_kane, bicycles>)->Name("lanes/bicycle/kane");
-BENCHMARK(run<lanes_bench::bicycle_kane_x4, bicycles>)->Name("lanes/bicycle/kane_x4");
-BENCHMARK(run<lanes_bench::bicycle_kane_x8, bicycles>)->Name("lanes/bicycle/kane_x8");
-BENCHMARK(run<lanes_bench::bicycle_kane_float_x16, bicycles>)->Name("lanes/bicycle/kane_float_x16");
+    ->Name(KANE_LANES_GROUP "/chain24_forward/kane_float_x16");
+BENCHMARK(run<each<disc_dynamics::hand_rates>, discs>)->Name(KANE_LANES_GROUP "/disc/hand");
+BENCHMARK(run<each<disc_dynamics::sympy_rates>, discs>)->Name(KANE_LANES_GROUP "/disc/sympy");
+BENCHMARK(run<each<disc_dynamics::sympy_rates_checked>, discs>)->Name(KANE_LANES_GROUP "/disc/sympy_checked");
+BENCHMARK(run<lanes_bench::disc_kane, discs>)->Name(KANE_LANES_GROUP "/disc/kane");
+BENCHMARK(run<lanes_bench::disc_kane_x4, discs>)->Name(KANE_LANES_GROUP "/disc/kane_x4");
+BENCHMARK(run<lanes_bench::disc_kane_x8, discs>)->Name(KANE_LANES_GROUP "/disc/kane_x8");
+BENCHMARK(run<lanes_bench::disc_kane_float_x16, discs>)->Name(KANE_LANES_GROUP "/disc/kane_float_x16");
+BENCHMARK(run<each<bicycle::sympy_rates>, bicycles>)->Name(KANE_LANES_GROUP "/bicycle/sympy");
+BENCHMARK(run<lanes_bench::bicycle_kane, bicycles>)->Name(KANE_LANES_GROUP "/bicycle/kane");
+BENCHMARK(run<lanes_bench::bicycle_kane_x4, bicycles>)->Name(KANE_LANES_GROUP "/bicycle/kane_x4");
+BENCHMARK(run<lanes_bench::bicycle_kane_x8, bicycles>)->Name(KANE_LANES_GROUP "/bicycle/kane_x8");
+BENCHMARK(run<lanes_bench::bicycle_kane_float_x16, bicycles>)
+    ->Name(KANE_LANES_GROUP "/bicycle/kane_float_x16");
 
 int main(int argc, char** argv) { return bench::main(argc, argv, agree); }
