@@ -88,18 +88,17 @@ void bicycle_batches(const bicycle::input* in, bicycle::rates* out) {
   batches(instance<bike<S>>(bicycle::p), in, out);
 }
 
-// q'' of the chain of 24 links at q and u = q' (../chain_dynamics/chain_model.hpp), W states a call
-template <class L>
-void chain24_batches(const chain_dynamics::input* in, chain_dynamics::output* out) {
+// q'' = u' of a chain of N revolute joints (System, its last frame Last) at q and u = q', W states a
+// call, as ../dynamics6/dynamics6_kane.cpp writes it
+template <class L, std::size_t N, class System, class Last, class In, class Out>
+void tree_batches(const In* in, Out* out) {
   using S = typename kane::real_type<L>::type;
   constexpr int W = int(kane::lane_traits<L>::width);
-  constexpr std::size_t n = 24;
-  using state = kane::state<L, n>;
-  using evaluator =
-      kane::evaluator<state, kane::frames<chain_model::B<n>>, kane::level::pose, kane::qdot_speeds<n>>;
+  using state = kane::state<L, N>;
+  using evaluator = kane::evaluator<state, kane::frames<Last>, kane::level::pose, kane::qdot_speeds<N>>;
   for (int first = 0; first < lanes_bench::batch; first += W) {
     state s;
-    for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t k = 0; k < N; ++k) {
       if constexpr (W == 1)
         s.q[k] = in[first].q[k], s.u[k] = in[first].qd[k];
       else
@@ -108,9 +107,9 @@ void chain24_batches(const chain_dynamics::input* in, chain_dynamics::output* ou
     }
     evaluator ev;
     ev.update(s);
-    const auto ud = kane::forward_dynamics<chain_model::system<n>>(ev).ud;
+    const auto ud = kane::forward_dynamics<System>(ev).ud;
     for (int l = 0; l < W; ++l)
-      for (int k = 0; k < int(n); ++k) {
+      for (int k = 0; k < int(N); ++k) {
         if constexpr (W == 1)
           out[first].qdd[k] = ud(k);
         else
@@ -118,34 +117,13 @@ void chain24_batches(const chain_dynamics::input* in, chain_dynamics::output* ou
       }
   }
 }
-// q'' = u' of the arm at q and u = q', W states a call, as dynamics6_kane.cpp writes it
+template <class L>
+void chain24_batches(const chain_dynamics::input* in, chain_dynamics::output* out) {
+  tree_batches<L, 24, chain_model::system<24>, chain_model::B<24>>(in, out);
+}
 template <class L>
 void arm6_batches(const dynamics6::input* in, dynamics6::output* out) {
-  using S = typename kane::real_type<L>::type;
-  constexpr int W = int(kane::lane_traits<L>::width);
-  using state = kane::state<L, 6>;
-  using evaluator =
-      kane::evaluator<state, kane::frames<models::arm6::B6>, kane::level::pose, kane::qdot_speeds<6>>;
-  for (int first = 0; first < lanes_bench::batch; first += W) {
-    state s;
-    for (std::size_t k = 0; k < 6; ++k) {
-      if constexpr (W == 1)
-        s.q[k] = in[first].q[k], s.u[k] = in[first].qd[k];
-      else
-        s.q[k] = L::generate([&](std::size_t l) { return S(in[first + int(l)].q[k]); }),
-        s.u[k] = L::generate([&](std::size_t l) { return S(in[first + int(l)].qd[k]); });
-    }
-    evaluator ev;
-    ev.update(s);
-    const auto ud = kane::forward_dynamics<models::arm6::links>(ev).ud;
-    for (int l = 0; l < W; ++l)
-      for (int k = 0; k < 6; ++k) {
-        if constexpr (W == 1)
-          out[first].qdd[k] = ud(k);
-        else
-          out[first + l].qdd[k] = double(ud(k)[std::size_t(l)]);
-      }
-  }
+  tree_batches<L, 6, models::arm6::links, models::arm6::B6>(in, out);
 }
 }  // namespace
 
@@ -184,21 +162,12 @@ void pendulum_absolute_kane_x8(const small::pendulum_in* in, small::pendulum_out
 void pendulum_absolute_kane_float_x16(const small::pendulum_in* in, small::pendulum_out* out) {
   batches<pendulum_absolute<kane::lanes<float, 16>>>(in, out);
 }
-void arm6_forward_kane(const dynamics6::input* in, dynamics6::output* out) { arm6_batches<double>(in, out); }
-void arm6_forward_kane_x4(const dynamics6::input* in, dynamics6::output* out) {
-  arm6_batches<kane::lanes<double, 4>>(in, out);
-}
-void arm6_forward_kane_x8(const dynamics6::input* in, dynamics6::output* out) {
-  arm6_batches<kane::lanes<double, 8>>(in, out);
-}
-void arm6_forward_kane_float_x16(const dynamics6::input* in, dynamics6::output* out) {
-  arm6_batches<kane::lanes<float, 16>>(in, out);
-}
 #define KANE_LANES_KANE(name, In, Out, call)                                             \
   void name##_kane(const In* in, Out* out) { call<double>(in, out); }                    \
   void name##_kane_x4(const In* in, Out* out) { call<kane::lanes<double, 4>>(in, out); } \
   void name##_kane_x8(const In* in, Out* out) { call<kane::lanes<double, 8>>(in, out); } \
   void name##_kane_float_x16(const In* in, Out* out) { call<kane::lanes<float, 16>>(in, out); }
+KANE_LANES_KANE(arm6_forward, dynamics6::input, dynamics6::output, arm6_batches)
 KANE_LANES_KANE(disc, disc_dynamics::input, disc_dynamics::output, disc_batches)
 KANE_LANES_KANE(bicycle, bicycle::input, bicycle::rates, bicycle_batches)
 KANE_LANES_KANE(chain24_forward, chain_dynamics::input, chain_dynamics::output, chain24_batches)

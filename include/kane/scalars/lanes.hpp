@@ -13,21 +13,17 @@
 #pragma once
 
 #include <array>
-#include <bit>
 #include <cmath>
 #include <concepts>
 #include <cstddef>
-#include <cstring>
 #include <limits>
 #include <type_traits>
 #include <utility>
 
 #include <Eigen/Core>
-#if defined(__SSE2__)
-#include <immintrin.h>
-#endif
 
 #include "kane/detail/invert.hpp"
+#include "kane/detail/lane_math.hpp"
 #include "kane/scalars/scalar.hpp"
 
 #pragma GCC diagnostic push
@@ -117,39 +113,16 @@ struct lanes {
 
   friend lanes sin(const lanes& a) {
     vector s, c;
-    sincos(a.v, s, c);
+    detail::lane_sincos<S, W>(a.v, s, c);
     return lanes(s);
   }
   friend lanes cos(const lanes& a) {
     vector s, c;
-    sincos(a.v, s, c);
+    detail::lane_sincos<S, W>(a.v, s, c);
     return lanes(c);
   }
-  friend lanes sqrt(const lanes& a) {
-#if defined(__SSE2__)
-    if constexpr (sizeof(vector) < 16)
-      return each(a, [](S x) { return std::sqrt(x); });
-    else
-      return in_registers(a, [](auto x) {
-        using R = decltype(x);
-        constexpr bool dbl = std::is_same_v<S, double>;
-        if constexpr (sizeof(R) == 64 && dbl)
-          return std::bit_cast<R>(_mm512_sqrt_pd(std::bit_cast<__m512d>(x)));
-        else if constexpr (sizeof(R) == 64)
-          return std::bit_cast<R>(_mm512_sqrt_ps(std::bit_cast<__m512>(x)));
-        else if constexpr (sizeof(R) == 32 && dbl)
-          return std::bit_cast<R>(_mm256_sqrt_pd(std::bit_cast<__m256d>(x)));
-        else if constexpr (sizeof(R) == 32)
-          return std::bit_cast<R>(_mm256_sqrt_ps(std::bit_cast<__m256>(x)));
-        else if constexpr (dbl)
-          return std::bit_cast<R>(_mm_sqrt_pd(std::bit_cast<__m128d>(x)));
-        else
-          return std::bit_cast<R>(_mm_sqrt_ps(std::bit_cast<__m128>(x)));
-      });
-#else
-    return each(a, [](S x) { return std::sqrt(x); });
-#endif
-  }
+  friend lanes sqrt(const lanes& a) { return lanes(detail::lane_sqrt<S, W>(a.v)); }
+
   friend lanes tan(const lanes& a) {
     return each(a, [](S x) { return std::tan(x); });
   }
@@ -170,84 +143,11 @@ struct lanes {
   friend lanes abs(const lanes& a) { return select(a < lanes(S(0)), -a, a); }
 
  private:
-#if defined(__SSE2__)
-  // f on each register of a's numbers: the widest of the target (AVX-512, AVX, SSE2) that W fills
-  template <class F>
-  static lanes in_registers(const lanes& a, F f) {
-    constexpr std::size_t widest =
-#if defined(__AVX512F__)
-        64;
-#elif defined(__AVX__)
-        32;
-#else
-        16;
-#endif
-    constexpr std::size_t bytes = sizeof(vector) < widest ? sizeof(vector) : widest;
-    typedef S reg __attribute__((vector_size(bytes)));
-    static_assert(sizeof(vector) >= 16);
-    lanes r;
-    for (std::size_t at = 0; at < sizeof(vector); at += bytes) {
-      reg x;
-      std::memcpy(&x, reinterpret_cast<const char*>(&a.v) + at, bytes);
-      x = f(x);
-      std::memcpy(reinterpret_cast<char*>(&r.v) + at, &x, bytes);
-    }
-    return r;
-  }
-#endif
   template <class F>
   static lanes each(const lanes& a, F f) {
     lanes r;
     for (std::size_t i = 0; i < W; ++i) r.v[i] = f(a.v[i]);
     return r;
-  }
-  // sin x and cos x in every lane, in vector registers for |x| <= 1e5 (doubles; floats 8192): x =
-  // k pi/2 + r, |r| <= pi/4, and polynomials in r (fdlibm's kernels; for floats Cephes'), within an
-  // ulp or two of std::sin and std::cos. Other lanes (large, inf, NaN) take std::sin and std::cos.
-  static void sincos(const vector& x, vector& s, vector& c) {
-    constexpr bool dbl = std::is_same_v<S, double>;
-    using I = std::conditional_t<dbl, long long, int>;
-    typedef I ints __attribute__((vector_size(sizeof(S) * W)));
-    const vector ax = x < vector{} ? -x : x;
-    const ints near = ax <= vector{} + S(dbl ? 1e5 : 8192);
-    bool all = true;
-    for (std::size_t i = 0; i < W; ++i) all = all && near[i] != 0;
-    const vector xr = near ? x : vector{};
-    const ints k =
-        __builtin_convertvector(xr * S(0.63661977236758134308) + (xr < vector{} ? S(-0.5) : S(0.5)), ints);
-    const vector kd = __builtin_convertvector(k, vector);
-    vector r, sr, cr;
-    if constexpr (dbl) {
-      // pi/2 = p1 + p2 + p3 + p4, p1 .. p3 of 33 bits: k p_i is exact for |k| < 2^20 (fdlibm's split)
-      r = xr - kd * 1.57079632673412561417e+00 - kd * 6.07710050630396597660e-11 -
-          kd * 2.02226624871116645580e-21 - kd * 8.47842766036889956997e-32;
-      const vector z = r * r;
-      sr = r + r * z *
-                   (-1.66666666666666324348e-01 +
-                    z * (8.33333333332248946124e-03 +
-                         z * (-1.98412698298579493134e-04 +
-                              z * (2.75573137070700676789e-06 +
-                                   z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)))));
-      cr = 1.0 - 0.5 * z +
-           z * z *
-               (4.16666666666666019037e-02 +
-                z * (-1.38888888888741095749e-03 +
-                     z * (2.48015872894767294178e-05 +
-                          z * (-2.75573143513906633035e-07 +
-                               z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
-    } else {
-      r = xr - kd * 1.5703125f - kd * 4.837512969970703125e-4f - kd * 7.54978995489188216e-8f;
-      const vector z = r * r;
-      sr = r + r * z * (-1.6666654611e-1f + z * (8.3321608736e-3f + z * -1.9515295891e-4f));
-      cr = 1.0f - 0.5f * z +
-           z * z * (4.166664568298827e-2f + z * (-1.388731625493765e-3f + z * 2.443315711809948e-5f));
-    }
-    const ints odd = (k & 1) != 0, sn = (k & 2) != 0, cn = ((k + 1) & 2) != 0;
-    vector sv = odd ? cr : r == vector{} ? r : sr, cv = odd ? sr : cr;  // sin -0 = -0
-    s = sn ? -sv : sv, c = cn ? -cv : cv;
-    if (!all)
-      for (std::size_t i = 0; i < W; ++i)
-        if (!near[i]) s[i] = std::sin(x[i]), c[i] = std::cos(x[i]);
   }
 };
 

@@ -1,0 +1,107 @@
+// The functions of kane::lanes (scalars/lanes.hpp) in vector registers, on GCC's and Clang's vector
+// types of W numbers of S: sine and cosine by kane's own kernels, square roots by the target's
+// instruction.
+#pragma once
+
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <type_traits>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
+#include "kane/detail/inline.hpp"
+#include "kane/detail/packet.hpp"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+namespace kane::detail {
+
+// sin x and cos x in every lane, in vector registers for |x| <= 1e5 (doubles; floats 8192): x =
+// k pi/2 + r, |r| <= pi/4, and polynomials in r (fdlibm's kernels; for floats Cephes'), within an
+// ulp or two of std::sin and std::cos. Other lanes (large, inf, NaN) take std::sin and std::cos.
+template <class S, std::size_t W, class vector>
+KANE_ALWAYS_INLINE void lane_sincos(const vector& x, vector& s, vector& c) {
+  constexpr bool dbl = std::is_same_v<S, double>;
+  using I = std::conditional_t<dbl, long long, int>;
+  typedef I ints __attribute__((vector_size(sizeof(S) * W)));
+  const vector ax = x < vector{} ? -x : x;
+  const ints near = ax <= vector{} + S(dbl ? 1e5 : 8192);
+  bool all = true;
+  for (std::size_t i = 0; i < W; ++i) all = all && near[i] != 0;
+  const vector xr = near ? x : vector{};
+  const ints k =
+      __builtin_convertvector(xr * S(0.63661977236758134308) + (xr < vector{} ? S(-0.5) : S(0.5)), ints);
+  const vector kd = __builtin_convertvector(k, vector);
+  vector r, sr, cr;
+  if constexpr (dbl) {
+    // pi/2 = p1 + p2 + p3 + p4, p1 .. p3 of 33 bits: k p_i is exact for |k| < 2^20 (fdlibm's split)
+    r = xr - kd * 1.57079632673412561417e+00 - kd * 6.07710050630396597660e-11 -
+        kd * 2.02226624871116645580e-21 - kd * 8.47842766036889956997e-32;
+    const vector z = r * r;
+    sr = r + r * z *
+                 (-1.66666666666666324348e-01 +
+                  z * (8.33333333332248946124e-03 +
+                       z * (-1.98412698298579493134e-04 +
+                            z * (2.75573137070700676789e-06 +
+                                 z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)))));
+    cr = 1.0 - 0.5 * z +
+         z * z *
+             (4.16666666666666019037e-02 +
+              z * (-1.38888888888741095749e-03 +
+                   z * (2.48015872894767294178e-05 +
+                        z * (-2.75573143513906633035e-07 +
+                             z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
+  } else {
+    r = xr - kd * 1.5703125f - kd * 4.837512969970703125e-4f - kd * 7.54978995489188216e-8f;
+    const vector z = r * r;
+    sr = r + r * z * (-1.6666654611e-1f + z * (8.3321608736e-3f + z * -1.9515295891e-4f));
+    cr = 1.0f - 0.5f * z +
+         z * z * (4.166664568298827e-2f + z * (-1.388731625493765e-3f + z * 2.443315711809948e-5f));
+  }
+  const ints odd = (k & 1) != 0, sn = (k & 2) != 0, cn = ((k + 1) & 2) != 0;
+  vector sv = odd ? cr : r == vector{} ? r : sr, cv = odd ? sr : cr;  // sin -0 = -0
+  s = sn ? -sv : sv, c = cn ? -cv : cv;
+  if (!all)
+    for (std::size_t i = 0; i < W; ++i)
+      if (!near[i]) s[i] = std::sin(x[i]), c[i] = std::cos(x[i]);
+}
+
+// sqrt in every lane: the target's instruction on each of the widest registers that W fills (lane by
+// lane below SSE2 or below 16 bytes)
+template <class S, std::size_t W, class vector>
+KANE_ALWAYS_INLINE vector lane_sqrt(const vector& a) {
+  vector r;
+#if defined(__SSE2__)
+  if constexpr (sizeof(vector) >= 16) {
+    constexpr std::size_t bytes = sizeof(vector) < register_bytes ? sizeof(vector) : register_bytes;
+    constexpr bool dbl = std::is_same_v<S, double>;
+    typedef S reg __attribute__((vector_size(bytes)));
+    for (std::size_t at = 0; at < sizeof(vector); at += bytes) {
+      reg x;
+      std::memcpy(&x, reinterpret_cast<const char*>(&a) + at, bytes);
+      if constexpr (bytes == 64 && dbl)
+        x = std::bit_cast<reg>(_mm512_sqrt_pd(std::bit_cast<__m512d>(x)));
+      else if constexpr (bytes == 64)
+        x = std::bit_cast<reg>(_mm512_sqrt_ps(std::bit_cast<__m512>(x)));
+      else if constexpr (bytes == 32 && dbl)
+        x = std::bit_cast<reg>(_mm256_sqrt_pd(std::bit_cast<__m256d>(x)));
+      else if constexpr (bytes == 32)
+        x = std::bit_cast<reg>(_mm256_sqrt_ps(std::bit_cast<__m256>(x)));
+      else if constexpr (dbl)
+        x = std::bit_cast<reg>(_mm_sqrt_pd(std::bit_cast<__m128d>(x)));
+      else
+        x = std::bit_cast<reg>(_mm_sqrt_ps(std::bit_cast<__m128>(x)));
+      std::memcpy(reinterpret_cast<char*>(&r) + at, &x, bytes);
+    }
+    return r;
+  }
+#endif
+  for (std::size_t i = 0; i < W; ++i) r[i] = std::sqrt(a[i]);
+  return r;
+}
+
+}  // namespace kane::detail
+#pragma GCC diagnostic pop
