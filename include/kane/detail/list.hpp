@@ -54,6 +54,26 @@ KANE_ALWAYS_INLINE constexpr void static_for_inline(F&& f) {
   else
     static_for_inline_chunks<N>(f, std::make_index_sequence<(N + fold_chunk - 1) / fold_chunk>{});
 }
+// f(index_c<i>{}) for the i where Mask[i] is true, in order: a sparse loop instantiates f only
+// where it has work (Mask a constexpr std::array<bool, N>).
+template <auto Mask>
+inline constexpr std::size_t count_true = [] {
+  std::size_t k = 0;
+  for (bool b : Mask) k += b ? 1 : 0;
+  return k;
+}();
+template <auto Mask>
+inline constexpr auto true_indices = [] {
+  std::array<std::size_t, count_true<Mask>> at{};
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < Mask.size(); ++i)
+    if (Mask[i]) at[k++] = i;
+  return at;
+}();
+template <auto Mask, class F>
+constexpr void static_for_where(F&& f) {
+  static_for<count_true<Mask>>([&](auto k) { f(index_c<true_indices<Mask>[k]> {}); });
+}
 // N trues (a computation that reads every frame or coordinate)
 template <std::size_t N>
 constexpr std::array<bool, N> every() {

@@ -116,7 +116,7 @@ class kinematic_equations {
     fill_nan(qd_), fill_nan(qdd_);
     if constexpr (!direct)
       if constexpr (Speeds::rows == nq)  // W's numbers and X (weight and offset read no other entry)
-        static_for<nq * nq>([&](auto rc) {
+        static_for_where<stored_entries()>([&](auto rc) {
           constexpr std::size_t r = rc / nq, c = rc % nq;
           if constexpr (system::x[r][c] == entry::other)
             kde_w_[r][c] = std::numeric_limits<scalar>::quiet_NaN();
@@ -147,6 +147,32 @@ class kinematic_equations {
     return std::get<R>(Speeds::definitions);
   }
   using system = kde_system<std::conditional_t<solves, Speeds, qdot_speeds<1>>>;
+  // r nq + c where the pattern p holds a number of its own
+  static constexpr std::array<bool, nq * nq> entries_of(const pattern<nq, nq>& p) {
+    std::array<bool, nq * nq> at{};
+    for (std::size_t r = 0; r < nq; ++r)
+      for (std::size_t c = 0; c < nq; ++c) at[r * nq + c] = p[r][c] == entry::other;
+    return at;
+  }
+  // the c where p's row r holds a number of its own
+  static constexpr std::array<bool, nq> others_in_row(const pattern<nq, nq>& p, std::size_t r) {
+    std::array<bool, nq> at{};
+    for (std::size_t c = 0; c < nq; ++c) at[c] = p[r][c] == entry::other;
+    return at;
+  }
+  // the c < cols where p's row r is not zero
+  static constexpr std::array<bool, nq> nonzero_in_row(const pattern<nq, nq>& p, std::size_t r,
+                                                       std::size_t cols) {
+    std::array<bool, nq> at{};
+    for (std::size_t c = 0; c < cols; ++c) at[c] = p[r][c] != entry::zero;
+    return at;
+  }
+  // the entries of W and X stored as numbers (X_r at r nq)
+  static constexpr std::array<bool, nq * nq> stored_entries() {
+    auto at = entries_of(system::x);
+    for (std::size_t r = 0; r < nq; ++r) at[r * nq] = at[r * nq] || system::offset[r];
+    return at;
+  }
   static constexpr pattern<nq, nq> w_pattern() {
     if constexpr (direct)
       return identity_pattern<nq>();
@@ -166,12 +192,10 @@ class kinematic_equations {
   template <class Ev>
   KANE_ALWAYS_INLINE void solve_kinematic_equations(const Ev& ev) {
     table<scalar, nq, nq> y;
-    static_for<nq * nq>([&](auto rc) {
+    static_for_where<entries_of(system::m)>([&](auto rc) {
       constexpr std::size_t r = rc / nq, c = rc % nq;
-      if constexpr (system::m[r][c] == entry::other) {
-        constexpr auto e = diff(definition<r>(), coordinate<c + 1, 1>{});  // built by the constant evaluator
-        y[r][c] = eval_scalar(e, ev);
-      }
+      constexpr auto e = diff(definition<r>(), coordinate<c + 1, 1>{});  // built by the constant evaluator
+      y[r][c] = eval_scalar(e, ev);
     });
     const status_of<scalar> solved = [&] {
       if constexpr (!direct && orthogonal_form<system>())
@@ -196,7 +220,7 @@ class kinematic_equations {
     });
     fail_unless(status_, finite, solve_status::not_finite);
     const auto spoil = nan_unless<scalar>(ok_of<scalar>(status_));
-    static_for<nq * nq>([&](auto rc) {
+    static_for_where<stored_entries()>([&](auto rc) {
       constexpr std::size_t r = rc / nq, c = rc % nq;
       if constexpr (system::x[r][c] == entry::other) spoil(kde_w_[r][c]);
       if constexpr (c == 0 && system::offset[r]) spoil(kde_x_[r]);
@@ -217,10 +241,10 @@ class kinematic_equations {
   KANE_ALWAYS_INLINE scalar apply_row(const V& v) const {
     scalar sum = scalar(0);
     if constexpr (Kind == map::affine && system::offset[C]) sum = kde_x_[C];
-    static_for<Cols>([&](auto j) {
+    static_for_where<nonzero_in_row(system::x, C, Cols)>([&](auto j) {
       if constexpr (system::x[C][j] == entry::one)
         sum += v[j];
-      else if constexpr (system::x[C][j] == entry::other)
+      else
         sum += kde_w_[C][j] * v[j];
     });
     return sum;
@@ -257,7 +281,7 @@ class kinematic_equations {
           if constexpr (r < nd) sum = s.ud[r];
           constexpr auto zd = dt(at_rest(definition<r>()));
           if constexpr (!is_zero_v<std::remove_cv_t<decltype(zd)>>) sum -= eval_scalar(zd, ev);
-          static_for<nq>([&](auto c) {
+          static_for_where<others_in_row(system::m, r)>([&](auto c) {  // Y' = 0 at constants
             constexpr auto yd = dt(diff(definition<r>(), coordinate<c + 1, 1>{}));
             if constexpr (!is_zero_v<std::remove_cv_t<decltype(yd)>>) sum -= eval_scalar(yd, ev) * qd_[c];
           });

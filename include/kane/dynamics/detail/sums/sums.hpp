@@ -62,16 +62,23 @@ template <class Cols, class Sp, class X>
 struct reached_columns {
   static constexpr auto value = Cols::template nonzero<nonzero_columns<Sp, X>()>();
 };
+// r N + c for r <= c in the columns Nz::value
+template <class Nz, std::size_t N>
+constexpr std::array<bool, N * N> upper_entries() {
+  std::array<bool, N * N> at{};
+  for (std::size_t r = 0; r < N; ++r)
+    for (std::size_t c = r; c < N; ++c) at[r * N + c] = Nz::value[r] && Nz::value[c];
+  return at;
+}
 // The upper triangle of M += a^T b (symmetric: b = W a, W symmetric) over the columns Nz::value.
 template <class Nz, class S, int N>
 KANE_ALWAYS_INLINE void add_upper(Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<S, 3, N>& a,
                                   const Eigen::Matrix<S, 3, N>& b) {
-  static_for<std::size_t(N * N)>([&](auto rc) {
+  static_for_where<upper_entries<Nz, std::size_t(N)>()>([&](auto rc) {
     constexpr std::size_t r = rc / std::size_t(N), c = rc % std::size_t(N);
-    if constexpr (r <= c && Nz::value[r] && Nz::value[c])
-      m(Eigen::Index(r), Eigen::Index(c)) += a(0, Eigen::Index(r)) * b(0, Eigen::Index(c)) +
-                                             a(1, Eigen::Index(r)) * b(1, Eigen::Index(c)) +
-                                             a(2, Eigen::Index(r)) * b(2, Eigen::Index(c));
+    m(Eigen::Index(r), Eigen::Index(c)) += a(0, Eigen::Index(r)) * b(0, Eigen::Index(c)) +
+                                           a(1, Eigen::Index(r)) * b(1, Eigen::Index(c)) +
+                                           a(2, Eigen::Index(r)) * b(2, Eigen::Index(c));
   });
 }
 template <class Ev>

@@ -1,0 +1,99 @@
+// kane::lanes through constrained_motion (the rolling disc, the Whipple bicycle) and the recursive
+// path's forward and inverse dynamics, M and f (the 6R arm), lane by lane equal to the scalar path,
+// with good, singular and non-finite states mixed in one batch.
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "../examples/models/arm6_dynamics.hpp"
+#include "../examples/models/bicycle.hpp"
+#include "../examples/models/disc.hpp"
+#include "lanes_compare.hpp"
+
+namespace {
+using lanes_test::compare;
+using lanes_test::states;
+}  // namespace
+
+TEST_CASE("lanes: the rolling disc's constrained motion, lane by lane as the scalar path", "[lanes]") {
+  namespace d = models::disc;
+  using L = kane::lanes<double, 8>;
+  kane::state_of<d::system, d::rolling::speed_set> s;
+  s.p = {0.3, 2.0, 9.81};  // r, m, g
+  kane::state_of<d::system, d::rolling::speed_set, L> ls;
+  ls.p = {L(0.3), L(2.0), L(9.81)};
+  kane::constrained_motion<d::system, d::rolling> one(s);
+  kane::constrained_motion<d::system, d::rolling, L> many(ls);
+  auto xs = states<double, 8>(11, 13);
+  xs[3][4] = std::numeric_limits<double>::quiet_NaN();
+  xs[9][1] = std::numeric_limits<double>::infinity();
+  compare(one, many, xs, 1e-13);
+}
+
+TEST_CASE("lanes: the 6R arm's forward and inverse dynamics on the recursive path, lane by lane", "[lanes]") {
+  namespace a = models::arm6;
+  using L = kane::lanes<double, 8>;
+  using state = kane::state<double, 6>;
+  using lstate = kane::state<L, 6>;
+  using frames = kane::frames<a::B6>;
+  using evaluator = kane::evaluator<state, frames, kane::level::pose, kane::qdot_speeds<6>>;
+  using levaluator = kane::evaluator<lstate, frames, kane::level::pose, kane::qdot_speeds<6>>;
+  const auto xs = states<double, 18>(8, 17);  // q, u, u'
+  lstate ls;
+  for (std::size_t k = 0; k < 6; ++k) {
+    ls.q[k] = L::generate([&](std::size_t l) { return xs[l][k]; });
+    ls.u[k] = L::generate([&](std::size_t l) { return xs[l][6 + k]; });
+    ls.ud[k] = L::generate([&](std::size_t l) { return xs[l][12 + k]; });
+  }
+  ls.q[2].set(5, std::numeric_limits<double>::quiet_NaN());
+  levaluator lev;
+  lev.update(ls);
+  const auto lf = kane::forward_dynamics<a::links>(lev);
+  const auto li = kane::inverse_dynamics<a::links>(lev);
+  const auto le = kane::mass_matrix_and_forcing<a::links>(lev);
+  for (std::size_t l = 0; l < 8; ++l) {
+    state s;
+    for (std::size_t k = 0; k < 6; ++k) s.q[k] = ls.q[k][l], s.u[k] = ls.u[k][l], s.ud[k] = ls.ud[k][l];
+    evaluator ev;
+    ev.update(s);
+    const auto f = kane::forward_dynamics<a::links>(ev);
+    const auto i = kane::inverse_dynamics<a::links>(ev);
+    const auto e = kane::mass_matrix_and_forcing<a::links>(ev);
+    INFO("lane " << l);
+    CHECK(lf.status[l] == f.status);
+    CHECK(li.status[l] == i.status);
+    CHECK(le.status[l] == e.status);
+    CHECK((l == 5) == (f.status == kane::solve_status::not_finite));
+    for (int k = 0; k < 6; ++k) {
+      if (f.status == kane::solve_status::ok) {
+        CHECK(std::abs(lf.ud(k)[l] - f.ud(k)) <= 1e-13 * (1 + std::abs(f.ud(k))));
+        CHECK(std::abs(li.tau(k)[l] - i.tau(k)) <= 1e-13 * (1 + std::abs(i.tau(k))));
+        CHECK(std::abs(le.f(k)[l] - e.f(k)) <= 1e-13 * (1 + std::abs(e.f(k))));
+        for (int j = 0; j < 6; ++j)
+          CHECK(std::abs(le.M(k, j)[l] - e.M(k, j)) <= 1e-13 * (1 + std::abs(e.M(k, j))));
+      } else {
+        CHECK(std::isnan(lf.ud(k)[l]));
+        CHECK(std::isnan(li.tau(k)[l]));
+      }
+    }
+  }
+}
+
+TEST_CASE("lanes: the Whipple bicycle's constrained motion, lane by lane as the scalar path", "[lanes]") {
+  namespace b = models::bicycle;
+  using L = kane::lanes<double, 8>;
+  using lstate = kane::state<L, 6, 8, 27>;
+  using levaluator =
+      kane::evaluator<lstate, kane::frames<b::Wr, b::Wf>, kane::level::acceleration, b::speeds>;
+  const b::dynamics_state s = b::benchmark_parameters();
+  lstate ls;
+  for (std::size_t i = 0; i < 27; ++i) ls.p[i] = L(s.p[i]);
+  kane::constrained_motion<b::system, b::rolling, b::dynamics_evaluator> one(s);
+  kane::constrained_motion<b::system, b::rolling, levaluator> many(ls);
+  auto xs = states<double, 9>(10, 19);
+  for (auto& x : xs) x[4] = 0.1 * x[4];  // pitch near its value on flat ground
+  xs[2][8] = std::numeric_limits<double>::quiet_NaN();
+  compare(one, many, xs, 1e-12);
+}
