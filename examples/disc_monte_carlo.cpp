@@ -1,13 +1,13 @@
 // A Monte Carlo of the rolling disc (models/disc.hpp): random initial lean, lean rate and rolling
 // speed, each start integrated 3 s by RK4 (dt = 2 ms) through kane::constrained_motion. A start stays
 // upright if |lean| stays below 1 rad. The fraction that stays upright, by speed, is printed and, with a
-// path ("-": none), plotted as SVG. W starts go through one call as kane::lanes<double, W> (by default as
-// wide as the target's vector registers; 1 is the scalar path), each lane with its own stop: a disc that
-// falls stops counting, the others roll on.
+// path ("-": none), plotted as SVG. W starts go through one call as kane::lanes<double, W>, W as wide as
+// the target's vector registers (kane::native_lanes<double>), each lane with its own stop: a disc that
+// falls stops counting, the others roll on. W = 1 is the scalar path (the default without AVX).
 // The batches are split across OpenMP threads (g++ -fopenmp), one right-hand side per thread; without
 // OpenMP they run in one thread with the same results. A progress line goes to stderr.
 //
-//   example_disc_monte_carlo [starts] [plot.svg] [W: 1, 4 or 8]
+//   example_disc_monte_carlo [starts] [plot.svg] [W: 1, or more for the register's lanes]
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -29,13 +29,12 @@ template <class S>
 using rhs = kane::constrained_motion<d::system, d::rolling, S>;  // x: yaw, lean, spin, x, y, u1, u2, u3
 
 constexpr double radius = 0.3, top_speed = 3.6;  // m, m/s
-// lanes as wide as the target's vector registers (built without -mavx: one state a call)
-#if defined(__AVX512F__)
-constexpr long native_width = 8;
-#elif defined(__AVX__)
-constexpr long native_width = 4;
+// lanes as wide as the target's vector registers; by default one state a call without AVX
+constexpr long native_width = long(kane::native_lanes<double>);
+#if defined(__AVX__)
+constexpr long default_width = native_width;
 #else
-constexpr long native_width = 1;
+constexpr long default_width = 1;
 #endif
 constexpr int bins = 12;
 
@@ -142,17 +141,15 @@ void plot(const char* path, const std::array<int, bins>& up, const std::array<in
 
 int main(int argc, char** argv) {
   const long n = argc > 1 ? std::atol(argv[1]) : 1000;
-  const long width = argc > 3 ? std::atol(argv[3]) : native_width;
+  const long width = (argc > 3 ? std::atol(argv[3]) : default_width) > 1 ? native_width : 1;
   std::vector<start> starts(std::size_t(n > 0 ? n : 0));
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> lean(-0.2, 0.2), rate(-0.5, 0.5), speed(0.0, top_speed);
   for (auto& s : starts) s = {lean(rng), rate(rng), speed(rng)};
   std::vector<char> upright(starts.size());
-  const double seconds = width == 1   ? run<double>(starts, upright)
-                         : width == 4 ? run<kane::lanes<double, 4>>(starts, upright)
-                                      : run<kane::lanes<double, 8>>(starts, upright);
-  std::fprintf(stderr, "\n%ld starts in %.2f s, %ld a call\n", n, seconds,
-               width == 1 || width == 4 ? width : 8);
+  const double seconds = width == 1 ? run<double>(starts, upright)
+                                    : run<kane::lanes<double, kane::native_lanes<double>>>(starts, upright);
+  std::fprintf(stderr, "\n%ld starts in %.2f s, %ld a call\n", n, seconds, width);
   std::array<int, bins> up{}, all{};
   for (std::size_t i = 0; i < starts.size(); ++i) {
     const int b = std::min(bins - 1, int(starts[i].speed / top_speed * bins));

@@ -5,6 +5,7 @@
 
 #include "../../examples/models/arm6_dynamics.hpp"
 #if defined(KANE_LANES)
+#define KANE_ALLOW_WIDE_LANES  // compiled for its cost at -O2, never run: any W
 #include <kane/scalars/lanes.hpp>
 #endif
 

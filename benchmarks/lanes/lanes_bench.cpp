@@ -1,11 +1,12 @@
 // Many states per call (lanes_models.hpp): 64 states of each small model per row, by the hand
 // and SymPy functions state by state, kane's scalar path, and kane's lanes of 4 and 8 doubles and
-// 16 floats. The states are those of ../small/small_bench.cpp.
+// 16 floats (8 and 16 where KANE_LANES_WIDE). The states are those of ../small/small_bench.cpp.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 #include "../../examples/models/bicycle.hpp"
@@ -23,6 +24,15 @@ const std::array<double, 27> bicycle::p = [] {
 // The group of the rows: lanes, or lanes_avx2 for the binary built without AVX-512
 #ifndef KANE_LANES_GROUP
 #define KANE_LANES_GROUP "lanes"
+#endif
+
+// the rows of 8 doubles (after a comma) and of 16 floats, where built
+#if KANE_LANES_WIDE
+#define KANE_X8(f) , f##_x8
+#define KANE_X16(f) f##_float_x16
+#else
+#define KANE_X8(f)
+#define KANE_X16(f) nullptr
 #endif
 
 namespace {
@@ -126,6 +136,7 @@ void agree(const std::vector<small::input<N>>& states,
       bench::require_agreement(o[std::size_t(i)].status);
     }
   }
+  if (!floats) return;
   floats(states.data(), o.data());
   for (int i = 0; i < lanes_bench::batch; ++i)
     for (int k = 0; k < N; ++k) {
@@ -137,8 +148,8 @@ void agree(const std::vector<small::input<N>>& states,
 // least 1), floats to 1e-3.
 template <int N, class In, class Out>
 void outputs_agree(const std::vector<In>& states, void (*ref)(const In*, Out*),
-                   std::initializer_list<void (*)(const In*, Out*)> doubles, void (*floats)(const In*, Out*),
-                   double tol) {
+                   std::initializer_list<void (*)(const In*, Out*)> doubles,
+                   std::type_identity_t<void (*)(const In*, Out*)> floats, double tol) {
   std::array<Out, lanes_bench::batch> h{}, o{};
   ref(states.data(), h.data());
   const auto check = [&](double t) {
@@ -149,36 +160,38 @@ void outputs_agree(const std::vector<In>& states, void (*ref)(const In*, Out*),
     }
   };
   for (auto f : doubles) f(states.data(), o.data()), check(tol);
-  floats(states.data(), o.data()), check(1e-3);
+  if (floats) floats(states.data(), o.data()), check(1e-3);
 }
 void agree() {
   using namespace lanes_bench;
-  agree<6>(tops, small::top_hand, {top_kane, top_kane_x4, top_kane_x8}, top_kane_float_x16);
-  agree<14>(spacecrafts, small::spacecraft_hand, {spacecraft_kane, spacecraft_kane_x4, spacecraft_kane_x8},
-            spacecraft_kane_float_x16);
+  agree<6>(tops, small::top_hand, {top_kane, top_kane_x4 KANE_X8(top_kane)}, KANE_X16(top_kane));
+  agree<14>(spacecrafts, small::spacecraft_hand,
+            {spacecraft_kane, spacecraft_kane_x4 KANE_X8(spacecraft_kane)}, KANE_X16(spacecraft_kane));
   agree<4>(pendulums, small::pendulum_absolute_hand,
-           {pendulum_absolute_kane, pendulum_absolute_kane_x4, pendulum_absolute_kane_x8},
-           pendulum_absolute_kane_float_x16);
+           {pendulum_absolute_kane, pendulum_absolute_kane_x4 KANE_X8(pendulum_absolute_kane)},
+           KANE_X16(pendulum_absolute_kane));
   std::array<dynamics6::output, batch> h{}, o{};
   each<dynamics6::hand_forward>(arms.data(), h.data());
-  for (auto f : {arm6_forward_kane, arm6_forward_kane_x4, arm6_forward_kane_x8}) {
+  for (auto f : {arm6_forward_kane, arm6_forward_kane_x4 KANE_X8(arm6_forward_kane)}) {
     f(arms.data(), o.data());
     for (std::size_t i = 0; i < h.size(); ++i)
       bench::require_agreement(bench::max_diff(o[i].qdd, h[i].qdd, 6));
   }
+#if KANE_LANES_WIDE
   arm6_forward_kane_float_x16(arms.data(), o.data());
   for (std::size_t i = 0; i < h.size(); ++i)
     for (int k = 0; k < 6; ++k)
       bench::require_agreement(std::abs(o[i].qdd[k] - h[i].qdd[k]) <= 1e-3 * (1 + std::abs(h[i].qdd[k])) ? 0
                                                                                                          : 1);
+#endif
 
-  outputs_agree<8>(discs, each<disc_dynamics::hand_rates>, {disc_kane, disc_kane_x4, disc_kane_x8},
-                   disc_kane_float_x16, 1e-12);
-  outputs_agree<9>(bicycles, each<bicycle::sympy_rates>, {bicycle_kane, bicycle_kane_x4, bicycle_kane_x8},
-                   bicycle_kane_float_x16, 1e-10);
+  outputs_agree<8>(discs, each<disc_dynamics::hand_rates>, {disc_kane, disc_kane_x4 KANE_X8(disc_kane)},
+                   KANE_X16(disc_kane), 1e-12);
+  outputs_agree<9>(bicycles, each<bicycle::sympy_rates>,
+                   {bicycle_kane, bicycle_kane_x4 KANE_X8(bicycle_kane)}, KANE_X16(bicycle_kane), 1e-10);
   std::array<chain_dynamics::output, batch> ch{}, co{};
   each<chain_dynamics::hand_forward<24>>(chains.data(), ch.data());
-  for (auto f : {chain24_forward_kane, chain24_forward_kane_x4, chain24_forward_kane_x8}) {
+  for (auto f : {chain24_forward_kane, chain24_forward_kane_x4 KANE_X8(chain24_forward_kane)}) {
     f(chains.data(), co.data());
     for (std::size_t i = 0; i < ch.size(); ++i)
       bench::require_agreement(bench::max_diff(co[i].qdd, ch[i].qdd, 24) * 1e-3);
@@ -193,9 +206,15 @@ void agree() {
       ->Name(KANE_LANES_GROUP "/" #model "/sympy_checked");                                           \
   BENCHMARK(run<lanes_bench::model##_kane, states>)->Name(KANE_LANES_GROUP "/" #model "/kane");       \
   BENCHMARK(run<lanes_bench::model##_kane_x4, states>)->Name(KANE_LANES_GROUP "/" #model "/kane_x4"); \
+  KANE_LANES_WIDE_ROWS(model, states)
+#if KANE_LANES_WIDE
+#define KANE_LANES_WIDE_ROWS(model, states)                                                           \
   BENCHMARK(run<lanes_bench::model##_kane_x8, states>)->Name(KANE_LANES_GROUP "/" #model "/kane_x8"); \
   BENCHMARK(run<lanes_bench::model##_kane_float_x16, states>)                                         \
       ->Name(KANE_LANES_GROUP "/" #model "/kane_float_x16")
+#else
+#define KANE_LANES_WIDE_ROWS(model, states) static_assert(true)
+#endif
 
 KANE_LANES_ROWS(top, tops);
 KANE_LANES_ROWS(spacecraft, spacecrafts);
@@ -203,30 +222,46 @@ KANE_LANES_ROWS(pendulum_absolute, pendulums);
 BENCHMARK(run<each<dynamics6::hand_forward>, arms>)->Name(KANE_LANES_GROUP "/arm6_forward/hand");
 BENCHMARK(run<lanes_bench::arm6_forward_kane, arms>)->Name(KANE_LANES_GROUP "/arm6_forward/kane");
 BENCHMARK(run<lanes_bench::arm6_forward_kane_x4, arms>)->Name(KANE_LANES_GROUP "/arm6_forward/kane_x4");
+#if KANE_LANES_WIDE
 BENCHMARK(run<lanes_bench::arm6_forward_kane_x8, arms>)->Name(KANE_LANES_GROUP "/arm6_forward/kane_x8");
+#endif
+#if KANE_LANES_WIDE
 BENCHMARK(run<lanes_bench::arm6_forward_kane_float_x16, arms>)
     ->Name(KANE_LANES_GROUP "/arm6_forward/kane_float_x16");
+#endif
 BENCHMARK(run<each<chain_dynamics::hand_forward<24>>, chains>)
     ->Name(KANE_LANES_GROUP "/chain24_forward/hand");
 BENCHMARK(run<lanes_bench::chain24_forward_kane, chains>)->Name(KANE_LANES_GROUP "/chain24_forward/kane");
 BENCHMARK(run<lanes_bench::chain24_forward_kane_x4, chains>)
     ->Name(KANE_LANES_GROUP "/chain24_forward/kane_x4");
+#if KANE_LANES_WIDE
 BENCHMARK(run<lanes_bench::chain24_forward_kane_x8, chains>)
     ->Name(KANE_LANES_GROUP "/chain24_forward/kane_x8");
+#endif
+#if KANE_LANES_WIDE
 BENCHMARK(run<lanes_bench::chain24_forward_kane_float_x16, chains>)
     ->Name(KANE_LANES_GROUP "/chain24_forward/kane_float_x16");
+#endif
 BENCHMARK(run<each<disc_dynamics::hand_rates>, discs>)->Name(KANE_LANES_GROUP "/disc/hand");
 BENCHMARK(run<each<disc_dynamics::sympy_rates>, discs>)->Name(KANE_LANES_GROUP "/disc/sympy");
 BENCHMARK(run<each<disc_dynamics::sympy_rates_checked>, discs>)->Name(KANE_LANES_GROUP "/disc/sympy_checked");
 BENCHMARK(run<lanes_bench::disc_kane, discs>)->Name(KANE_LANES_GROUP "/disc/kane");
 BENCHMARK(run<lanes_bench::disc_kane_x4, discs>)->Name(KANE_LANES_GROUP "/disc/kane_x4");
+#if KANE_LANES_WIDE
 BENCHMARK(run<lanes_bench::disc_kane_x8, discs>)->Name(KANE_LANES_GROUP "/disc/kane_x8");
+#endif
+#if KANE_LANES_WIDE
 BENCHMARK(run<lanes_bench::disc_kane_float_x16, discs>)->Name(KANE_LANES_GROUP "/disc/kane_float_x16");
+#endif
 BENCHMARK(run<each<bicycle::sympy_rates>, bicycles>)->Name(KANE_LANES_GROUP "/bicycle/sympy");
 BENCHMARK(run<lanes_bench::bicycle_kane, bicycles>)->Name(KANE_LANES_GROUP "/bicycle/kane");
 BENCHMARK(run<lanes_bench::bicycle_kane_x4, bicycles>)->Name(KANE_LANES_GROUP "/bicycle/kane_x4");
+#if KANE_LANES_WIDE
 BENCHMARK(run<lanes_bench::bicycle_kane_x8, bicycles>)->Name(KANE_LANES_GROUP "/bicycle/kane_x8");
+#endif
+#if KANE_LANES_WIDE
 BENCHMARK(run<lanes_bench::bicycle_kane_float_x16, bicycles>)
     ->Name(KANE_LANES_GROUP "/bicycle/kane_float_x16");
+#endif
 
 int main(int argc, char** argv) { return bench::main(argc, argv, agree); }

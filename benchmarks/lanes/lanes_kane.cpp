@@ -132,41 +132,59 @@ void top_kane(const small::top_in* in, small::top_out* out) { batches<top<double
 void top_kane_x4(const small::top_in* in, small::top_out* out) {
   batches<top<kane::lanes<double, 4>>>(in, out);
 }
+#if KANE_LANES_WIDE
 void top_kane_x8(const small::top_in* in, small::top_out* out) {
   batches<top<kane::lanes<double, 8>>>(in, out);
 }
+#endif
+#if KANE_LANES_WIDE
 void top_kane_float_x16(const small::top_in* in, small::top_out* out) {
   batches<top<kane::lanes<float, 16>>>(in, out);
 }
+#endif
 void spacecraft_kane(const small::spacecraft_in* in, small::spacecraft_out* out) {
   batches<spacecraft<double>>(in, out);
 }
 void spacecraft_kane_x4(const small::spacecraft_in* in, small::spacecraft_out* out) {
   batches<spacecraft<kane::lanes<double, 4>>>(in, out);
 }
+#if KANE_LANES_WIDE
 void spacecraft_kane_x8(const small::spacecraft_in* in, small::spacecraft_out* out) {
   batches<spacecraft<kane::lanes<double, 8>>>(in, out);
 }
+#endif
+#if KANE_LANES_WIDE
 void spacecraft_kane_float_x16(const small::spacecraft_in* in, small::spacecraft_out* out) {
   batches<spacecraft<kane::lanes<float, 16>>>(in, out);
 }
+#endif
 void pendulum_absolute_kane(const small::pendulum_in* in, small::pendulum_out* out) {
   batches<pendulum_absolute<double>>(in, out);
 }
 void pendulum_absolute_kane_x4(const small::pendulum_in* in, small::pendulum_out* out) {
   batches<pendulum_absolute<kane::lanes<double, 4>>>(in, out);
 }
+#if KANE_LANES_WIDE
 void pendulum_absolute_kane_x8(const small::pendulum_in* in, small::pendulum_out* out) {
   batches<pendulum_absolute<kane::lanes<double, 8>>>(in, out);
 }
+#endif
+#if KANE_LANES_WIDE
 void pendulum_absolute_kane_float_x16(const small::pendulum_in* in, small::pendulum_out* out) {
   batches<pendulum_absolute<kane::lanes<float, 16>>>(in, out);
 }
+#endif
+#define KANE_LANES_NARROW(name, In, Out, call)                        \
+  void name##_kane(const In* in, Out* out) { call<double>(in, out); } \
+  void name##_kane_x4(const In* in, Out* out) { call<kane::lanes<double, 4>>(in, out); }
+#if KANE_LANES_WIDE
 #define KANE_LANES_KANE(name, In, Out, call)                                             \
-  void name##_kane(const In* in, Out* out) { call<double>(in, out); }                    \
-  void name##_kane_x4(const In* in, Out* out) { call<kane::lanes<double, 4>>(in, out); } \
+  KANE_LANES_NARROW(name, In, Out, call)                                                 \
   void name##_kane_x8(const In* in, Out* out) { call<kane::lanes<double, 8>>(in, out); } \
   void name##_kane_float_x16(const In* in, Out* out) { call<kane::lanes<float, 16>>(in, out); }
+#else
+#define KANE_LANES_KANE KANE_LANES_NARROW
+#endif
 KANE_LANES_KANE(arm6_forward, dynamics6::input, dynamics6::output, arm6_batches)
 KANE_LANES_KANE(disc, disc_dynamics::input, disc_dynamics::output, disc_batches)
 KANE_LANES_KANE(bicycle, bicycle::input, bicycle::rates, bicycle_batches)

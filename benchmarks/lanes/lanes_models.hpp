@@ -12,6 +12,14 @@
 #include "../dynamics6/dynamics6.hpp"
 #include "../small/small_models.hpp"
 
+// Lanes of 8 doubles and 16 floats fill 64 bytes: built where a register holds them (AVX-512) or
+// under Clang; optimizing g++ refuses lanes wider than a register (kane::native_lanes).
+#if defined(__AVX512F__) || defined(__clang__)
+#define KANE_LANES_WIDE 1
+#else
+#define KANE_LANES_WIDE 0
+#endif
+
 namespace lanes_bench {
 inline constexpr int batch = 64;
 // F over the batch: in[0..63] -> out[0..63]

@@ -24,12 +24,18 @@
 
 #include "kane/detail/invert.hpp"
 #include "kane/detail/lane_math.hpp"
+#include "kane/detail/packet.hpp"
 #include "kane/scalars/scalar.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 #pragma GCC diagnostic ignored "-Wpsabi"
 namespace kane {
+
+// The lanes of S that one vector register of the target holds: for double 8 with AVX-512, 4 with
+// AVX, 2 with SSE2.
+template <std::floating_point S>
+inline constexpr std::size_t native_lanes = detail::register_bytes / sizeof(S);
 
 // W truth values: what comparisons of kane::lanes give.
 template <std::floating_point S, std::size_t W>
@@ -65,6 +71,14 @@ struct lane_mask {
 template <std::floating_point S, std::size_t W>
 struct lanes {
   static_assert(W >= 2 && (W & (W - 1)) == 0, "kane: lanes<S, W> takes W a power of two, 2 or more");
+#if defined(__GNUC__) && !defined(__clang__) && defined(__OPTIMIZE__) && !defined(KANE_ALLOW_WIDE_LANES)
+  // g++'s scalar replacement of aggregates (-ftree-sra) computes wrong numbers with vectors wider
+  // than a register (the spacecraft of tests/test_lanes.cpp at -O2, 8 doubles without AVX-512)
+  static_assert(W <= native_lanes<S>,
+                "kane: lanes<S, W> wider than a vector register (W > kane::native_lanes<S>) are "
+                "miscompiled by optimizing g++: take W = kane::native_lanes<S>, build for wider "
+                "registers (-march=native), or build with -fno-tree-sra and define KANE_ALLOW_WIDE_LANES");
+#endif
   // the vector register (or registers) of W numbers
   typedef S vector __attribute__((vector_size(sizeof(S) * W)));
   static constexpr std::size_t width = W;
