@@ -88,7 +88,7 @@ struct lanes {
   // every lane x
   template <class T>
   requires std::is_arithmetic_v<T> lanes(T x) : v(vector{} + S(x)) {}  // NOLINT: numbers convert
-  explicit lanes(vector x) : v(x) {}
+  explicit lanes(const vector& x) : v(x) {}
 
   // Lane i f(i), built in registers (one wide value, where W stores of one lane each and a wide
   // load of them would wait on the stores).
