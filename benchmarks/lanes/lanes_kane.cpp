@@ -27,20 +27,18 @@ void batches(Motion& motion, const In* in, Out* out) {
   using S = typename kane::real_type<L>::type;
   constexpr int W = int(kane::lane_traits<L>::width), N = int(Motion::size);
   for (int first = 0; first < lanes_bench::batch; first += W) {
-    std::array<L, N> x, xd;
-    if constexpr (W == 1)
-      for (int k = 0; k < N; ++k) x[k] = in[first].x[k];
-    else
+    if constexpr (W == 1) {  // as ../small/small_kane.cpp calls it: x and x' where they are
+      Out& o = out[first];
+      motion(in[first].x, o.xd, S(0));
+      if constexpr (requires { o.status; }) o.status = motion.status() == kane::solve_status::ok ? 0 : 1;
+    } else {
+      std::array<L, N> x, xd;
       for (int k = 0; k < N; ++k)
         x[k] = L::generate([&](std::size_t l) { return S(in[first + int(l)].x[k]); });
-    motion(x, xd, L(S(0)));
-    const auto status = motion.status();
-    for (int l = 0; l < W; ++l) {
-      Out& o = out[first + l];
-      if constexpr (W == 1) {
-        for (int k = 0; k < N; ++k) o.xd[k] = xd[k];
-        if constexpr (requires { o.status; }) o.status = status == kane::solve_status::ok ? 0 : 1;
-      } else {
+      motion(x, xd, L(S(0)));
+      const auto status = motion.status();
+      for (int l = 0; l < W; ++l) {
+        Out& o = out[first + l];
         for (int k = 0; k < N; ++k) o.xd[k] = double(xd[k][l]);
         if constexpr (requires { o.status; }) o.status = status[l] == kane::solve_status::ok ? 0 : 1;
       }
