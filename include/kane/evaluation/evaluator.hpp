@@ -25,6 +25,7 @@
 #include <utility>
 
 #include "kane/detail/choices.hpp"
+#include "kane/detail/lane_copy.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/detail/trig.hpp"
 #include "kane/detail/v3.hpp"
@@ -225,7 +226,8 @@ class evaluator<St, frames<Fs...>, Level, Given>
   template <detail::reading Read, class Reads = everything>
   KANE_ALWAYS_INLINE void pass_at(const St& s) {
     constexpr bool Rates = Read == detail::reading::whole_state;
-    st_.q = s.q, st_.p = s.p, st_.t = s.t, st_.r = s.r, updated_ = true;
+    detail::assign(st_.q, s.q), detail::assign(st_.p, s.p), st_.t = s.t, detail::assign(st_.r, s.r);
+    updated_ = true;
     const scalar norm_residue = detail::normalise(st_, closure{});  // Euler parameters of unit norm
     const bool rotations = detail::attitudes(st_, closure{});       // NaN in st_ where not
     bool conflict = false;  // without a speed set: q' and u (q'' and u') that disagree
@@ -236,9 +238,9 @@ class evaluator<St, frames<Fs...>, Level, Given>
       else
         conflict = (detail::merged_rates(st_.qdd, s.qdd, s.ud) && acceleration) || conflict;
     } else if constexpr (Rates && rests<Reads>)
-      st_.u = s.u, st_.ud = {};
+      detail::assign(st_.u, s.u), detail::assign_zero(st_.ud);
     else if constexpr (Rates)
-      st_.u = s.u, st_.ud = s.ud;
+      detail::assign(st_.u, s.u), detail::assign(st_.ud, s.ud);
     const auto tr = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
     scalar residue =
         detail::nonfinite_residue(s.q) + detail::nonfinite_residue(s.p) + (s.t - s.t) + norm_residue;

@@ -94,7 +94,9 @@ KANE_ALWAYS_INLINE void copy_wide(S* to, const X& x, std::size_t from) {
   if constexpr (std::is_same_v<S, double> && contiguous<X>()) {
     const double* in = &x[0] + from;
     store_in_blocks<N>(to, [&](auto i) KANE_ALWAYS_INLINE_LAMBDA { return in[i]; });
-  } else
+  } else if constexpr (lane_traits<S>::width > 1)  // no memmove (detail/lane_copy.hpp)
+    static_for_inline<N>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { to[i] = x[from + i]; });
+  else
     for (std::size_t i = 0; i < N; ++i) to[i] = x[from + i];
 }
 // dxdt[i] = q'_i, i < N, NaN unless ok (q' may be finite where u' is NaN): by products and a flag

@@ -139,13 +139,17 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
   const auto along = [&]<class A>(std::type_identity<A>, const auto& x, const auto& x_dot,
                                   Eigen::Matrix<S, 3, 1>& bias) {
     constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>, A>();
-    const auto v = linear_parts_in<A, linear_part::table>(x, ev);
+    auto v = linear_parts_in<A, linear_part::table>(x, ev);
     if constexpr (has(Parts, parts::forcing)) {
       bias = detail::in_frame_of<A>(x_dot, ev);
       if constexpr (Rates == rates::of_state) bias -= product_in_blocks(v, ud);
       cols.template add_bias<nz>(bias, v);
     }
-    return Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(v));
+    if constexpr (std::is_same_v<decltype(v), Eigen::Matrix<S, 3, int(n)>> &&
+                  std::is_lvalue_reference_v<decltype(cols.template columns<nz>(v))>)
+      return v;  // the table itself: no copy (a copy of lanes is a call of memmove)
+    else
+      return Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(v));
   };
   // the mass terms in A
   const auto mass = [&]<class A>(std::type_identity<A> in, const auto& point_velocity,
