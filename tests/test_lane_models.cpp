@@ -1,6 +1,7 @@
-// kane::lanes through constrained_motion (the rolling disc, the Whipple bicycle) and the recursive
-// path's forward and inverse dynamics, M and f (the 6R arm), lane by lane equal to the scalar path,
-// with good, singular and non-finite states mixed in one batch.
+// kane::lanes through constrained_motion (the rolling disc, the Whipple bicycle), the recursive
+// path's forward and inverse dynamics, M and f (the 6R arm), and the energies and momenta (the heavy
+// top), lane by lane equal to the scalar path, with good, singular and non-finite states mixed in one
+// batch.
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -10,6 +11,7 @@
 #include "../examples/models/arm6_dynamics.hpp"
 #include "../examples/models/bicycle.hpp"
 #include "../examples/models/disc.hpp"
+#include "../examples/models/heavy_top.hpp"
 #include "lanes_compare.hpp"
 
 namespace {
@@ -96,4 +98,42 @@ TEST_CASE("lanes: the Whipple bicycle's constrained motion, lane by lane as the 
   for (auto& x : xs) x[4] = 0.1 * x[4];  // pitch near its value on flat ground
   xs[2][8] = std::numeric_limits<double>::quiet_NaN();
   compare(one, many, xs, 1e-12);
+}
+
+TEST_CASE("lanes: the heavy top's energies and momenta, lane by lane as the scalar path", "[lanes]") {
+  namespace t = models::heavy_top;
+  using L = kane::lanes<double, 4>;
+  const auto xs = states<double, 6>(4, 23);  // q, u
+  kane::state<L, 3> ls;
+  for (std::size_t k = 0; k < 3; ++k) {
+    ls.q[k] = L::generate([&](std::size_t l) { return xs[l][k]; });
+    ls.u[k] = L::generate([&](std::size_t l) { return xs[l][3 + k]; });
+  }
+  ls.u[1].set(2, std::numeric_limits<double>::quiet_NaN());  // lane 2: NaN in, NaN out
+  kane::evaluator<kane::state<L, 3>, kane::frames<t::C>, kane::level::velocity, t::speeds> lev;
+  lev.update(ls);
+  const L T = kane::kinetic_energy<t::system>(lev), V = kane::potential_energy<t::system>(lev);
+  const auto p = kane::linear_momentum<t::system>(lev);
+  const auto h = kane::angular_momentum<t::system, t::O>(lev);
+  for (std::size_t l = 0; l < 4; ++l) {
+    kane::state<double, 3> s;
+    for (std::size_t k = 0; k < 3; ++k) s.q[k] = ls.q[k][l], s.u[k] = ls.u[k][l];
+    kane::evaluator<kane::state<double, 3>, kane::frames<t::C>, kane::level::velocity, t::speeds> ev;
+    ev.update(s);
+    INFO("lane " << l);
+    CHECK(lev.status()[l] == ev.status());
+    const double T1 = kane::kinetic_energy<t::system>(ev), V1 = kane::potential_energy<t::system>(ev);
+    const auto p1 = kane::linear_momentum<t::system>(ev);
+    const auto h1 = kane::angular_momentum<t::system, t::O>(ev);
+    const auto same = [](double a, double b) {
+      return std::isnan(b) ? std::isnan(a) : std::abs(a - b) <= 1e-13 * (1 + std::abs(b));
+    };
+    CHECK(same(T[l], T1));
+    CHECK(same(V[l], V1));
+    for (int i = 0; i < 3; ++i) {
+      CHECK(same(p[i][l], p1[i]));
+      CHECK(same(h[i][l], h1[i]));
+    }
+    if (l == 2) CHECK(std::isnan(T1));
+  }
 }
