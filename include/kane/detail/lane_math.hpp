@@ -32,9 +32,16 @@ KANE_ALWAYS_INLINE void lane_sincos(const vector& x, vector& s, vector& c) {
   bool all = true;
   for (std::size_t i = 0; i < W; ++i) all = all && near[i] != 0;
   const vector xr = near ? x : vector{};
-  const ints k =
-      __builtin_convertvector(xr * S(0.63661977236758134308) + (xr < vector{} ? S(-0.5) : S(0.5)), ints);
-  const vector kd = __builtin_convertvector(k, vector);
+  const vector t = xr * S(0.63661977236758134308) + (xr < vector{} ? S(-0.5) : S(0.5));
+  ints k;
+  vector kd;
+  if constexpr (dbl) {  // k in 32 bits (|k| < 2^16): AVX2 converts doubles to 32-bit integers only
+    typedef int ints32 __attribute__((vector_size(sizeof(int) * W)));
+    const ints32 k32 = __builtin_convertvector(t, ints32);
+    k = __builtin_convertvector(k32, ints), kd = __builtin_convertvector(k32, vector);
+  } else {
+    k = __builtin_convertvector(t, ints), kd = __builtin_convertvector(k, vector);
+  }
   vector r, sr, cr;
   if constexpr (dbl) {
     // pi/2 = p1 + p2 + p3 + p4, p1 .. p3 of 33 bits: k p_i is exact for |k| < 2^20 (fdlibm's split)
