@@ -141,5 +141,28 @@ constexpr pattern<N, N> identity_pattern() {
   return p;
 }
 
+// r C + c where p holds a number of its own (entry::other), as one flat array
+template <std::size_t R, std::size_t C>
+constexpr std::array<bool, R * C> entries_of(const pattern<R, C>& p) {
+  std::array<bool, R * C> at{};
+  for (std::size_t r = 0; r < R; ++r)
+    for (std::size_t c = 0; c < C; ++c) at[r * C + c] = p[r][c] == entry::other;
+  return at;
+}
+// the c where row r of p holds a number of its own
+template <std::size_t R, std::size_t C>
+constexpr std::array<bool, C> others_in_row(const pattern<R, C>& p, std::size_t r) {
+  std::array<bool, C> at{};
+  for (std::size_t c = 0; c < C; ++c) at[c] = p[r][c] == entry::other;
+  return at;
+}
+// the c < cols where row r of p is not zero
+template <std::size_t R, std::size_t C>
+constexpr std::array<bool, C> nonzero_in_row(const pattern<R, C>& p, std::size_t r, std::size_t cols) {
+  std::array<bool, C> at{};
+  for (std::size_t c = 0; c < cols; ++c) at[c] = p[r][c] != entry::zero;
+  return at;
+}
+
 }  // namespace kane::detail
 #pragma GCC diagnostic pop

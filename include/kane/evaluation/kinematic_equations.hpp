@@ -147,26 +147,6 @@ class kinematic_equations {
     return std::get<R>(Speeds::definitions);
   }
   using system = kde_system<std::conditional_t<solves, Speeds, qdot_speeds<1>>>;
-  // r nq + c where the pattern p holds a number of its own
-  static constexpr std::array<bool, nq * nq> entries_of(const pattern<nq, nq>& p) {
-    std::array<bool, nq * nq> at{};
-    for (std::size_t r = 0; r < nq; ++r)
-      for (std::size_t c = 0; c < nq; ++c) at[r * nq + c] = p[r][c] == entry::other;
-    return at;
-  }
-  // the c where p's row r holds a number of its own
-  static constexpr std::array<bool, nq> others_in_row(const pattern<nq, nq>& p, std::size_t r) {
-    std::array<bool, nq> at{};
-    for (std::size_t c = 0; c < nq; ++c) at[c] = p[r][c] == entry::other;
-    return at;
-  }
-  // the c < cols where p's row r is not zero
-  static constexpr std::array<bool, nq> nonzero_in_row(const pattern<nq, nq>& p, std::size_t r,
-                                                       std::size_t cols) {
-    std::array<bool, nq> at{};
-    for (std::size_t c = 0; c < cols; ++c) at[c] = p[r][c] != entry::zero;
-    return at;
-  }
   // the entries of W and X stored as numbers (X_r at r nq)
   static constexpr std::array<bool, nq * nq> stored_entries() {
     auto at = entries_of(system::x);
