@@ -7,13 +7,13 @@
 //
 // With a speed set, q' and q'' are solved from u and u' (kinematic_equations.hpp). Without one u is
 // q': q' is read from s.qd, or from s.u where s.qd holds 0 (q'' from s.qdd or s.ud likewise);
-// different nonzero numbers in both are conflicting_rates. update(s) copies what evaluation reads
-// of s (q, p, t and, with a speed set, u and u', else q' and q''): every result is of the state of
-// the last update, never a mix of two states, and s may be a temporary. An attitude of s that is
-// not a rotation (frames/orientation.hpp, rotation_tolerance) gives status not_a_rotation and NaN
-// for all computed from it. Before the first update the state is NaN (updated() is false, debug
-// builds assert): every result is NaN, never a read of memory not written. Evaluating allocates
-// nothing and calls no sin or cos of a frame coordinate.
+// different nonzero numbers in both are conflicting_rates. update(s) copies what evaluation reads of s
+// (q, p, t and, with a speed set, u and u', else q' and q''): every result is of the state of the last
+// update, never a mix of two states, and s may be a temporary. An attitude of s that is not a rotation
+// (frames/orientation.hpp, rotation_tolerance) gives status not_a_rotation and NaN for all computed
+// from it. Before the first update the state is NaN (updated() is false, debug builds assert): every
+// result is NaN, never a read of memory not written. Evaluating allocates nothing and calls no sin or
+// cos of a frame coordinate.
 #pragma once
 
 #include <array>
@@ -87,14 +87,12 @@ class evaluator<St, frames<Fs...>, Level, Given>
     st_.t = std::numeric_limits<scalar>::quiet_NaN();
   }
 
-  // The outward pass at a copy of s (later changes of s are not seen). With a
-  // speed set, W and X at every level, q' and q'' from s.u and s.ud at the
-  // velocity and acceleration levels. status() is ok only if the numbers of s
-  // this level reads are finite (q, p, t; then qd or u, then qdd or ud) and,
-  // with a speed set, Y is regular and W, X, q', q'' are finite; otherwise it
-  // is singular or not_finite, and W (but for its structural zeros and ones),
-  // X, q', q'' and all computed from them are NaN (without a speed set, NaN
-  // or inf in s reaches what is computed from it).
+  // The outward pass at a copy of s (later changes of s are not seen). With a speed set, W and X at every
+  // level, q' and q'' from s.u and s.ud at the velocity and acceleration levels. status() is ok only if the
+  // numbers of s this level reads are finite (q, p, t; then qd or u, then qdd or ud) and, with a speed set, Y
+  // is regular and W, X, q', q'' are finite; otherwise it is singular or not_finite, and W (but for its
+  // structural zeros and ones), X, q', q'' and all computed from them are NaN (without a speed set, NaN or
+  // inf in s reaches what is computed from it).
   KANE_INLINE_FLATTEN void update(const St& s) requires(detail::inlined_entry<pass_type>) {
     pass_at<detail::reading::whole_state>(s);
   }
