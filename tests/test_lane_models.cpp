@@ -1,7 +1,7 @@
 // kane::lanes through constrained_motion (the rolling disc, the Whipple bicycle), the recursive
-// path's forward and inverse dynamics, M and f (the 6R arm), and the energies and momenta (the heavy
-// top), lane by lane equal to the scalar path, with good, singular and non-finite states mixed in one
-// batch.
+// path's forward and inverse dynamics, M and f (the 6R arm), the energies and momenta (the heavy top)
+// and Newton's method on a holonomic loop (the four-bar), lane by lane equal to the scalar path, with
+// good, singular and non-finite states mixed in one batch.
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -11,6 +11,7 @@
 #include "../examples/models/arm6_dynamics.hpp"
 #include "../examples/models/bicycle.hpp"
 #include "../examples/models/disc.hpp"
+#include "../examples/models/fourbar.hpp"
 #include "../examples/models/heavy_top.hpp"
 #include "lanes_compare.hpp"
 
@@ -135,5 +136,62 @@ TEST_CASE("lanes: the heavy top's energies and momenta, lane by lane as the scal
       CHECK(same(h[i][l], h1[i]));
     }
     if (l == 2) CHECK(std::isnan(T1));
+  }
+}
+
+TEST_CASE("lanes: Newton's method on the four-bar loop, each lane stopping on its own as the scalar path",
+          "[lanes]") {
+  namespace f = models::fourbar;
+  using L = kane::lanes<double, 4>;
+  using lstate = kane::state<L, 3, 3, 4>;
+  using levaluator =
+      kane::evaluator<lstate, kane::frames<f::A, f::B, f::C>, kane::level::velocity, f::speeds>;
+  // lanes: two starts that close in different steps, a singular Jacobian (q2 = q3), NaN; then a
+  // loop that cannot close (ground 5) beside one that closes
+  const std::array<std::array<double, 4>, 8> starts{{{0.7, 0.3, 1.6, 1.1},
+                                                     {-2.5, 0.3, 1.6, 1.1},
+                                                     {0.7, 1.0, 1.0, 1.1},
+                                                     {std::nan(""), 0.3, 1.6, 1.1},
+                                                     {0.7, 0.3, 1.6, 5.0},
+                                                     {1.5, 0.3, 1.6, 1.1},
+                                                     {0.7, 0.3, 1.6, 5.0},
+                                                     {3.0, 0.3, 1.6, 1.1}}};
+  const kane::solve_status expected[8] = {kane::solve_status::ok,
+                                          kane::solve_status::ok,
+                                          kane::solve_status::singular,
+                                          kane::solve_status::not_finite,
+                                          kane::solve_status::not_converged,
+                                          kane::solve_status::ok,
+                                          kane::solve_status::not_converged,
+                                          kane::solve_status::ok};
+  for (std::size_t first = 0; first < 8; first += 4) {
+    lstate ls;
+    ls.p = {L(0.3), L(1.0), L(0.8), L::generate([&](std::size_t l) { return starts[first + l][3]; })};
+    for (std::size_t k = 0; k < 3; ++k)
+      ls.q[k] = L::generate([&](std::size_t l) { return starts[first + l][k]; });
+    levaluator lev;
+    const auto r = kane::solve_configuration<f::loop>(lev, ls, {1e-12, 30});
+    std::size_t most = 0;
+    for (std::size_t l = 0; l < 4; ++l) {
+      f::state s;
+      s.p = {0.3, 1.0, 0.8, starts[first + l][3]};
+      s.q = {starts[first + l][0], starts[first + l][1], starts[first + l][2]};
+      f::evaluator ev;
+      const auto r1 = kane::solve_configuration<f::loop>(ev, s, {1e-12, 30});
+      INFO("start " << first + l);
+      CHECK(r1.status == expected[first + l]);
+      CHECK(r.status[l] == r1.status);
+      most = r1.iterations > most ? r1.iterations : most;
+      if (r1.status == kane::solve_status::not_converged) {  // chaotic iterates: the gap stays
+        CHECK(r.residual[l] > 1.0);
+        continue;
+      }
+      CHECK((std::isnan(r1.residual) ? std::isnan(r.residual[l])
+                                     : std::abs(r.residual[l] - r1.residual) <= 1e-12));
+      for (std::size_t k = 0; k < 3; ++k)
+        CHECK((std::isnan(s.q[k]) ? std::isnan(ls.q[k][l])
+                                  : std::abs(ls.q[k][l] - s.q[k]) <= 1e-13 * (1 + std::abs(s.q[k]))));
+    }
+    CHECK(r.iterations == most);
   }
 }

@@ -23,10 +23,15 @@
 // case derivatives_of_world_load: analytical_derivatives_need_loads_fixed_in_their_bodies<kane::force<.*Bo
 // case derivatives_without_joint_form: analytical_derivatives_need_a_tree_of_simple_rotations_with_u_equal_to_q_dot<
 // case derivatives_of_reordered_rates: analytical_derivatives_need_a_tree_of_simple_rotations_with_u_equal_to_q_dot<
+// case linearize_lanes_by_sums: kane: linearize over kane::lanes takes the analytical derivatives
+// case linearize_lanes_by_parameter: kane: linearize over kane::lanes takes inputs of the state
+// case linearize_constrained_lanes: kane: linearize_constrained takes one state at a time
+// case linearize_equations_lanes: kane: linearize_equations takes one state at a time
 // case cut_of_a_vector: kane: cut<P, Items...> takes the frames of the part's bodies and the points of its particles
 #include <array>
 
 #include <kane/kane.hpp>
+#include <kane/scalars/lanes.hpp>
 
 template <std::size_t I>
 using q = kane::coordinate<I>;
@@ -249,4 +254,43 @@ double own_motion() {
   std::array<double, 4> x{}, dx{};
   f(x, dx, 0.0);
   return dx[3];
+}
+
+// Linearization over kane::lanes: the analytical derivatives with inputs of the state; one state at a
+// time otherwise.
+using two = kane::lanes<double, 2>;
+#ifdef KANE_CASE_linearize_lanes_by_sums
+using lane_speeds = kane::speeds<kane::dt(q<2>{}), kane::dt(q<1>{})>;  // u != q': Kane's sums
+#else
+using lane_speeds = kane::qdot_speeds<2>;
+#endif
+#ifdef KANE_CASE_linearize_lanes_by_parameter
+using lane_inputs = kane::inputs<p<7>>;
+#else
+using lane_inputs = kane::inputs<kane::r<1>>;
+#endif
+double lanes_linearization() {
+  kane::state<two, 2, 2, 9, 1> s;
+  using ev_type = kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, lane_speeds>;
+  return kane::linearize<steered, ev_type, lane_inputs>(s).A(0, 0)[0];
+}
+#ifdef KANE_CASE_linearize_constrained_lanes
+using tied_number = two;
+#else
+using tied_number = double;
+#endif
+double tied_linearization() {
+  kane::state<tied_number, 2, 2, 9> s;
+  using ev_type = kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, rates>;
+  return kane::linearize_constrained<sys, tied, ev_type>(s).status == kane::status_of<tied_number>{};
+}
+#ifdef KANE_CASE_linearize_equations_lanes
+using reduced_number = two;
+#else
+using reduced_number = double;
+#endif
+double reduced_linearization() {
+  kane::state<reduced_number, 2, 2, 9> s;
+  using ev_type = kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, rates>;
+  return kane::linearize_equations<sys, tied, ev_type>(s).status == kane::status_of<reduced_number>{};
 }

@@ -183,7 +183,7 @@ class cholesky_factor {
   static constexpr std::size_t n = std::size_t(N), W = packet_width<S>;
   std::array<S, n * n> l{};  // l_ij at i n + j below the diagonal, l_ij d_j at j n + i above it
   std::array<S, n> inv{};    // 1 / d_i
-  bool positive = true;
+  typename lane_traits<S>::mask positive = lane_traits<S>::truth(true);  // per lane for lanes
 
  public:
   explicit cholesky_factor(const Eigen::Matrix<S, N, N>& m) {
@@ -210,7 +210,7 @@ class cholesky_factor {
             for (std::size_t k = 0; k < j; ++k) f(k);
           });
   }
-  bool ok() const { return positive; }
+  auto ok() const { return positive; }
   template <class... X>
   void solve_negated(X&... x) const {
     static_assert(((X::RowsAtCompileTime == N && !X::IsRowMajor &&

@@ -56,10 +56,31 @@ template <class M>
 void set_nan(M& m) {
   m.setConstant(std::numeric_limits<typename M::Scalar>::quiet_NaN());
 }
+// st ok for one state; true for lanes, whose lanes are all computed and the failed ones spoilt.
+template <class St>
+constexpr bool all_ok_or_lanes(const St& st) {
+  if constexpr (std::is_same_v<St, solve_status>)
+    return st == solve_status::ok;
+  else
+    return true;
+}
+// st = not_finite where a number of the results x is not (lane by lane), then x NaN where st is
+// not ok: a branch for one state, products for lanes.
+template <class St, class M, class... X>
+void finish_results(St& st, M& m, X&... x) {
+  using S = typename M::Scalar;
+  fail_unless(st, (all_finite_matrix(m) && ... && all_finite_matrix(x)), solve_status::not_finite);
+  if constexpr (lane_traits<S>::width == 1) {
+    if (st != solve_status::ok) set_nan(m), (set_nan(x), ...);
+  } else {
+    const auto spoil = nan_unless<S>(ok_of<S>(st));
+    spoil(m), (spoil(x), ...);
+  }
+}
 }  // namespace detail
 
 template <System Sys, Evaluator Ev>
-requires std::is_floating_point_v<typename Ev::scalar> inverse_derivatives<typename Ev::scalar, Ev::nu>
+requires Numbers<typename Ev::scalar> inverse_derivatives<typename Ev::scalar, Ev::nu>
 inverse_dynamics_derivatives(const Ev& ev) {
   static_assert(detail::derivatives_checked<Sys, Ev>());
   using S = typename Ev::scalar;
@@ -74,13 +95,7 @@ inverse_dynamics_derivatives(const Ev& ev) {
     pass.outward(ev, ud);
     pass.inward(out.tau, out.M, out.dtau_dq, out.dtau_du);
     out.status = ev.status();
-    if (out.status == solve_status::ok &&
-        !(detail::all_finite_matrix(out.tau) && detail::all_finite_matrix(out.dtau_dq) &&
-          detail::all_finite_matrix(out.dtau_du) && detail::all_finite_matrix(out.M)))
-      out.status = solve_status::not_finite;
-    if (out.status != solve_status::ok)
-      detail::set_nan(out.tau), detail::set_nan(out.dtau_dq), detail::set_nan(out.dtau_du),
-          detail::set_nan(out.M);
+    detail::finish_results(out.status, out.tau, out.dtau_dq, out.dtau_du, out.M);
   }
   return out;
 }
@@ -99,18 +114,18 @@ forward_derivatives<typename Ev::scalar, Ev::nu> forward_derivatives_solving(con
   tree_partials<JF, Sys, Ev> pass(bf, ev);
   out.status = ev.status();
   const auto factor = [&] {
-    if constexpr (n <= articulated_above || free_joint<Sys, Ev>) {
+    if constexpr (n <= articulated_above || free_joint<Sys, Ev> || lane_traits<S>::width > 1) {
       Eigen::Matrix<S, int(n), int(n)> m;
       composite_mass_matrix<JF, Sys>(bf, ev, m);
-      if (out.status == solve_status::ok && !finite_diagonal(m)) out.status = solve_status::not_finite;
+      fail_unless(out.status, finite_diagonal(m), solve_status::not_finite);
       return cholesky_factor<S, int(n)>(m);
     } else
       return articulated_solve<JF, S>(pass.own, pass.screw);
   }();
   joint_forces<rates::at_rest, JF, Sys>(bf, ev, out.ud);  // -f
-  if (out.status == solve_status::ok && !all_finite_matrix(out.ud)) out.status = solve_status::not_finite;
-  if (out.status == solve_status::ok && !factor.ok()) out.status = solve_status::singular;
-  if (out.status == solve_status::ok) {
+  fail_unless(out.status, all_finite_matrix(out.ud), solve_status::not_finite);
+  fail_unless(out.status, factor.ok(), solve_status::singular);
+  if (all_ok_or_lanes(out.status)) {
     factor.solve_negated(out.ud);
     Eigen::Matrix<S, int(n), int(n)> m;
     Eigen::Matrix<S, int(n), 1> tau;
@@ -118,17 +133,13 @@ forward_derivatives<typename Ev::scalar, Ev::nu> forward_derivatives_solving(con
     pass.template inward<false>(tau, m, out.dud_dq, out.dud_du);
     factor.solve_negated(out.dud_dq, out.dud_du, extra...);
   }
-  if (out.status == solve_status::ok) {
-    if (!(all_finite_matrix(out.ud) && all_finite_matrix(out.dud_dq) && all_finite_matrix(out.dud_du)))
-      out.status = solve_status::not_finite;
-  }
-  if (out.status != solve_status::ok) set_nan(out.ud), set_nan(out.dud_dq), set_nan(out.dud_du);
+  finish_results(out.status, out.ud, out.dud_dq, out.dud_du);
   return out;
 }
 }  // namespace detail
 
 template <System Sys, Evaluator Ev>
-requires std::is_floating_point_v<typename Ev::scalar> forward_derivatives<typename Ev::scalar, Ev::nu>
+requires Numbers<typename Ev::scalar> forward_derivatives<typename Ev::scalar, Ev::nu>
 forward_dynamics_derivatives(const Ev& ev) {
   static_assert(detail::derivatives_checked<Sys, Ev>());
   if constexpr (detail::analytical_derivatives<Sys, Ev>())

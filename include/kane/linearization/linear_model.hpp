@@ -76,8 +76,8 @@ struct linear_model : Order {
   Eigen::Matrix<S, int(NX), int(NR)> B;
   // x' at the state
   Eigen::Matrix<S, int(NX), 1> rate;  // x' at the state
-  // the status of the equations at the state, or of solving the constraints
-  solve_status status;
+  // the status of the equations at the state, or of solving the constraints (one per lane for lanes)
+  status_of<S> status;
 };
 
 // M u' + C u + K q = B r: rows and the columns of M, C by speed, index(u<r>) - P; K's columns by
@@ -90,8 +90,8 @@ struct linear_equations : Order {
   Eigen::Matrix<S, int(P), int(NQ)> K;
   // B, of r: P x NR
   Eigen::Matrix<S, int(P), int(NR)> B;
-  // the status of the equations at the state, or of solving the constraints
-  solve_status status;
+  // the status of the equations at the state, or of solving the constraints (one per lane for lanes)
+  status_of<S> status;
   // the row of u_R in M, C, K and B: index(u) - NQ
   template <std::size_t R>
   static constexpr Eigen::Index row(speed<R> u) {

@@ -147,8 +147,12 @@ template <System Sys, Evaluator Ev, class In = inputs<>>
 detail::model_of<Ev, In> linearize(const typename Ev::state_type& s) {
   if constexpr (detail::analytical_linearization<Sys, Ev>())
     return detail::linearize_tree<Sys, Ev, In>(s);
-  else
+  else {
+    static_assert(lane_traits<typename Ev::scalar>::width == 1,
+                  "kane: linearize over kane::lanes takes the analytical derivatives (a tree of simple "
+                  "rotations, u = q'): linearize other systems one state at a time");
     return detail::linearize_in_batches<Sys, Ev, In>(s);
+  }
 }
 
 namespace detail {
@@ -239,6 +243,8 @@ equations_of<NH, Ev, H, In> equations_in_batches(const typename Ev::state_type& 
 template <System Sys, Nonholonomic NH, Evaluator Ev, class H = void, class In = inputs<>>
 requires(std::is_void_v<H> || Holonomic<H>) detail::constrained_model_of<NH, Ev, H, In> linearize_constrained(
     const typename Ev::state_type& s) {
+  static_assert(lane_traits<typename Ev::scalar>::width == 1,
+                "kane: linearize_constrained takes one state at a time, not kane::lanes");
   return detail::constrained_in_batches<Sys, NH, Ev, H, In, detail::linearize_batch>(s);
 }
 
@@ -246,6 +252,8 @@ requires(std::is_void_v<H> || Holonomic<H>) detail::constrained_model_of<NH, Ev,
 template <System Sys, Nonholonomic NH, Evaluator Ev, class H = void, class In = inputs<>>
 requires(std::is_void_v<H> || Holonomic<H>) detail::equations_of<NH, Ev, H, In> linearize_equations(
     const typename Ev::state_type& s) {
+  static_assert(lane_traits<typename Ev::scalar>::width == 1,
+                "kane: linearize_equations takes one state at a time, not kane::lanes");
   return detail::equations_in_batches<Sys, NH, Ev, H, In, detail::linearize_batch>(s);
 }
 

@@ -8,7 +8,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <type_traits>
 
 #include <Eigen/Core>
@@ -26,12 +25,12 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
-// linearize takes the analytical derivatives: numbers, a system of joint form with steady loads,
-// u = q' of all coordinates.
+// linearize takes the analytical derivatives: numbers or lanes, a system of joint form with steady
+// loads, u = q' of all coordinates.
 template <class Sys, class Ev>
 constexpr bool analytical_linearization() {
   constexpr std::size_t nq = Ev::state_type::nq, nu = Ev::nu;
-  if constexpr (!std::is_floating_point_v<typename Ev::scalar> || !analytical_derivatives<Sys, Ev>())
+  if constexpr (!Numbers<typename Ev::scalar> || !analytical_derivatives<Sys, Ev>())
     return false;
   else
     return nq == nu + (free_joint<Sys, Ev> ? 1 : 0);
@@ -54,7 +53,8 @@ void free_kinematics(const St& s, const D& dud_dq, A& a, R& rate) {
     a.block(Eigen::Index(nq), Eigen::Index(i), Eigen::Index(nu), 1) = dud_dq.col(col(k));
   }
   const Eigen::Matrix<S, 4, 1> e(s.q[c[0] - 1], s.q[c[1] - 1], s.q[c[2] - 1], s.q[c[3] - 1]);
-  const S w1 = s.u[0], w2 = s.u[1], w3 = s.u[2], norm2 = e.squaredNorm(), norm = std::sqrt(norm2);
+  using std::sqrt;
+  const S w1 = s.u[0], w2 = s.u[1], w3 = s.u[2], norm2 = e.squaredNorm(), norm = sqrt(norm2);
   Eigen::Matrix<S, 4, 4> p;  // e (0, w) = P e (a product of quaternions)
   p << S(0), -w1, -w2, -w3, w1, S(0), w3, -w2, w2, -w3, S(0), w1, w3, w2, -w1, S(0);
   const Eigen::Matrix<S, 4, 1> ed = p * e / (S(2) * norm);
@@ -95,6 +95,8 @@ Eigen::Matrix<typename Ev::scalar, int(Ev::nu), int(In::n)> torque_by_inputs(
       b.col(Eigen::Index(k)) = tau;
     });
   } else {
+    static_assert(lane_traits<S>::width == 1,
+                  "kane: linearize over kane::lanes takes inputs of the state (kane::r<k>), not parameters");
     using J = jet<S, In::n>;
     auto js = lift<In::n>(s);
     seed_inputs<In, J>(js, 0);
@@ -111,7 +113,6 @@ Eigen::Matrix<typename Ev::scalar, int(Ev::nu), int(In::n)> torque_by_inputs(
 
 template <class Sys, class Ev, class In>
 model_of<Ev, In> linearize_tree(const typename Ev::state_type& s) {
-  using S = typename Ev::scalar;
   constexpr std::size_t n = Ev::nu;
   constexpr auto m = Eigen::Index(n);
   Ev ev;
@@ -137,10 +138,7 @@ model_of<Ev, In> linearize_tree(const typename Ev::state_type& s) {
   out.A.bottomRightCorner(m, m) = d.dud_du;
   out.rate.tail(m) = d.ud;
   out.status = d.status;
-  if (out.status == solve_status::ok && !all_finite_matrix(out.B)) out.status = solve_status::not_finite;
-  if (out.status != solve_status::ok)
-    out.A.setConstant(std::numeric_limits<S>::quiet_NaN()),
-        out.B.setConstant(std::numeric_limits<S>::quiet_NaN());
+  finish_results(out.status, out.B, out.A);
   return out;
 }
 

@@ -23,5 +23,9 @@ struct real_type {
 template <class S>
 concept Scalar = is_scalar<S>::value;
 
+// float, double, or kane::lanes of them (kane/scalars/lanes.hpp): numbers, not jets.
+template <class S>
+concept Numbers = std::floating_point<S> ||(lane_traits<S>::width > 1);
+
 }  // namespace kane
 #pragma GCC diagnostic pop
