@@ -184,6 +184,19 @@ void agree() {
       bench::require_agreement(std::abs(o[i].qdd[k] - h[i].qdd[k]) <= 1e-3 * (1 + std::abs(h[i].qdd[k])) ? 0
                                                                                                          : 1);
 #endif
+  std::array<arm6_derivatives, batch> dh{}, dl{};  // the derivatives relative to their largest
+  arm6_derivatives_kane(arms.data(), dh.data());
+  for (auto f : {arm6_derivatives_kane_x4 KANE_X8(arm6_derivatives_kane)}) {
+    f(arms.data(), dl.data());
+    for (std::size_t i = 0; i < dh.size(); ++i) {
+      double scale = 1;
+      for (int k = 0; k < 36; ++k) scale = std::max({scale, std::abs(dh[i].dq[k]), std::abs(dh[i].dqd[k])});
+      bench::require_agreement(
+          bench::max_diff(dl[i].qdd, h[i].qdd, 6) +
+          std::max(bench::max_diff(dl[i].dq, dh[i].dq, 36), bench::max_diff(dl[i].dqd, dh[i].dqd, 36)) /
+              scale);
+    }
+  }
 
   outputs_agree<8>(discs, each<disc_dynamics::hand_rates>, {disc_kane, disc_kane_x4 KANE_X8(disc_kane)},
                    KANE_X16(disc_kane), 1e-12);
@@ -228,6 +241,13 @@ BENCHMARK(run<lanes_bench::arm6_forward_kane_x8, arms>)->Name(KANE_LANES_GROUP "
 #if KANE_LANES_WIDE
 BENCHMARK(run<lanes_bench::arm6_forward_kane_float_x16, arms>)
     ->Name(KANE_LANES_GROUP "/arm6_forward/kane_float_x16");
+#endif
+BENCHMARK(run<lanes_bench::arm6_derivatives_kane, arms>)->Name(KANE_LANES_GROUP "/arm6_derivatives/kane");
+BENCHMARK(run<lanes_bench::arm6_derivatives_kane_x4, arms>)
+    ->Name(KANE_LANES_GROUP "/arm6_derivatives/kane_x4");
+#if KANE_LANES_WIDE
+BENCHMARK(run<lanes_bench::arm6_derivatives_kane_x8, arms>)
+    ->Name(KANE_LANES_GROUP "/arm6_derivatives/kane_x8");
 #endif
 BENCHMARK(run<each<chain_dynamics::hand_forward<24>>, chains>)
     ->Name(KANE_LANES_GROUP "/chain24_forward/hand");

@@ -115,6 +115,38 @@ void tree_batches(const In* in, Out* out) {
       }
   }
 }
+// q'' and its derivatives by q and q' of the arm, W states a call (forward_dynamics_derivatives)
+template <class L>
+void arm6_derivative_batches(const dynamics6::input* in, lanes_bench::arm6_derivatives* out) {
+  constexpr int W = int(kane::lane_traits<L>::width);
+  using state = kane::state<L, 6>;
+  using evaluator =
+      kane::evaluator<state, kane::frames<models::arm6::B6>, kane::level::pose, kane::qdot_speeds<6>>;
+  const auto lane = [](const L& x, int l) {
+    if constexpr (W == 1)
+      return x;
+    else
+      return x[std::size_t(l)];
+  };
+  for (int first = 0; first < lanes_bench::batch; first += W) {
+    state s;
+    for (std::size_t k = 0; k < 6; ++k) {
+      if constexpr (W == 1)
+        s.q[k] = in[first].q[k], s.u[k] = in[first].qd[k];
+      else
+        s.q[k] = L::generate([&](std::size_t l) { return in[first + int(l)].q[k]; }),
+        s.u[k] = L::generate([&](std::size_t l) { return in[first + int(l)].qd[k]; });
+    }
+    evaluator ev;
+    ev.update(s);
+    const auto d = kane::forward_dynamics_derivatives<models::arm6::links>(ev);
+    for (int l = 0; l < W; ++l) {
+      lanes_bench::arm6_derivatives& o = out[first + l];
+      for (int k = 0; k < 6; ++k) o.qdd[k] = lane(d.ud(k), l);
+      for (int k = 0; k < 36; ++k) o.dq[k] = lane(d.dud_dq(k), l), o.dqd[k] = lane(d.dud_du(k), l);
+    }
+  }
+}
 template <class L>
 void chain24_batches(const chain_dynamics::input* in, chain_dynamics::output* out) {
   tree_batches<L, 24, chain_model::system<24>, chain_model::B<24>>(in, out);
@@ -185,6 +217,12 @@ void pendulum_absolute_kane_float_x16(const small::pendulum_in* in, small::pendu
 #endif
 KANE_LANES_KANE(arm6_forward, dynamics6::input, dynamics6::output, arm6_batches)
 KANE_LANES_KANE(disc, disc_dynamics::input, disc_dynamics::output, disc_batches)
+KANE_LANES_NARROW(arm6_derivatives, dynamics6::input, arm6_derivatives, arm6_derivative_batches)
+#if KANE_LANES_WIDE
+void arm6_derivatives_kane_x8(const dynamics6::input* in, arm6_derivatives* out) {
+  arm6_derivative_batches<kane::lanes<double, 8>>(in, out);
+}
+#endif
 KANE_LANES_KANE(bicycle, bicycle::input, bicycle::rates, bicycle_batches)
 KANE_LANES_KANE(chain24_forward, chain_dynamics::input, chain_dynamics::output, chain24_batches)
 }  // namespace lanes_bench

@@ -2,8 +2,8 @@
 // a batch of 64 states, by kane's scalar path (one state a call), by lanes of 4 and 8 doubles and
 // 16 floats (kane/scalars/lanes.hpp; each batch loaded into lanes and stored back), and by the
 // hand-written and SymPy functions called state by state; the same for the 6-revolute arm's and the
-// 24-link chain's forward dynamics and the rolling disc's and the bicycle's u'. A row's time is that
-// of 64 states.
+// 24-link chain's forward dynamics, the arm's derivatives and the rolling disc's and the bicycle's u'. A
+// row's time is that of 64 states.
 #pragma once
 
 #include "../bicycle/bicycle.hpp"
@@ -43,6 +43,13 @@ void arm6_forward_kane(const dynamics6::input*, dynamics6::output*);
 void arm6_forward_kane_x4(const dynamics6::input*, dynamics6::output*);
 void arm6_forward_kane_x8(const dynamics6::input*, dynamics6::output*);
 void arm6_forward_kane_float_x16(const dynamics6::input*, dynamics6::output*);
+// the arm's forward dynamics and its derivatives by q and q' (forward_dynamics_derivatives)
+struct arm6_derivatives {
+  double qdd[6], dq[36], dqd[36];
+};
+void arm6_derivatives_kane(const dynamics6::input*, arm6_derivatives*);
+void arm6_derivatives_kane_x4(const dynamics6::input*, arm6_derivatives*);
+void arm6_derivatives_kane_x8(const dynamics6::input*, arm6_derivatives*);
 // the rolling disc's and the bicycle's u' (constrained_motion), the 24-link chain's forward dynamics
 void disc_kane(const disc_dynamics::input*, disc_dynamics::output*);
 void disc_kane_x4(const disc_dynamics::input*, disc_dynamics::output*);

@@ -54,7 +54,7 @@ KANE_ALWAYS_INLINE void free_inward(const P& p, std::size_t g, Tau& tau, Square&
   std::array<spatial<S>, 6> ys;
   std::array<vec, 3> bs;
   for (std::size_t r = 0; r < 6; ++r) {
-    ys[r] = times(p.y[g], p.screw[r]), tau(Eigen::Index(r)) = dot6(p.screw[r], p.f[g]);
+    ys[r] = times(p.own[g], p.screw[r]), tau(Eigen::Index(r)) = dot6(p.screw[r], p.f[g]);
     if (r < 3) bs[r] = p.b[g].transposed_times(p.screw[r]);
     if constexpr (Mass)
       for (std::size_t c = 0; c <= r; ++c)
@@ -68,8 +68,8 @@ KANE_ALWAYS_INLINE void free_inward(const P& p, std::size_t g, Tau& tau, Square&
       dq(k, l) = dot6(ys[r], p.da[c]) + dot3(bs[r], p.dv[c].w);
       du(k, l) = dot6(ys[r], wu) + dot3(bs[r], p.screw[c].w);
     }
-    const spatial<S> fq = times(p.y[g], p.da[c]) + p.b[g].times(p.dv[c]) + cross_force(p.screw[c], p.f[g]);
-    const spatial<S> fu = times(p.y[g], wu) + p.b[g].times(p.screw[c]);
+    const spatial<S> fq = times(p.own[g], p.da[c]) + p.b[g].times(p.dv[c]) + cross_force(p.screw[c], p.f[g]);
+    const spatial<S> fu = times(p.own[g], wu) + p.b[g].times(p.screw[c]);
     for (std::size_t r = 3; r < 6; ++r)
       dq(Eigen::Index(r), l) = dot6(p.screw[r], fq), du(Eigen::Index(r), l) = dot6(p.screw[r], fu);
   }

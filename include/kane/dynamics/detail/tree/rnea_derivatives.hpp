@@ -51,10 +51,10 @@ struct tree_partials {
   static constexpr std::size_t nf = JF::nf, n = JF::n;
   static constexpr bool loaded = loads_below_root<JF, Sys>;
 
-  std::array<m3<S>, nf> rot;                    // R of each frame, by columns
-  std::array<vec, nf> at;                       // its origin from O
-  std::array<composite_inertia<S>, nf> own, y;  // each frame's items, and those below it
-  std::array<spatial<S>, nf> load, v, a, f;     // -f_ext about O; velocity, acceleration, force
+  std::array<m3<S>, nf> rot;                 // R of each frame, by columns
+  std::array<vec, nf> at;                    // its origin from O
+  std::array<composite_inertia<S>, nf> own;  // each frame's items; inward: and those below it
+  std::array<spatial<S>, nf> load, v, a, f;  // -f_ext about O; velocity, acceleration, force
   std::array<variation<S>, nf> b;
   std::array<spatial<S>, n> screw, dv, da;
   static constexpr bool floating = t.free >= 0;
@@ -133,10 +133,10 @@ struct tree_partials {
   // Up to this many frames the inward pass is unrolled.
   static constexpr std::size_t unrolled_frames = 8;
   static constexpr bool packed = one_path && n >= packed_from && !floating;
-  // tau, M (when Mass), dtau/dq and dtau/du.
+  // tau, M (when Mass), dtau/dq and dtau/du; own summed in place, once.
   template <bool Mass = true, class Tau, class Square>
   KANE_ALWAYS_INLINE void inward(Tau& tau, Square& m, Square& dq, Square& du) {
-    y = own;
+    std::array<composite_inertia<S>, nf>& y = own;
     if constexpr (!one_path) {
       dq.setZero(), du.setZero();
       if constexpr (Mass) m.setZero();
