@@ -31,15 +31,13 @@ template <class Sys, rates Rates, class Ev>
 forward_result<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
   using S = typename Ev::scalar;
   constexpr std::size_t n = Ev::nu;
-  if constexpr (recursive_form<Sys, Ev> && !free_joint<Sys, Ev> && (n > articulated_above) &&
-                std::is_floating_point_v<S>) {
+  if constexpr (recursive_form<Sys, Ev> && !free_joint<Sys, Ev> && (n > articulated_above)) {
     static_assert(system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
     using JF = joint_form_of<Sys, Ev>;
     Eigen::Matrix<S, int(n), 1> ud;
     const body_frames<JF, Ev> bf(ev);
-    solve_status status = ev.status();
-    if (!articulated_accelerations<JF, Sys>(bf, ev, ud) && status == solve_status::ok)
-      status = solve_status::singular;
+    status_of<S> status = ev.status();
+    fail_unless(status, articulated_accelerations<JF, Sys>(bf, ev, ud), solve_status::singular);
     status = finished(ud, status);
     return {ud, status};
   } else if constexpr (known_masses<Sys, Ev>()) {

@@ -86,9 +86,10 @@ KANE_ALWAYS_INLINE void add_moved(articulated<S>& z, const sym3<S>& a, const m3<
   }
 }
 
-// u' of the joint-form system Sys; false where an articulated inertia along a speed is not positive.
+// u' of the joint-form system Sys; false where an articulated inertia along a speed is not positive
+// (a mask per lane for lanes).
 template <class JF, class Sys, class Ev, class Out>
-KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf, const Ev& ev, Out& ud) {
+KANE_ALWAYS_INLINE auto articulated_accelerations(const body_frames<JF, Ev>& bf, const Ev& ev, Out& ud) {
   using S = typename Ev::scalar;
   using vec = v3<S>;
   static constexpr auto& t = JF::table;
@@ -141,7 +142,7 @@ KANE_ALWAYS_INLINE bool articulated_accelerations(const body_frames<JF, Ev>& bf,
     y.n = cross3(w[g], hh) + cross3(v[g], ll), y.f = cross3(w[g], ll);
     if constexpr (loaded) y.n = y.n + fn[g], y.f = y.f + ff[g];
   }
-  bool ok = true;
+  auto ok = lane_traits<S>::truth(true);
   for (std::size_t g = nf - 1; g > 0; --g)  // leaves first
     step(g, [&](const auto& e, auto KC, auto OC, const vec& kg) KANE_ALWAYS_INLINE_LAMBDA {
       constexpr auto K = decltype(KC)::value;
