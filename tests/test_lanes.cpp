@@ -111,6 +111,57 @@ TEST_CASE("lanes: to_lanes pads a short batch with its first state, from_lanes w
   CHECK(back[3] == std::array<double, 3>{0, 0, 0});  // not written
 }
 
+namespace {
+// to_lanes and from_lanes of count states of N numbers against lane l = state l, number by number
+template <class S, std::size_t W, std::size_t N>
+void check_transposes(std::size_t count) {
+  std::vector<std::array<S, N>> xs(W);
+  for (std::size_t l = 0; l < W; ++l)
+    for (std::size_t k = 0; k < N; ++k) xs[l][k] = S(100 * l + k);
+  const auto x = kane::to_lanes<W>(xs.data(), count);
+  std::vector<std::array<S, N>> back(W);
+  for (auto& b : back) b.fill(S(-1));
+  kane::from_lanes(x, back.data(), count);
+  for (std::size_t l = 0; l < W; ++l) {
+    INFO("W " << W << ", N " << N << ", count " << count << ", lane " << l);
+    for (std::size_t k = 0; k < N; ++k) {
+      CHECK(x[k][l] == xs[l < count ? l : 0][k]);
+      CHECK(back[l][k] == (l < count ? xs[l][k] : S(-1)));
+    }
+  }
+}
+}  // namespace
+
+TEST_CASE("lanes: to_lanes and from_lanes of states shorter and longer than the lanes", "[lanes]") {
+  check_transposes<double, 2, 5>(2);
+  check_transposes<double, 4, 3>(4);  // fewer numbers than lanes
+  check_transposes<double, 4, 6>(4);
+  check_transposes<double, 4, 8>(4);
+  check_transposes<double, 4, 8>(3);   // a short batch
+  check_transposes<double, 8, 14>(8);  // the spacecraft's state
+  check_transposes<float, 16, 20>(16);
+  check_transposes<float, 8, 8>(8);
+}
+
+TEST_CASE("lanes: the exact powers of two that scale a solve, lane by lane as for one number", "[lanes]") {
+  using L = kane::lanes<double, 8>;
+  const double tiny = std::numeric_limits<double>::denorm_min(), big = std::numeric_limits<double>::max();
+  const std::array<std::array<double, 8>, 2> xs{
+      {{1.0, 3.0, 0.75, 1e-310, tiny, 1e300, big, 0x1p-1022},
+       {0x1p-1023, 0x1.8p-1023, 2.0, 0.5, 7e-5, 1e-200, 1e200, 0x1p1023}}};
+  for (const auto& x : xs) {
+    const L r = kane::detail::inverse_power_of_two(L::generate([&](std::size_t l) { return x[l]; }));
+    for (std::size_t l = 0; l < 8; ++l) {
+      INFO("x = " << x[l]);
+      CHECK(r[l] == kane::detail::inverse_power_of_two(x[l]));
+      int e = 0;
+      std::frexp(x[l], &e);  // 2^(e-1) <= x < 2^e, e clamped so that 2^-e is normal
+      CHECK(r[l] == std::ldexp(1.0, -std::clamp(e, std::numeric_limits<double>::min_exponent - 2,
+                                                std::numeric_limits<double>::max_exponent - 2)));
+    }
+  }
+}
+
 TEST_CASE("lanes: the heavy top's motion, lane by lane as the scalar path, statuses per lane", "[lanes]") {
   auto xs = states<double, 6>(21, 7);  // 21 = 2 * 8 + 5: the last batch short
   xs[2][1] = 0;                        // q2 = 0: the body rates do not define q' (singular)

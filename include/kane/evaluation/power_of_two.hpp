@@ -30,12 +30,19 @@ constexpr S pow2(int e) {
 template <class S>
 KANE_ALWAYS_INLINE auto inverse_power_of_two(const S& x) {
   using real = typename real_type<S>::type;
-  if constexpr (lane_traits<S>::width > 1) {  // lane by lane
+  using limits = std::numeric_limits<real>;
+  if constexpr (lane_traits<S>::width > 1 && std::is_same_v<real, double> && limits::is_iec559) {
+    using vector = typename S::vector;  // the doubles' bits, as below, in every lane
+    typedef long long ints __attribute__((vector_size(sizeof(vector))));
+    const ints biased = (__builtin_bit_cast(ints, x.v) >> 52) & 0x7ff;  // a builtin: no call returns a vector
+    ints e = biased != 0 ? biased - 1022 : x.v >= pow2<double>(-1023) ? ints{} - 1022 : ints{} - 1023;
+    e = e > limits::max_exponent - 2 ? ints{} + (limits::max_exponent - 2) : e;  // e >= -1023 always
+    return S(__builtin_bit_cast(vector, (1023 - e) << 52));
+  } else if constexpr (lane_traits<S>::width > 1) {  // lane by lane
     S r;
     for (std::size_t i = 0; i < lane_traits<S>::width; ++i) r.set(i, inverse_power_of_two(x[i]));
     return r;
   } else {
-    using limits = std::numeric_limits<real>;
     int e = 0;
     if constexpr (std::is_same_v<S, double> && limits::is_iec559) {
       const int biased = int((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff);
