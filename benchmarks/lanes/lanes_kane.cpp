@@ -66,6 +66,34 @@ void batches(const In* in, Out* out) {
   batches(instance<Motion>(), in, out);
 }
 
+// x' of the batch held in lanes (lanes_models.hpp): the states loaded at the first call
+template <class Motion>
+struct held {
+  using L = typename Motion::scalar;
+  static constexpr int W = int(kane::lane_traits<L>::width), N = int(Motion::size),
+                       B = lanes_bench::batch / W;
+  static inline std::array<std::array<L, N>, B> x, xd;
+  template <class In>
+  static const void* run(const In* in) {
+    static const bool loaded = [&] {
+      for (int b = 0; b < B; ++b)
+        for (int k = 0; k < N; ++k)
+          x[b][k] = L::generate([&](std::size_t l) { return in[b * W + int(l)].x[k]; });
+      return true;
+    }();
+    (void)loaded;
+    Motion& motion = instance<Motion>();
+    for (int b = 0; b < B; ++b) motion(x[b], xd[b], L(0.0));
+    return &xd;
+  }
+  template <class Out>
+  static void out(Out* o) {
+    for (int b = 0; b < B; ++b)
+      for (int l = 0; l < W; ++l)
+        for (int k = 0; k < N; ++k) o[b * W + l].xd[k] = xd[b][k][std::size_t(l)];
+  }
+};
+
 template <class S>
 using disc = kane::constrained_motion<models::disc::system, models::disc::rolling, S>;
 template <class S>
@@ -170,6 +198,20 @@ void top_kane_x8(const small::top_in* in, small::top_out* out) {
 #if KANE_LANES_WIDE
 void top_kane_float_x16(const small::top_in* in, small::top_out* out) {
   batches<top<kane::lanes<float, 16>>>(in, out);
+}
+#endif
+#if KANE_LANES_WIDE
+const void* top_kane_x8_held(const small::top_in* in) { return held<top<kane::lanes<double, 8>>>::run(in); }
+const void* spacecraft_kane_x8_held(const small::spacecraft_in* in) {
+  return held<spacecraft<kane::lanes<double, 8>>>::run(in);
+}
+const void* pendulum_absolute_kane_x8_held(const small::pendulum_in* in) {
+  return held<pendulum_absolute<kane::lanes<double, 8>>>::run(in);
+}
+void top_held_out(small::top_out* out) { held<top<kane::lanes<double, 8>>>::out(out); }
+void spacecraft_held_out(small::spacecraft_out* out) { held<spacecraft<kane::lanes<double, 8>>>::out(out); }
+void pendulum_absolute_held_out(small::pendulum_out* out) {
+  held<pendulum_absolute<kane::lanes<double, 8>>>::out(out);
 }
 #endif
 void spacecraft_kane(const small::spacecraft_in* in, small::spacecraft_out* out) {
