@@ -29,8 +29,8 @@ KANE_ALWAYS_INLINE void lane_sincos(const vector& x, vector& s, vector& c) {
   typedef I ints __attribute__((vector_size(sizeof(S) * W)));
   const vector ax = x < vector{} ? -x : x;
   const ints near = ax <= vector{} + S(dbl ? 1e5 : 8192);
-  I every = near[0];  // all bits set where every lane is near: an AND without branches
-  for (std::size_t i = 1; i < W; ++i) every &= near[i];
+  bool all = true;
+  for (std::size_t i = 0; i < W; ++i) all = all && near[i] != 0;
   const vector xr = near ? x : vector{};
   const vector t = xr * S(0.63661977236758134308) + (xr < vector{} ? S(-0.5) : S(0.5));
   ints k;
@@ -71,7 +71,7 @@ KANE_ALWAYS_INLINE void lane_sincos(const vector& x, vector& s, vector& c) {
   const ints odd = (k & 1) != 0, sn = (k & 2) != 0, cn = ((k + 1) & 2) != 0;
   vector sv = odd ? cr : r == vector{} ? r : sr, cv = odd ? sr : cr;  // sin -0 = -0
   s = sn ? -sv : sv, c = cn ? -cv : cv;
-  if (every == 0)
+  if (!all)
     for (std::size_t i = 0; i < W; ++i)
       if (!near[i]) s[i] = std::sin(x[i]), c[i] = std::cos(x[i]);
 }
