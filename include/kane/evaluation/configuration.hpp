@@ -48,6 +48,28 @@ struct newton_result {
 };
 
 namespace detail {
+// f of H at ev's state; max_k |f_k| into residual and sum_k (f_k - f_k) into sum: 0 where every f_k
+// is finite.
+template <class H, class Ev, class F, class S>
+KANE_ALWAYS_INLINE void constraint_values(const Ev& ev, F& f, S& residual, S& sum) {
+  residual = S(0), sum = S(0);
+  static_for<H::m>([&](auto k) {
+    f[k][0] = eval_scalar(std::get<k>(H::equations), ev);
+    using std::abs;
+    residual = lane_traits<S>::select(abs(f[k][0]) > residual, abs(f[k][0]), residual);
+    sum += f[k][0] - f[k][0];
+  });
+}
+// J = df/dq_dep of H at ev's state, its entries known to be 0 or 1 left as the solve reads them.
+template <class H, class Ev, class J>
+KANE_ALWAYS_INLINE void constraint_jacobian(const Ev& ev, J& jac) {
+  constexpr std::size_t m = H::m;
+  static_for<m * m>([&](auto kj) {
+    constexpr std::size_t k = kj / m, j = kj % m;
+    if constexpr (newton_system<H>::m[k][j] == entry::other)
+      jac[k][j] = eval_scalar(H::template jacobian<k, j>(), ev);
+  });
+}
 // solve_configuration over lanes: a lane that stops keeps its iterate and its status, the others
 // go on, until none is left.
 template <class H, class Ev>
@@ -68,13 +90,8 @@ newton_result<typename Ev::scalar> newton_lanes(Ev& ev, typename Ev::state_type&
     ev.update(s);
     table<S, m, 1> f, dq;
     table<S, m, m> jac{};
-    S residual = S(0), sum = S(0);
-    static_for<m>([&](auto k) {
-      f[k][0] = eval_scalar(std::get<k>(H::equations), ev);
-      using std::abs;
-      residual = traits::select(abs(f[k][0]) > residual, abs(f[k][0]), residual);
-      sum += f[k][0] - f[k][0];
-    });
+    S residual, sum;
+    constraint_values<H>(ev, f, residual, sum);
     const auto finite = sum == S(0);
     out.iterations = step;
     out.residual = traits::select(
@@ -84,11 +101,7 @@ newton_result<typename Ev::scalar> newton_lanes(Ev& ev, typename Ev::state_type&
     stop(residual <= options.tolerance, St(solve_status::ok));
     if (step == options.max_iterations) stop(traits::truth(true), St(solve_status::not_converged));
     if (!any_of(active)) return out;
-    static_for<m * m>([&](auto kj) {
-      constexpr std::size_t k = kj / m, j = kj % m;
-      if constexpr (newton_system<H>::m[k][j] == entry::other)
-        jac[k][j] = eval_scalar(H::template jacobian<k, j>(), ev);
-    });
+    constraint_jacobian<H>(ev, jac);
     const St solved = solve_structured<newton_system<H>>(jac, f, dq);
     stop(!ok_of<S>(solved), solved);
     static_for<m>([&](auto j) {
@@ -117,13 +130,8 @@ newton_result<typename Ev::scalar> solve_configuration(Ev& ev, typename Ev::stat
       ev.update(s);
       detail::table<S, m, 1> f, dq;
       detail::table<S, m, m> jac{};
-      S residual = S(0), sum = S(0);
-      detail::static_for<m>([&](auto k) {
-        f[k][0] = detail::eval_scalar(std::get<k>(H::equations), ev);
-        using std::abs;
-        residual = abs(f[k][0]) > residual ? abs(f[k][0]) : residual;
-        sum += f[k][0] - f[k][0];
-      });
+      S residual, sum;
+      detail::constraint_values<H>(ev, f, residual, sum);
       out.iterations = step, out.residual = sum == S(0) ? residual : std::numeric_limits<S>::quiet_NaN();
       if (ev.status() != solve_status::ok || !(sum == S(0))) {  // the evaluator's own status first
         out.status = ev.status() != solve_status::ok ? ev.status() : solve_status::not_finite;
@@ -137,13 +145,7 @@ newton_result<typename Ev::scalar> solve_configuration(Ev& ev, typename Ev::stat
         out.status = solve_status::not_converged;
         return out;
       }
-      detail::static_for<m * m>([&](auto kj) {
-        constexpr std::size_t k = kj / m, j = kj % m;
-        if constexpr (Sys::m[k][j] == detail::entry::other) {
-          constexpr auto c = H::template jacobian<k, j>();
-          jac[k][j] = detail::eval_scalar(c, ev);
-        }
-      });
+      detail::constraint_jacobian<H>(ev, jac);
       if (const solve_status solved = detail::solve_structured<Sys>(jac, f, dq); solved != solve_status::ok) {
         out.status = solved;
         return out;

@@ -70,10 +70,7 @@ solve_status dependent_jets(const typename Ev::state_type& s, JSt& js, std::size
   typename pose_evaluator<Ev>::type ev;
   ev.update(s);
   table<S, m, m> jac{};
-  static_for<m * m>([&](auto kj) {
-    constexpr std::size_t k = kj / m, j = kj % m;
-    if constexpr (Sys::m[k][j] == entry::other) jac[k][j] = eval_scalar(H::template jacobian<k, j>(), ev);
-  });
+  constraint_jacobian<H>(ev, jac);
   const auto factors = factor_structured<Sys>(jac);
   solve_status status = ev.status();
   static_for<qi.size()>([&](auto t) {
