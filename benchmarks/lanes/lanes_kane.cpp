@@ -116,8 +116,8 @@ void bicycle_batches(const bicycle::input* in, bicycle::rates* out) {
 
 // q'' = u' of a chain of N revolute joints (System, its last frame Last) at q and u = q', W states a
 // call, as ../dynamics6/dynamics6_kane.cpp writes it
-template <class L, std::size_t N, class System, class Last, class In, class Out>
-void tree_batches(const In* in, Out* out) {
+template <class L, std::size_t N, class Last, class In, class Out, class Store>
+void tree_batches(const In* in, Out* out, Store store) {
   using S = typename kane::real_type<L>::type;
   constexpr int W = int(kane::lane_traits<L>::width);
   using state = kane::state<L, N>;
@@ -133,47 +133,35 @@ void tree_batches(const In* in, Out* out) {
     }
     evaluator ev;
     ev.update(s);
-    const auto ud = kane::forward_dynamics<System>(ev).ud;
-    for (int l = 0; l < W; ++l)
-      for (int k = 0; k < int(N); ++k) {
-        if constexpr (W == 1)
-          out[first].qdd[k] = ud(k);
-        else
-          out[first + l].qdd[k] = double(ud(k)[std::size_t(l)]);
-      }
+    store(ev, out + first);
   }
+}
+// lane l of x as a double
+template <class L>
+double lane(const L& x, int l) {
+  if constexpr (kane::lane_traits<L>::width == 1)
+    return x;
+  else
+    return double(x[std::size_t(l)]);
+}
+template <class L, std::size_t N, class System, class Last, class In, class Out>
+void tree_batches(const In* in, Out* out) {
+  tree_batches<L, N, Last>(in, out, [](const auto& ev, Out* o) {
+    const auto ud = kane::forward_dynamics<System>(ev).ud;
+    for (int l = 0; l < int(kane::lane_traits<L>::width); ++l)
+      for (int k = 0; k < int(N); ++k) o[l].qdd[k] = lane(ud(k), l);
+  });
 }
 // q'' and its derivatives by q and q' of the arm, W states a call (forward_dynamics_derivatives)
 template <class L>
 void arm6_derivative_batches(const dynamics6::input* in, lanes_bench::arm6_derivatives* out) {
-  constexpr int W = int(kane::lane_traits<L>::width);
-  using state = kane::state<L, 6>;
-  using evaluator =
-      kane::evaluator<state, kane::frames<models::arm6::B6>, kane::level::pose, kane::qdot_speeds<6>>;
-  const auto lane = [](const L& x, int l) {
-    if constexpr (W == 1)
-      return x;
-    else
-      return x[std::size_t(l)];
-  };
-  for (int first = 0; first < lanes_bench::batch; first += W) {
-    state s;
-    for (std::size_t k = 0; k < 6; ++k) {
-      if constexpr (W == 1)
-        s.q[k] = in[first].q[k], s.u[k] = in[first].qd[k];
-      else
-        s.q[k] = L::generate([&](std::size_t l) { return in[first + int(l)].q[k]; }),
-        s.u[k] = L::generate([&](std::size_t l) { return in[first + int(l)].qd[k]; });
-    }
-    evaluator ev;
-    ev.update(s);
+  tree_batches<L, 6, models::arm6::B6>(in, out, [](const auto& ev, lanes_bench::arm6_derivatives* o) {
     const auto d = kane::forward_dynamics_derivatives<models::arm6::links>(ev);
-    for (int l = 0; l < W; ++l) {
-      lanes_bench::arm6_derivatives& o = out[first + l];
-      for (int k = 0; k < 6; ++k) o.qdd[k] = lane(d.ud(k), l);
-      for (int k = 0; k < 36; ++k) o.dq[k] = lane(d.dud_dq(k), l), o.dqd[k] = lane(d.dud_du(k), l);
+    for (int l = 0; l < int(kane::lane_traits<L>::width); ++l) {
+      for (int k = 0; k < 6; ++k) o[l].qdd[k] = lane(d.ud(k), l);
+      for (int k = 0; k < 36; ++k) o[l].dq[k] = lane(d.dud_dq(k), l), o[l].dqd[k] = lane(d.dud_du(k), l);
     }
-  }
+  });
 }
 template <class L>
 void chain24_batches(const chain_dynamics::input* in, chain_dynamics::output* out) {
