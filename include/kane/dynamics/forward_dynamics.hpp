@@ -26,7 +26,7 @@
 namespace kane {
 
 namespace detail {
-// u' = M^-1 f; rates::at_rest: the state's u' is 0 (as in motion.hpp).
+// u' = M^-1 f; rates::at_rest or zero: the state's u' is 0 (zero: as in motion.hpp).
 template <class Sys, rates Rates, class Ev>
 forward_result<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
   using S = typename Ev::scalar;

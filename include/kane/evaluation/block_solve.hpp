@@ -30,6 +30,7 @@
 #include "kane/detail/invert.hpp"
 #include "kane/detail/list.hpp"
 #include "kane/detail/structure.hpp"
+#include "kane/detail/wide_stores.hpp"
 #include "kane/evaluation/power_of_two.hpp"
 #include "kane/evaluation/status.hpp"
 #include "kane/scalars/scalar.hpp"
@@ -224,10 +225,10 @@ KANE_ALWAYS_INLINE status_of<S> substitute_structured(const table<S, Sys::n, Sys
       });
     } else {
       const auto block = scaled_block<Sys, first, size>(m, fac.f);
-      Eigen::Matrix<S, int(size), int(size)> inverse;  // (f M_B)^-1
-      static_for_inline<size * size>([&](auto ab) KANE_ALWAYS_INLINE_LAMBDA {
-        constexpr std::size_t a = ab / size, e = ab % size;
-        inverse(a, e) = fac.inverse[Sys::form.order[first + a]][Sys::form.order[first + e]];
+      Eigen::Matrix<S, int(size), int(size)> inverse;  // (f M_B)^-1, column after column in blocks
+      store_in_blocks<size * size>(inverse.data(), [&](auto ea) KANE_ALWAYS_INLINE_LAMBDA {
+        constexpr std::size_t a = ea % size, e = ea / size;
+        return fac.inverse[Sys::form.order[first + a]][Sys::form.order[first + e]];
       });
       static_for_inline<k>([&](auto j) KANE_ALWAYS_INLINE_LAMBDA {
         if constexpr (Sys::x[Sys::form.order[first]][j] != entry::zero) {

@@ -12,6 +12,7 @@
 #include "kane/detail/choices.hpp"
 #include "kane/detail/tree.hpp"
 #include "kane/detail/v3.hpp"
+#include "kane/evaluation/edge_structure.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/frames/vec.hpp"
 #include "kane/kinematics/derivative.hpp"
@@ -51,9 +52,27 @@ struct root_unit : std::false_type {};
 template <class F, int I>
 struct root_unit<unit<F, I>> : std::bool_constant<std::is_void_v<typename lifted_t<F, I>::tree_parent>> {};
 
+// The zeros of ^R w^F (D = 0) or ^R alpha^F (D = 1) in the root's components: each simple
+// rotation above F adds theta' k (and theta'' k + theta' ^R w^P x k), k of pattern axis_pattern.
+template <class F, int D>
+constexpr pattern3 rate_zeros() {
+  using P = typename F::tree_parent;
+  if constexpr (std::is_void_v<P>)
+    return {entry::zero, entry::zero, entry::zero};
+  else if constexpr (spin_edge<F> || matrix_edge<F>)
+    return unknown3;
+  else {
+    pattern3 k = axis_pattern<F>();
+    for (entry& e : k)
+      if (e != entry::zero) e = entry::other;
+    const pattern3 z = common_zeros(rate_zeros<P, D>(), k);
+    return D == 0 ? z : common_zeros(z, cross_zeros(rate_zeros<P, 0>(), k));
+  }
+}
 // The components of v known to be zero at compile time (entry::zero; the others entry::other), in
-// the root's components (A void) or in A's: a unit vector of that frame has two zeros; scaling,
-// negation, sums and cross products keep what follows from them.
+// the root's components (A void) or in A's: a unit vector of that frame has two zeros, one of a
+// frame below the root those of its column (column_pattern), and so do angular velocities and
+// accelerations (rate_zeros); scaling, negation, sums and cross products keep what follows.
 template <class A, class V>
 constexpr pattern3 zeros_in() {
   using C = const V&;
@@ -64,11 +83,18 @@ constexpr pattern3 zeros_in() {
     constexpr bool own = std::is_void_v<A> ? std::is_void_v<typename F::tree_parent>
                                            : std::is_same_v<typename V::frame, A> || std::is_same_v<F, A>;
     pattern3 z = unknown3;
-    if (own)
+    if (own) {
       for (std::size_t i = 0; i < 3; ++i)
         if (int(i) != V::index - 1) z[i] = entry::zero;
+    } else if (std::is_void_v<A>) {
+      constexpr auto c = column_pattern<F>();
+      for (std::size_t i = 0; i < 3; ++i)
+        if (c[std::size_t(3 * (V::index - 1)) + i] == entry::zero) z[i] = entry::zero;
+    }
     return z;
-  } else if constexpr (is_v<V, scaled> || is_v<V, vneg> || Quantity<V>)
+  } else if constexpr (std::is_void_v<A> && (is_v<V, omega> || is_v<V, alpha>))
+    return rate_zeros < typename V::frame, is_v<V, alpha> ? 1 : 0 > ();
+  else if constexpr (is_v<V, scaled> || is_v<V, vneg> || Quantity<V>)
     return zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().v)>>();
   else if constexpr (is_v<V, vsum> || is_v<V, vdiff>)
     return common_zeros(zeros_in<A, std::remove_cvref_t<decltype(std::declval<C>().l)>>(),

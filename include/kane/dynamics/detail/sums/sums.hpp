@@ -26,6 +26,7 @@
 #include "kane/dynamics/bodies.hpp"
 #include "kane/dynamics/detail/sums/columns.hpp"
 #include "kane/dynamics/detail/sums/known_mass_matrix.hpp"
+#include "kane/dynamics/detail/sums/rest_bias.hpp"
 #include "kane/dynamics/detail/sums/terms.hpp"
 #include "kane/dynamics/detail/system_rules.hpp"
 #include "kane/dynamics/results.hpp"
@@ -58,9 +59,11 @@ Eigen::Matrix<typename Ev::scalar, 3, 1> in_frame_of(const X& x, const Ev& ev) {
 }
 // The columns of M that the partial velocities of X reach, as a type. g++ 12: it merged
 // instantiations of one function template that differed only in an array argument.
-template <class Cols, class Sp, class X>
+// kinds: the columns' patterns in A's components (columns.hpp).
+template <class Cols, class Sp, class X, class A = void>
 struct reached_columns {
   static constexpr auto value = Cols::template nonzero<nonzero_columns<Sp, X>()>();
+  static constexpr auto kinds = Cols::template kinds<nonzero_columns<Sp, X, A>()>();
 };
 // r N + c for r <= c in the columns Nz::value
 template <class Nz, std::size_t N>
@@ -70,15 +73,16 @@ constexpr std::array<bool, N * N> upper_entries() {
     for (std::size_t c = r; c < N; ++c) at[r * N + c] = Nz::value[r] && Nz::value[c];
   return at;
 }
-// The upper triangle of M += a^T b (symmetric: b = W a, W symmetric) over the columns Nz::value.
-template <class Nz, class S, int N>
+// The upper triangle of M += a^T b (symmetric: b = W a, W symmetric) over the columns Nz::value,
+// without the components that the patterns Nz::kinds of a (and of b, Scaled: b = m a) know to be zero.
+template <class Nz, bool Scaled, class S, int N>
 KANE_ALWAYS_INLINE void add_upper(Eigen::Matrix<S, N, N>& m, const Eigen::Matrix<S, 3, N>& a,
                                   const Eigen::Matrix<S, 3, N>& b) {
   static_for_where<upper_entries<Nz, std::size_t(N)>()>([&](auto rc) {
     constexpr std::size_t r = rc / std::size_t(N), c = rc % std::size_t(N);
-    m(Eigen::Index(r), Eigen::Index(c)) += a(0, Eigen::Index(r)) * b(0, Eigen::Index(c)) +
-                                           a(1, Eigen::Index(r)) * b(1, Eigen::Index(c)) +
-                                           a(2, Eigen::Index(r)) * b(2, Eigen::Index(c));
+    constexpr pattern3 k = Scaled ? product_zeros(Nz::kinds[r], Nz::kinds[c]) : Nz::kinds[r];
+    if constexpr (!all_zero(k))
+      m(Eigen::Index(r), Eigen::Index(c)) += dot_where<k>(a.col(Eigen::Index(r)), b.col(Eigen::Index(c)));
   });
 }
 template <class Ev>
@@ -141,7 +145,10 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
     constexpr auto nz = detail::nonzero_columns<Sp, std::remove_cvref_t<decltype(x)>, A>();
     auto v = linear_parts_in<A, linear_part::table>(x, ev);
     if constexpr (has(Parts, parts::forcing)) {
-      bias = detail::in_frame_of<A>(x_dot, ev);
+      if constexpr (Rates == rates::zero)
+        bias = detail::in_frame_of<A>(rest_bias<typename Ev::speed_set>(x_dot), ev);
+      else
+        bias = detail::in_frame_of<A>(x_dot, ev);
       if constexpr (Rates == rates::of_state) bias -= product_in_blocks(v, ud);
       cols.template add_bias<nz>(bias, v);
     }
@@ -160,12 +167,16 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
     const S mass = detail::eval_scalar(m, ev);
     if constexpr (has(Parts, parts::mass_matrix)) {
       const Eigen::Matrix<S, 3, int(n)> mv = mass * v;
-      detail::add_upper<reached_columns<Cols, Sp, X>>(out.M, v, mv);
+      detail::add_upper<reached_columns<Cols, Sp, X, A>, true>(out.M, v, mv);
     }
-    if constexpr (has(Parts, parts::forcing))
-      detail::add_transposed<Cols::template kinds<detail::nonzero_columns<Sp, X, A>()>()>(
-          out.f, v,
-          Eigen::Matrix<S, 3, 1>(mass * (in_frame_of<A>(gravity_of(typename Sys::items{}), ev) - a0)));
+    if constexpr (has(Parts, parts::forcing)) {
+      const Eigen::Matrix<S, 3, 1> g = in_frame_of<A>(gravity_of(typename Sys::items{}), ev);
+      Eigen::Matrix<S, 3, 1> load;  // m (g - a0) number by number: no wide load of a0 stored so
+      store_in_blocks<3>(load.data(), [&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
+        return mass * (g(Eigen::Index(i)) - a0(Eigen::Index(i)));
+      });
+      detail::add_transposed<Cols::template kinds<detail::nonzero_columns<Sp, X, A>()>()>(out.f, v, load);
+    }
   };
   [&]<class... X>(detail::list<X...>) {
     (
@@ -200,7 +211,7 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
             }();
             if constexpr (has(Parts, parts::mass_matrix)) {
               const Eigen::Matrix<S, 3, int(n)> iw = product_in_blocks(i, w);
-              detail::add_upper<reached_columns<Cols, Sp, Om>>(out.M, w, iw);
+              detail::add_upper<reached_columns<Cols, Sp, Om, A>, false>(out.M, w, iw);
             }
             if constexpr (has(Parts, parts::forcing)) {
               // -(I alpha0 + w x I w) number by number: no wide load of what was stored so
@@ -232,11 +243,11 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
         ...);
   }(typename Sys::items{});
 }
-// M and f along the columns Cols. rates::at_rest: the caller's state has u' = 0 (the
-// right-hand sides of motion.hpp), so the bias accelerations are the evaluator's
-// (a - v u' would multiply by zeros). parts::mass_matrix: M alone (f stays 0: no
-// velocity, acceleration or load is read). parts::forcing: f alone (forcing_only); where M is known,
-// not checked (the caller checks u' = M^-1 f). With rates::at_rest at a state of any u', f is -tau.
+// M and f along the columns Cols. rates::at_rest: the bias accelerations are the evaluator's
+// (a - v u' would multiply by zeros); at a state of any u', f is -tau. rates::zero: every u' of the
+// caller's state is 0 (motion.hpp), and the biases are expressions at u' = 0 (rest_bias.hpp).
+// parts::mass_matrix: M alone (f stays 0: no velocity, acceleration or load is read).
+// parts::forcing: f alone (forcing_only); where M is known, not checked (the caller checks u' = M^-1 f).
 template <class Sys, rates Rates, parts Parts = parts::both, class Ev, class Cols>
 auto equations_along(const Ev& ev, const Cols& cols) {
   using S = typename Ev::scalar;
