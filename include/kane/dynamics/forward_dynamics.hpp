@@ -47,20 +47,31 @@ forward_result<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
       return speed_derivatives_at(mass_matrix_and_forcing_at<Sys, Rates>(ev));  // singular
     else {
       const auto e = equations_along<Sys, Rates, parts::forcing>(ev, all_speeds<n>{});
-      Eigen::Matrix<S, int(n), 1> ud = times_known<inverse>(e.f);
-      const auto status = finished(ud, e.status);
-      return {ud, status};
+      return forward_result<S, n>{times_known<inverse>(e.f), e.status};  // finish_forward checks it
     }
   } else
     return speed_derivatives_at(mass_matrix_and_forcing_at<Sys, Rates>(ev));
+}
+// u' of forward_at checked finite by the caller, in place (a copy of the result would read whole
+// what was written in blocks): where M^-1 is a table of numbers.
+template <class Sys, class Ev, class R>
+KANE_ALWAYS_INLINE void finish_forward(R& r) {
+  if constexpr (!(recursive_form<Sys, Ev> && !free_joint<Sys, Ev> && (Ev::nu > articulated_above)) &&
+                known_masses<Sys, Ev>()) {
+    if constexpr (known_inverse<Sys, typename Ev::root, speeds_of<Ev>>.known)
+      r.status = finished(r.ud, r.status);
+  }
 }
 }  // namespace detail
 
 // u' = M^-1 f at the evaluator's state, with its status
 template <System Sys, Evaluator Ev>
 forward_result<typename Ev::scalar, Ev::nu> forward_dynamics(const Ev& ev) {
-  return detail::flat<typename Ev::scalar>(
-      [&] { return detail::forward_at<Sys, detail::rates::of_state>(ev); });
+  return detail::flat<typename Ev::scalar>([&] {
+    auto r = detail::forward_at<Sys, detail::rates::of_state>(ev);
+    detail::finish_forward<Sys, Ev>(r);
+    return r;
+  });
 }
 
 }  // namespace kane

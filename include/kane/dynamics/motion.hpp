@@ -102,10 +102,11 @@ class motion
       return;
     else
       ev.template update_for<detail::equation_reads<Sys, Ev, true>>(s_);
-    const auto [ud, status] = detail::forward_at<Sys, detail::rates::zero>(ev);
-    status_ = status;
-    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status);
-    for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = ud(Eigen::Index(i));
+    auto r = detail::forward_at<Sys, detail::rates::zero>(ev);
+    detail::finish_forward<Sys, Ev>(r);
+    status_ = r.status;
+    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), r.status);
+    for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = r.ud(Eigen::Index(i));
   }
 };
 
