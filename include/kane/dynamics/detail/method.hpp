@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "kane/dynamics/detail/sums/known_mass_matrix.hpp"
+#include "kane/dynamics/detail/sums/rest_bias.hpp"
 #include "kane/dynamics/detail/sums/terms.hpp"
 #include "kane/dynamics/detail/system_rules.hpp"
 #include "kane/dynamics/detail/tree/joint_form.hpp"
@@ -72,9 +73,13 @@ struct equation_reads : std::conditional_t<Rest, resting, moving> {
     if constexpr (recursive_form<Sys, Ev>)
       return acceleration_reads<size<typename Ev::closure>::value, Ev::state_type::nq>{
           every<size<typename Ev::closure>::value>(), every<Ev::state_type::nq>()};
-    else
-      return acceleration_reads_of<Ev>(
-          decltype(system_terms<typename Ev::root, speeds_of<Ev>>(typename Sys::items{})){});
+    else {
+      using terms = decltype(system_terms<typename Ev::root, speeds_of<Ev>>(typename Sys::items{}));
+      if constexpr (Rest)  // the terms as Kane's sums at rates::zero evaluate them
+        return acceleration_reads_of<Ev>(decltype(rest_terms<typename Ev::speed_set>(terms{})){});
+      else
+        return acceleration_reads_of<Ev>(terms{});
+    }
   }();
   static constexpr auto alpha = reads.alpha;
   static constexpr auto qdd = reads.qdd;

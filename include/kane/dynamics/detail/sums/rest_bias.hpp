@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "kane/detail/list.hpp"
 #include "kane/expressions/derived_products.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/angular_velocity.hpp"
@@ -106,6 +107,11 @@ constexpr auto rest_bias(X x) {
   else
     return x;  // a leaf or a node kept whole: the evaluator's number at rest
 }
+
+// The terms of a list, each at rest: what motion's pass must compute (evaluation/reads.hpp).
+template <class Sp, class... X>
+constexpr auto rest_terms(list<X...>)
+    -> list<std::remove_cvref_t<decltype(rest_bias<Sp>(std::declval<X>()))>...>;
 
 }  // namespace kane::detail
 #pragma GCC diagnostic pop
