@@ -48,7 +48,7 @@ done >"$work/runs.csv"
 
 # One table per benchmark group (the first part of a name, group/problem/implementation):
 # per preset the median [min-max] CPU ns of each implementation, kane / hand, kane / SymPy's
-# C, kane / SymPy's C checked as kane is (../common/checked.hpp) and KDL / kane of the medians; with
+# C, kane / hand and / SymPy's C checked as kane is (../common/checked.hpp) and KDL / kane of the medians; with
 # lanes (kane_x4, kane_x8, kane_x8_held) kane / kane_x4, kane / kane_x8, kane / kane_x8_held and
 # kane_x8 / SymPy's C.
 awk -F, -v reps=$reps -v dir="$work" '
@@ -79,6 +79,7 @@ awk -F, -v reps=$reps -v dir="$work" '
       refs = ""
       if ((G, "hand") in has) refs = refs ", kane/hand"
       if ((G, "sympy") in has) refs = refs ", kane/SymPy"
+      if ((G, "hand_checked") in has) refs = refs ", kane/checked hand"
       if ((G, "sympy_checked") in has) refs = refs ", kane/checked SymPy"
       if ((G, "kdl") in has) refs = refs ", KDL/kane"
       if ((G, "kane_x4") in has) refs = refs ", kane/kane_x4"
@@ -101,6 +102,7 @@ awk -F, -v reps=$reps -v dir="$work" '
           r = ""
           if ((G, "hand") in has) r = r ", " ratio(m["kane"], m["hand"])
           if ((G, "sympy") in has) r = r ", " ratio(m["kane"], m["sympy"])
+          if ((G, "hand_checked") in has) r = r ", " ratio(m["kane"], m["hand_checked"])
           if ((G, "sympy_checked") in has) r = r ", " ratio(m["kane"], m["sympy_checked"])
           if ((G, "kdl") in has) r = r ", " ratio(m["kdl"], m["kane"])
           if ((G, "kane_x4") in has) r = r ", " ratio(m["kane"], m["kane_x4"])

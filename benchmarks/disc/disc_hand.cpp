@@ -1,7 +1,10 @@
 // The rolling disc by hand (disc.hpp): the closed forms of A and of the nonholonomic partial
 // velocities of the centre.
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
+#include "../common/checked.hpp"
 #include "disc.hpp"
 
 // Closed form in plain doubles: u4 = r c1 (u2 - t2 u3), u5 = r s1 (u2 - t2 u3), so v~_1 = -r l2,
@@ -15,4 +18,21 @@ void disc::hand_partials(const input& in, output& out) {
   out.V[0] = rs1 * c2, out.V[1] = rc1, out.V[2] = 0;
   out.V[3] = -rc1 * c2, out.V[4] = rs1, out.V[5] = 0;
   out.V[6] = -rs2, out.V[7] = 0, out.V[8] = 0;
+}
+
+// The same with what a careful user adds (../common/checked.hpp): q, u, r and A, V tested finite,
+// else A, V NaN and status 1.
+[[gnu::flatten]] void disc::hand_partials_checked(const input& in, output& out) {
+  std::uint64_t bad = bench::infinite_bit(in.r);
+  for (const double x : in.q) bad |= bench::infinite_bit(x);
+  for (const double x : in.u) bad |= bench::infinite_bit(x);
+  hand_partials(in, out);
+  for (const double x : out.A) bad |= bench::infinite_bit(x);
+  for (const double x : out.V) bad |= bench::infinite_bit(x);
+  const bool finite = (bad >> 63) == 0;
+  if (!finite) {
+    for (double& x : out.A) x = std::numeric_limits<double>::quiet_NaN();
+    for (double& x : out.V) x = std::numeric_limits<double>::quiet_NaN();
+  }
+  out.status = finite ? 0 : 1;
 }

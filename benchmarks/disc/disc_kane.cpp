@@ -21,4 +21,5 @@ void disc::kane_partials(const input& in, output& out) {
   const auto V = kane::nonholonomic_partial_velocities<N, rolling>(v5, ev, sol);
   Eigen::Map<Eigen::Matrix<double, 2, 3, Eigen::RowMajor>>(out.A) = sol.A;
   Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(out.V) = V;
+  out.status = sol.status == kane::solve_status::ok ? 0 : 1;
 }
