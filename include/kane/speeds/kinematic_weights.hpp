@@ -12,6 +12,7 @@
 
 #include "kane/detail/structure.hpp"
 #include "kane/expressions/derived_products.hpp"
+#include "kane/expressions/rebuild.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/derivative.hpp"
@@ -78,53 +79,40 @@ constexpr auto explicit_time_omega() {
 
 // Replace q', q'', u, u' by zero (the part of an expression linear in them drops out): x at rest.
 template <class X>
-constexpr auto at_rest(X x) {
-  if constexpr (coordinate_info<X>::value) {
-    if constexpr (X::order == 0)
-      return x;
-    else
+constexpr auto at_rest(X x);
+struct rest_rule {
+  template <class X>
+  static constexpr bool handles =
+      coordinate_info<X>::value || speed_info<X>::value || is_v<X, omega> || is_v<X, angular_velocity_of> ||
+      is_v<X, alpha> || is_v<X, angular_acceleration_of>;
+  template <class X>
+  static constexpr auto apply(X x) {
+    if constexpr (coordinate_info<X>::value) {
+      if constexpr (X::order == 0)
+        return x;
+      else
+        return zero_t{};
+    } else if constexpr (speed_info<X>::value)
       return zero_t{};
-  } else if constexpr (speed_info<X>::value)
-    return zero_t{};
-  else if constexpr (ScalarExpr<X> &&
-                     (LeafConstant<X> || std::is_same_v<X, time_variable> || kde_info<X>::value))
+    else if constexpr (is_v<X, omega>)
+      return explicit_time_omega<typename X::frame>();  // linear in q', plus the prescribed rates
+    else if constexpr (is_v<X, angular_velocity_of>)
+      return at_rest(expand(x));
+    else
+      static_assert(!sizeof(X), "kane: an angular acceleration is not linear in the speeds");
+  }
+  template <class X>
+  static constexpr auto other(X x) {
+    static_assert(
+        (ScalarExpr<X> && (LeafConstant<X> || std::is_same_v<X, time_variable> || kde_info<X>::value)) ||
+            is_unit<X>::value || is_zero_vector_v<X>,
+        "kane: at_rest of an unknown node");
     return x;
-  else if constexpr (is_v<X, add> || is_v<X, vsum>)
-    return at_rest(x.l) + at_rest(x.r);
-  else if constexpr (is_v<X, sub> || is_v<X, vdiff>)
-    return at_rest(x.l) - at_rest(x.r);
-  else if constexpr (is_v<X, mul>)
-    return at_rest(x.l) * at_rest(x.r);
-  else if constexpr (is_v<X, quot>)
-    return at_rest(x.l) / at_rest(x.r);
-  else if constexpr (is_v<X, neg>)
-    return -at_rest(x.x);
-  else if constexpr (is_v<X, vneg>)
-    return -at_rest(x.v);
-  else if constexpr (is_v<X, unary>)
-    return unary_info<X>::fn::apply(at_rest(x.x));
-  else if constexpr (power_info<X>::value)
-    return pow<power_info<X>::n>(at_rest(x.x));
-  else if constexpr (is_v<X, call>)
-    return invoke(x.f, at_rest(x.x));
-  else if constexpr (is_v<X, scaled>)
-    return at_rest(x.s) * at_rest(x.v);
-  else if constexpr (is_v<X, vcross>)
-    return derived_cross(at_rest(x.l), at_rest(x.r));
-  else if constexpr (is_v<X, vdot>)
-    return derived_dot(at_rest(x.l), at_rest(x.r));
-  else if constexpr (is_unit<X>::value || is_zero_vector_v<X>)
-    return x;
-  else if constexpr (is_v<X, omega>)
-    return explicit_time_omega<typename X::frame>();  // linear in q', plus the prescribed rates
-  else if constexpr (is_v<X, angular_velocity_of>)
-    return at_rest(expand(x));
-  else if constexpr (is_v<X, alpha> || is_v<X, angular_acceleration_of>)
-    static_assert(!sizeof(X), "kane: an angular acceleration is not linear in the speeds");
-  else if constexpr (Quantity<X>)
-    return at_rest(x.v);
-  else
-    static_assert(!sizeof(X), "kane: at_rest of an unknown node");
+  }
+};
+template <class X>
+constexpr auto at_rest(X x) {
+  return rebuild<rest_rule>(x);
 }
 
 // The kind of an entry of a matrix whose entries are expressions.

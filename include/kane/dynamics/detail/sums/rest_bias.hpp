@@ -13,6 +13,7 @@
 
 #include "kane/detail/list.hpp"
 #include "kane/expressions/derived_products.hpp"
+#include "kane/expressions/rebuild.hpp"
 #include "kane/expressions/vector.hpp"
 #include "kane/kinematics/angular_velocity.hpp"
 #include "kane/kinematics/edges.hpp"
@@ -71,41 +72,38 @@ constexpr auto alpha_at_rest() {
     return alpha<F>{};
 }
 
-// x at rest
+// x at rest: u' and the q'' that are speeds zero, the angular accelerations the speeds give written
+// out; any other leaf is the evaluator's number at rest
+template <class Sp>
+struct bias_rule {
+  template <class X>
+  static constexpr bool handles =
+      coordinate_info<X>::value || speed_info<X>::value || is_v<X, alpha> || is_v<X, angular_acceleration_of>;
+  template <class X>
+  static constexpr auto apply(X x) {
+    if constexpr (coordinate_info<X>::value) {
+      if constexpr (X::order == 2 && rate_is_speed<Sp, X::index>())
+        return zero_t{};
+      else
+        return x;
+    } else if constexpr (speed_info<X>::value) {
+      if constexpr (X::order == 1)
+        return zero_t{};
+      else
+        return x;
+    } else if constexpr (is_v<X, alpha>)
+      return alpha_at_rest<Sp, typename X::frame>();
+    else
+      return rest_bias<Sp>(expand(x));
+  }
+  template <class X>
+  static constexpr auto other(X x) {
+    return x;
+  }
+};
 template <class Sp, class X>
 constexpr auto rest_bias(X x) {
-  if constexpr (coordinate_info<X>::value) {
-    if constexpr (X::order == 2 && rate_is_speed<Sp, X::index>())
-      return zero_t{};
-    else
-      return x;
-  } else if constexpr (speed_info<X>::value) {
-    if constexpr (X::order == 1)
-      return zero_t{};
-    else
-      return x;
-  } else if constexpr (is_v<X, add> || is_v<X, vsum>)
-    return rest_bias<Sp>(x.l) + rest_bias<Sp>(x.r);
-  else if constexpr (is_v<X, sub> || is_v<X, vdiff>)
-    return rest_bias<Sp>(x.l) - rest_bias<Sp>(x.r);
-  else if constexpr (is_v<X, mul>)
-    return rest_bias<Sp>(x.l) * rest_bias<Sp>(x.r);
-  else if constexpr (is_v<X, neg>)
-    return -rest_bias<Sp>(x.x);
-  else if constexpr (is_v<X, vneg>)
-    return -rest_bias<Sp>(x.v);
-  else if constexpr (is_v<X, scaled>)
-    return rest_bias<Sp>(x.s) * rest_bias<Sp>(x.v);
-  else if constexpr (is_v<X, vcross>)
-    return derived_cross(rest_bias<Sp>(x.l), rest_bias<Sp>(x.r));
-  else if constexpr (is_v<X, alpha>)
-    return alpha_at_rest<Sp, typename X::frame>();
-  else if constexpr (is_v<X, angular_acceleration_of>)
-    return rest_bias<Sp>(expand(x));
-  else if constexpr (Quantity<X>)
-    return rest_bias<Sp>(x.v);
-  else
-    return x;  // a leaf or a node kept whole: the evaluator's number at rest
+  return rebuild<bias_rule<Sp>>(x);
 }
 
 // The terms of a list, each at rest: what motion's pass must compute (evaluation/reads.hpp).
