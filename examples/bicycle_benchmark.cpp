@@ -6,7 +6,7 @@
 // Printed and checked: M, C1, K0, K2 against the paper's values; the eigenvalues over
 // 0 <= v <= 10; the weave and capsize speeds by bisection on the real parts.
 // Arguments (optional): a CSV file of v and the eigenvalues, an SVG picture of them.
-#include <Eigen/Eigenvalues>
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <complex>

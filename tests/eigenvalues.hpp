@@ -1,5 +1,5 @@
-// The eigenvalues of a real square matrix, compiled once (eigenvalues.cpp): Eigen's EigenSolver
-// costs the unit that instantiates it about 14 s of g++ and 0.5 GB.
+// The eigenvalues of a real square matrix by Eigen's EigenSolver, the reference of the tests,
+// compiled once (eigenvalues.cpp): the solver is heavy to compile.
 #pragma once
 
 #include <Eigen/Core>

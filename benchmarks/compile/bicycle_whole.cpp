@@ -2,7 +2,7 @@
 // equations, F_r and F*_r of every speed as expressions, the linearization about upright running
 // and its eigenvalues. Compiled by benchmarks/compile_cost.sh for the compile table; it prints
 // F_r + F*_r against f - M u' and the eigenvalues at 5 m/s.
-#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -57,11 +57,12 @@ int main() {
   a.topRightCorner<2, 2>().setIdentity();
   a.bottomLeftCorner<2, 2>() = -m.inverse() * k;
   a.bottomRightCorner<2, 2>() = -m.inverse() * c;
-  const Eigen::EigenSolver<Eigen::Matrix4d> eig(a);
+  const auto eig = kane::eigenvalues(a);
   std::printf("eigenvalues at 5 m/s:");
-  for (int i = 0; i < 4; ++i)
-    std::printf(" %.4f%+.4fi", eig.eigenvalues()(i).real(), eig.eigenvalues()(i).imag());
+  for (int i = 0; i < 4; ++i) std::printf(" %.4f%+.4fi", eig.values(i).real(), eig.values(i).imag());
   std::printf("\n");
-  return rhs.status() == kane::solve_status::ok && eq.status == kane::solve_status::ok && worst < 1e-9 ? 0
-                                                                                                       : 1;
+  return rhs.status() == kane::solve_status::ok && eq.status == kane::solve_status::ok &&
+                 eig.status == kane::solve_status::ok && worst < 1e-9
+             ? 0
+             : 1;
 }

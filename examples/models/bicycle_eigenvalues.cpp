@@ -1,7 +1,7 @@
 // The benchmark bicycle's eigenvalues from its linearization (bicycle_linear.hpp), compiled once.
-#include <Eigen/Eigenvalues>
-#include <algorithm>
+#include <Eigen/LU>
 #include <cmath>
+#include <kane/linearization/eigenvalues.hpp>
 
 #include "bicycle_linear.hpp"
 
@@ -12,11 +12,8 @@ std::array<std::complex<double>, 4> upright_eigenvalues(double v) {
   a.topRightCorner<2, 2>().setIdentity();
   a.bottomLeftCorner<2, 2>() = -l.M.inverse() * l.K;
   a.bottomRightCorner<2, 2>() = -l.M.inverse() * l.C;
-  const Eigen::Vector4cd e = Eigen::EigenSolver<Eigen::Matrix4d>(a, false).eigenvalues();
-  std::array<std::complex<double>, 4> out{e(0), e(1), e(2), e(3)};
-  std::sort(out.begin(), out.end(), [](auto x, auto y) {
-    return x.real() < y.real() || (x.real() == y.real() && x.imag() < y.imag());
-  });
+  const auto e = kane::eigenvalues(a).values;  // sorted by real, then imaginary part
+  const std::array<std::complex<double>, 4> out{e(0), e(1), e(2), e(3)};
   return out;
 }
 
