@@ -107,3 +107,40 @@ TEST_CASE("linearize: the upright rolling disc, Kane's closed form") {
       if (std::abs(ev(i)) > 1e-6) CHECK(std::abs(ev(i) * ev(i) - lambda2) < 1e-12 * std::abs(lambda2));
   }
 }
+
+TEST_CASE("linearize_equations: the rolling disc away from equilibrium against central differences") {
+  // lean 0.4 with lean, spin and heading rates: u_ind' is not zero, so M~ u_ind' enters C and K
+  disc_state s;
+  s.p = {0.3, 1.2, 9.81};
+  s.q = {0.2, 0.4, 0.5, 1, 2};
+  s.u = {0.7, 5, -0.3, 0, 0};
+  const auto eq = kane::linearize_equations<d::system, d::rolling, disc_evaluator>(s);
+  REQUIRE(eq.status == kane::solve_status::ok);
+  // M~ and f~ at x = (q, u_ind), as a user reads them
+  kane::constrained_motion<d::system, d::rolling, disc_evaluator> rhs(s);
+  const auto reduced = [&](const std::array<double, 8>& x) {
+    std::array<double, 8> dx{};
+    rhs(x, dx, 0.0);
+    REQUIRE(rhs.status() == kane::solve_status::ok);
+    return kane::reduced_mass_matrix_and_forcing<d::system, d::rolling>(
+               rhs.evaluator(), kane::solve_constraints<d::rolling>(rhs.evaluator()))
+        .reduced;
+  };
+  const std::array<double, 8> x0{0.2, 0.4, 0.5, 1, 2, 0.7, 5, -0.3};
+  const auto at = reduced(x0);
+  const Eigen::Vector3d ud = at.M.ldlt().solve(at.f);
+  REQUIRE(ud.cwiseAbs().maxCoeff() > 1);
+  CHECK((eq.M - at.M).cwiseAbs().maxCoeff() < 1e-14);
+  // d(M~ u_ind' - f~)/dx at u_ind' held: K over q1..q5, C over u1..u3
+  const double h = 1e-6;
+  for (std::size_t j = 0; j < 8; ++j) {
+    CAPTURE(j);
+    std::array<double, 8> xp = x0, xm = x0;
+    xp[j] += h, xm[j] -= h;
+    const auto p = reduced(xp), m = reduced(xm);
+    const Eigen::Vector3d d = ((p.M * ud - p.f) - (m.M * ud - m.f)) / (2 * h);
+    const Eigen::Vector3d got =
+        j < 5 ? Eigen::Vector3d(eq.K.col(Eigen::Index(j))) : eq.C.col(Eigen::Index(j - 5));
+    CHECK((got - d).cwiseAbs().maxCoeff() < 1e-7 * std::max(1.0, d.cwiseAbs().maxCoeff()));
+  }
+}
