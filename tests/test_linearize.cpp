@@ -144,3 +144,48 @@ TEST_CASE("linearize_equations: the rolling disc away from equilibrium against c
     CHECK((got - d).cwiseAbs().maxCoeff() < 1e-7 * std::max(1.0, d.cwiseAbs().maxCoeff()));
   }
 }
+
+TEST_CASE("linearize_constrained and linearize_equations: a NaN parameter gives not_finite and NaN") {
+  disc_state s;
+  s.p = {0.3, std::numeric_limits<double>::quiet_NaN(), 9.81};
+  s.q = {0.2, 0.4, 0.5, 1, 2};
+  s.u = {0.7, 5, -0.3, 0, 0};
+  const auto lin = kane::linearize_constrained<d::system, d::rolling, disc_evaluator>(s);
+  CHECK(lin.status == kane::solve_status::not_finite);
+  CHECK(lin.A.array().isNaN().all());
+  CHECK(lin.rate.array().isNaN().all());
+  const auto eq = kane::linearize_equations<d::system, d::rolling, disc_evaluator>(s);
+  CHECK(eq.status == kane::solve_status::not_finite);
+  CHECK(eq.M.array().isNaN().all());
+  CHECK(eq.C.array().isNaN().all());
+  CHECK(eq.K.array().isNaN().all());
+}
+
+TEST_CASE("linearize_constrained: the rolling disc away from equilibrium against central differences") {
+  disc_state s;
+  s.p = {0.3, 1.2, 9.81};
+  s.q = {0.2, 0.4, 0.5, 1, 2};
+  s.u = {0.7, 5, -0.3, 0, 0};
+  const auto lin = kane::linearize_constrained<d::system, d::rolling, disc_evaluator>(s);
+  REQUIRE(lin.status == kane::solve_status::ok);
+  kane::constrained_motion<d::system, d::rolling, disc_evaluator> rhs(s);
+  const auto rate = [&](const std::array<double, 8>& x) {
+    std::array<double, 8> dx{};
+    rhs(x, dx, 0.0);
+    REQUIRE(rhs.status() == kane::solve_status::ok);
+    return Eigen::Map<const Eigen::Matrix<double, 8, 1>>(dx.data()).eval();
+  };
+  const std::array<double, 8> x0{0.2, 0.4, 0.5, 1, 2, 0.7, 5, -0.3};
+  const Eigen::Matrix<double, 8, 1> r0 = rate(x0);
+  REQUIRE(r0.tail<3>().cwiseAbs().maxCoeff() > 1);  // u_ind' is not zero
+  CHECK((lin.rate - r0).cwiseAbs().maxCoeff() < 1e-13 * r0.cwiseAbs().maxCoeff());
+  const double h = 1e-6;
+  for (std::size_t j = 0; j < 8; ++j) {
+    CAPTURE(j);
+    std::array<double, 8> xp = x0, xm = x0;
+    xp[j] += h, xm[j] -= h;
+    const Eigen::Matrix<double, 8, 1> d = (rate(xp) - rate(xm)) / (2 * h);
+    CHECK((lin.A.col(Eigen::Index(j)) - d).cwiseAbs().maxCoeff() <
+          1e-7 * std::max(1.0, d.cwiseAbs().maxCoeff()));
+  }
+}

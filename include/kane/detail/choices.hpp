@@ -39,9 +39,8 @@ enum class onto : bool { sum, zero };
 enum class item_kind : bool { particle, body };
 
 // The u' the equations take: the state's (of_state); the accelerations as the state has them, at
-// u' = 0 or giving f = -tau (at_rest); 0 in every speed, known at compile time (zero: motion's state);
-// the state's at u' = 0 plus the columns' u' given by the caller, giving f = -tau (given).
-enum class rates : unsigned char { of_state, at_rest, zero, given };
+// u' = 0 or giving f = -tau (at_rest); 0 in every speed, known at compile time (zero: motion's state).
+enum class rates : unsigned char { of_state, at_rest, zero };
 // tau = M u' - f, or -tau (at rest, -tau is the forcing f).
 enum class sign : bool { plus, minus };
 // What Kane's sums compute: M and f, M alone, or f alone where M is known at compile time.

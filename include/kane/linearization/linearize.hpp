@@ -183,13 +183,11 @@ constrained_model_of<NH, Ev, H, In> constrained_in_batches(const typename Ev::st
         if (nj + k >= lo && nj + k < lo + b) out.B(Eigen::Index(i), Eigen::Index(k)) = r.part(nj + k - lo);
     }
   }
+  if (out.status != solve_status::ok) set_nan(out.A), set_nan(out.B), set_nan(out.rate);
   return out;
 }
 
-// linearize_equations with the directions in batches of jets of Batch. One pass on jets sums f~ with
-// u' = T u_ind' + b in the accelerations (rates::given): f~ - M~ u_ind', linear in u_ind', so no M~ is
-// formed on jets. At u_ind' = 0, seeded along u_ind', it gives f~ and the columns of -M~; u_ind' is
-// solved on the numbers; then per batch of directions of x at that u_ind', -d(M~ u_ind' - f~)/dx.
+// linearize_equations with the directions in batches of jets of Batch
 template <class Sys, class NH, class Ev, class H, class In, std::size_t Batch>
 equations_of<NH, Ev, H, In> equations_in_batches(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
@@ -198,50 +196,35 @@ equations_of<NH, Ev, H, In> equations_in_batches(const typename Ev::state_type& 
   constexpr auto qs = directions<Sys, NH, Ev, H>;
   constexpr std::size_t nj = qs.n + p, n = nj + In::n, b = batch_of<n, Batch>;
   using J = jet<S, b>;
-  using given = Eigen::Matrix<J, int(p), 1>;
-  // f~ - M~ u_ind' on jets, the directions of x from lo (none for lo = n)
-  const auto pass = [&](std::size_t lo, const given& ud, solve_status& status) {
-    auto [js, x] = constrained_point<Sys, NH, Ev, H, In, b>(s, status, lo);
-    js.ud = {};
-    typename rebind_evaluator<Ev, J>::type ev;
-    const auto sol = update_at_independent_speeds<NH>(ev, js, x);
-    std::array<J, NH::m> b_dep;
-    const auto solved = dependent_rates_at_rest<NH, rates::at_rest>(ev, sol, b_dep);
-    auto eq =
-        equations_along<Sys, rates::given, parts::forcing>(ev, independent_speeds<NH, J>{sol.A, b_dep}, ud);
-    then(status, sol.status), then(status, solved), then(status, eq.status);
-    return eq.f;
-  };
   equations_of<NH, Ev, H, In> out;
   out.K.setZero();  // the columns of held coordinates
   out.status = solve_status::ok;
-  equations_of_motion<S, p> at{{}, {}, solve_status::ok};  // M~ and f~ at s
-  for (std::size_t lo = 0; lo < p; lo += b) {
-    given seeds;
-    for (std::size_t k = 0; k < p; ++k)
-      seeds(Eigen::Index(k)) = k >= lo && k < lo + b ? J::variable(S(0), k - lo) : J(S(0));
-    solve_status status;
-    const auto f = pass(n, seeds, status);
-    then(at.status, status);
-    for (std::size_t r = 0; r < p; ++r) {
-      at.f(Eigen::Index(r)) = f(Eigen::Index(r)).v;
-      for (std::size_t k = lo; k < p && k < lo + b; ++k)
-        at.M(Eigen::Index(r), Eigen::Index(k)) = -f(Eigen::Index(r)).part(k - lo);
-    }
-  }
-  at.M = (S(0.5) * (at.M + at.M.transpose())).eval();  // symmetric, as M~ is
-  out.M = at.M;
-  const auto solved = speed_derivatives(at);
-  out.status = solved.status;
-  given ud;
-  for (std::size_t k = 0; k < p; ++k) ud(Eigen::Index(k)) = J(solved.ud(Eigen::Index(k)));
+  Eigen::Matrix<S, int(p), 1> ud;
   for (std::size_t lo = 0; lo < n; lo += b) {
     solve_status status;
-    const auto f = pass(lo, ud, status);
-    then(out.status, status);
+    auto [js, x] = constrained_point<Sys, NH, Ev, H, In, b>(s, status, lo);
+    // the state at x (u_dep = A u_ind + B, u' = 0), then M~ and f~ on jets, once
+    js.ud = {};
+    typename rebind_evaluator<Ev, J>::type ev;
+    const auto sol = update_at_independent_speeds<NH>(ev, js, x);
+    const auto eq = reduced_mass_matrix_and_forcing_at<Sys, NH, rates::at_rest>(ev, sol).reduced;
+    if (lo == 0) {  // u_ind' at s: M~ u' = f~ on the numbers
+      equations_of_motion<S, p> at{{}, {}, eq.status};
+      for (std::size_t r = 0; r < p; ++r) {
+        at.f(Eigen::Index(r)) = eq.f(Eigen::Index(r)).v;
+        for (std::size_t c = 0; c < p; ++c)
+          out.M(Eigen::Index(r), Eigen::Index(c)) = at.M(Eigen::Index(r), Eigen::Index(c)) =
+              eq.M(Eigen::Index(r), Eigen::Index(c)).v;
+      }
+      const auto solved = speed_derivatives(at);
+      ud = solved.ud;
+      out.status = status != solve_status::ok ? status : solved.status;
+    }
     const auto in_batch = [&](std::size_t d) { return d != no_slot && d >= lo && d < lo + b; };
     for (std::size_t r = 0; r < p; ++r) {
-      const J res = J(S(0)) - f(Eigen::Index(r));  // M~ u_ind' - f~, 0 - 0 = +0
+      J res = -eq.f(Eigen::Index(r));
+      for (std::size_t c = 0; c < p; ++c)
+        res += eq.M(Eigen::Index(r), Eigen::Index(c)) * J(ud(Eigen::Index(c)));
       for (std::size_t j = 0; j < qi.size(); ++j)
         if (in_batch(qs.slot[j])) out.K(Eigen::Index(r), Eigen::Index(j)) = res.part(qs.slot[j] - lo);
       for (std::size_t c = 0; c < p; ++c)
@@ -250,6 +233,7 @@ equations_of<NH, Ev, H, In> equations_in_batches(const typename Ev::state_type& 
         if (in_batch(nj + k)) out.B(Eigen::Index(r), Eigen::Index(k)) = -res.part(nj + k - lo);
     }
   }
+  if (out.status != solve_status::ok) set_nan(out.M), set_nan(out.C), set_nan(out.K), set_nan(out.B);
   return out;
 }
 }  // namespace detail

@@ -153,14 +153,10 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
       cols.template add_bias<nz>(bias, v);
     }
     if constexpr (std::is_same_v<decltype(v), Eigen::Matrix<S, 3, int(n)>> &&
-                  std::is_lvalue_reference_v<decltype(cols.template columns<nz>(v))>) {
-      if constexpr (Rates == rates::given && has(Parts, parts::forcing)) bias += product_in_blocks(v, ud);
+                  std::is_lvalue_reference_v<decltype(cols.template columns<nz>(v))>)
       return v;  // the table itself: no copy (a copy of lanes is a call of memmove)
-    } else {
-      Eigen::Matrix<S, 3, int(n)> c(cols.template columns<nz>(v));
-      if constexpr (Rates == rates::given && has(Parts, parts::forcing)) bias += product_in_blocks(c, ud);
-      return c;
-    }
+    else
+      return Eigen::Matrix<S, 3, int(n)>(cols.template columns<nz>(v));
   };
   // the mass terms in A
   const auto mass = [&]<class A>(std::type_identity<A> in, const auto& point_velocity,
@@ -252,9 +248,8 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
 // caller's state is 0 (motion.hpp), and the biases are expressions at u' = 0 (rest_bias.hpp).
 // parts::mass_matrix: M alone (f stays 0: no velocity, acceleration or load is read).
 // parts::forcing: f alone (forcing_only); where M is known, not checked (the caller checks u' = M^-1 f).
-// rates::given: ud holds the u' of the columns (Cols::n numbers), added to the state's accelerations.
-template <class Sys, rates Rates, parts Parts = parts::both, class Ev, class Cols, class Given = int>
-auto equations_along(const Ev& ev, const Cols& cols, [[maybe_unused]] const Given& given = 0) {
+template <class Sys, rates Rates, parts Parts = parts::both, class Ev, class Cols>
+auto equations_along(const Ev& ev, const Cols& cols) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
   using Sp = detail::speeds_of<Ev>;
@@ -280,12 +275,7 @@ auto equations_along(const Ev& ev, const Cols& cols, [[maybe_unused]] const Give
       return result{Eigen::Matrix<S, int(n), int(n)>::Zero(), Eigen::Matrix<S, int(n), 1>::Zero(),
                     ev.status()};
   }();
-  [[maybe_unused]] const auto ud = [&] {
-    if constexpr (Rates == rates::given)
-      return given;
-    else
-      return detail::speed_rates(ev);
-  }();
+  [[maybe_unused]] const auto ud = detail::speed_rates(ev);
   if constexpr (!known || Parts != parts::mass_matrix)
     detail::with_common_subexpressions(system_terms<R, Sp>(typename Sys::items{}), ev, [&](const auto& e) {
       add_items<Sys, Rates, known ? parts::forcing : Parts>(out, e, cols, ud);
