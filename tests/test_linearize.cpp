@@ -2,12 +2,15 @@
 // nonlinear right-hand side (3D double pendulum), and the upright rolling disc
 // against its closed form: M = diag(I_d + m r^2, I_s + m r^2, I_d), the lean
 // stiffness -m g r, the gyroscopic couplings, and lean eigenvalues
-// lambda^2 = 4 (g - 3 r W^2) / (5 r) for the uniform thin disc spinning at W.
+// lambda^2 = 4 (g - 3 r W^2) / (5 r) for the uniform thin disc spinning at W; the leaning disc
+// away from equilibrium against central differences of constrained_motion and of M~ u' - f~.
 #include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 #include <kane/linearization.hpp>
 
@@ -108,84 +111,57 @@ TEST_CASE("linearize: the upright rolling disc, Kane's closed form") {
   }
 }
 
-TEST_CASE("linearize_equations: the rolling disc away from equilibrium against central differences") {
+TEST_CASE("linearize_equations and linearize_constrained: the rolling disc away from equilibrium") {
   // lean 0.4 with lean, spin and heading rates: u_ind' is not zero, so M~ u_ind' enters C and K
   disc_state s;
   s.p = {0.3, 1.2, 9.81};
   s.q = {0.2, 0.4, 0.5, 1, 2};
   s.u = {0.7, 5, -0.3, 0, 0};
-  const auto eq = kane::linearize_equations<d::system, d::rolling, disc_evaluator>(s);
-  REQUIRE(eq.status == kane::solve_status::ok);
-  // M~ and f~ at x = (q, u_ind), as a user reads them
+  const std::array<double, 8> x0{0.2, 0.4, 0.5, 1, 2, 0.7, 5, -0.3};  // (q, u_ind)
   kane::constrained_motion<d::system, d::rolling, disc_evaluator> rhs(s);
-  const auto reduced = [&](const std::array<double, 8>& x) {
+  const auto at = [&](const std::array<double, 8>& x) {  // x' and M~, f~, as a user reads them
     std::array<double, 8> dx{};
     rhs(x, dx, 0.0);
     REQUIRE(rhs.status() == kane::solve_status::ok);
-    return kane::reduced_mass_matrix_and_forcing<d::system, d::rolling>(
-               rhs.evaluator(), kane::solve_constraints<d::rolling>(rhs.evaluator()))
-        .reduced;
+    const auto eq = kane::reduced_mass_matrix_and_forcing<d::system, d::rolling>(
+                        rhs.evaluator(), kane::solve_constraints<d::rolling>(rhs.evaluator()))
+                        .reduced;
+    return std::pair{Eigen::Map<const Eigen::Matrix<double, 8, 1>>(dx.data()).eval(), eq};
   };
-  const std::array<double, 8> x0{0.2, 0.4, 0.5, 1, 2, 0.7, 5, -0.3};
-  const auto at = reduced(x0);
-  const Eigen::Vector3d ud = at.M.ldlt().solve(at.f);
+  const auto [r0, e0] = at(x0);
+  const Eigen::Vector3d ud = e0.M.ldlt().solve(e0.f);
   REQUIRE(ud.cwiseAbs().maxCoeff() > 1);
-  CHECK((eq.M - at.M).cwiseAbs().maxCoeff() < 1e-14);
-  // d(M~ u_ind' - f~)/dx at u_ind' held: K over q1..q5, C over u1..u3
+  const auto eq = kane::linearize_equations<d::system, d::rolling, disc_evaluator>(s);
+  const auto lin = kane::linearize_constrained<d::system, d::rolling, disc_evaluator>(s);
+  REQUIRE(eq.status == kane::solve_status::ok);
+  REQUIRE(lin.status == kane::solve_status::ok);
+  CHECK((eq.M - e0.M).cwiseAbs().maxCoeff() < 1e-14);
+  CHECK((lin.rate - r0).cwiseAbs().maxCoeff() < 1e-13 * r0.cwiseAbs().maxCoeff());
+  // central differences: A = dx'/dx; K over q1..q5 and C over u1..u3 = d(M~ u_ind' - f~)/dx, u_ind' held
   const double h = 1e-6;
   for (std::size_t j = 0; j < 8; ++j) {
     CAPTURE(j);
     std::array<double, 8> xp = x0, xm = x0;
     xp[j] += h, xm[j] -= h;
-    const auto p = reduced(xp), m = reduced(xm);
-    const Eigen::Vector3d d = ((p.M * ud - p.f) - (m.M * ud - m.f)) / (2 * h);
+    const auto [rp, ep] = at(xp);
+    const auto [rm, em] = at(xm);
+    const Eigen::Matrix<double, 8, 1> da = (rp - rm) / (2 * h);
+    CHECK((lin.A.col(Eigen::Index(j)) - da).cwiseAbs().maxCoeff() <
+          1e-7 * std::max(1.0, da.cwiseAbs().maxCoeff()));
+    const Eigen::Vector3d de = ((ep.M * ud - ep.f) - (em.M * ud - em.f)) / (2 * h);
     const Eigen::Vector3d got =
         j < 5 ? Eigen::Vector3d(eq.K.col(Eigen::Index(j))) : eq.C.col(Eigen::Index(j - 5));
-    CHECK((got - d).cwiseAbs().maxCoeff() < 1e-7 * std::max(1.0, d.cwiseAbs().maxCoeff()));
+    CHECK((got - de).cwiseAbs().maxCoeff() < 1e-7 * std::max(1.0, de.cwiseAbs().maxCoeff()));
   }
-}
-
-TEST_CASE("linearize_constrained and linearize_equations: a NaN parameter gives not_finite and NaN") {
-  disc_state s;
-  s.p = {0.3, std::numeric_limits<double>::quiet_NaN(), 9.81};
-  s.q = {0.2, 0.4, 0.5, 1, 2};
-  s.u = {0.7, 5, -0.3, 0, 0};
-  const auto lin = kane::linearize_constrained<d::system, d::rolling, disc_evaluator>(s);
-  CHECK(lin.status == kane::solve_status::not_finite);
-  CHECK(lin.A.array().isNaN().all());
-  CHECK(lin.rate.array().isNaN().all());
-  const auto eq = kane::linearize_equations<d::system, d::rolling, disc_evaluator>(s);
-  CHECK(eq.status == kane::solve_status::not_finite);
-  CHECK(eq.M.array().isNaN().all());
-  CHECK(eq.C.array().isNaN().all());
-  CHECK(eq.K.array().isNaN().all());
-}
-
-TEST_CASE("linearize_constrained: the rolling disc away from equilibrium against central differences") {
-  disc_state s;
-  s.p = {0.3, 1.2, 9.81};
-  s.q = {0.2, 0.4, 0.5, 1, 2};
-  s.u = {0.7, 5, -0.3, 0, 0};
-  const auto lin = kane::linearize_constrained<d::system, d::rolling, disc_evaluator>(s);
-  REQUIRE(lin.status == kane::solve_status::ok);
-  kane::constrained_motion<d::system, d::rolling, disc_evaluator> rhs(s);
-  const auto rate = [&](const std::array<double, 8>& x) {
-    std::array<double, 8> dx{};
-    rhs(x, dx, 0.0);
-    REQUIRE(rhs.status() == kane::solve_status::ok);
-    return Eigen::Map<const Eigen::Matrix<double, 8, 1>>(dx.data()).eval();
-  };
-  const std::array<double, 8> x0{0.2, 0.4, 0.5, 1, 2, 0.7, 5, -0.3};
-  const Eigen::Matrix<double, 8, 1> r0 = rate(x0);
-  REQUIRE(r0.tail<3>().cwiseAbs().maxCoeff() > 1);  // u_ind' is not zero
-  CHECK((lin.rate - r0).cwiseAbs().maxCoeff() < 1e-13 * r0.cwiseAbs().maxCoeff());
-  const double h = 1e-6;
-  for (std::size_t j = 0; j < 8; ++j) {
-    CAPTURE(j);
-    std::array<double, 8> xp = x0, xm = x0;
-    xp[j] += h, xm[j] -= h;
-    const Eigen::Matrix<double, 8, 1> d = (rate(xp) - rate(xm)) / (2 * h);
-    CHECK((lin.A.col(Eigen::Index(j)) - d).cwiseAbs().maxCoeff() <
-          1e-7 * std::max(1.0, d.cwiseAbs().maxCoeff()));
-  }
+  // a NaN mass: not_finite, and every matrix NaN
+  s.p[1] = std::numeric_limits<double>::quiet_NaN();
+  const auto bad_lin = kane::linearize_constrained<d::system, d::rolling, disc_evaluator>(s);
+  CHECK(bad_lin.status == kane::solve_status::not_finite);
+  CHECK(bad_lin.A.array().isNaN().all());
+  CHECK(bad_lin.rate.array().isNaN().all());
+  const auto bad_eq = kane::linearize_equations<d::system, d::rolling, disc_evaluator>(s);
+  CHECK(bad_eq.status == kane::solve_status::not_finite);
+  CHECK(bad_eq.M.array().isNaN().all());
+  CHECK(bad_eq.C.array().isNaN().all());
+  CHECK(bad_eq.K.array().isNaN().all());
 }
