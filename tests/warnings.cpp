@@ -260,6 +260,7 @@ S dynamics(const kane::state<S, 6>& s6) {
   std::array<S, 4> x{}, dx{};
   rhs(x, dx, S(0));
   const auto lin = kane::linearize<m::system, decltype(ev), kane::inputs<m::p<19>>>(s);
+  const auto spectrum = kane::eigenvalues(lin.A);
   const S active =
       kane::evaluate(kane::generalized_active_force<m::N, m::system, kane::qdot_speeds<2>, 1>(), ev);
   const auto pin = kane::reaction<m::system, kane::cut<m::J, m::B, m::Q>>(ev);
@@ -271,7 +272,7 @@ S dynamics(const kane::state<S, 6>& s6) {
   return eom.M.sum() + ud.sum() + kane::kinetic_energy<m::system>(ev) +
          kane::potential_energy<m::system>(ev) + kane::linear_momentum<m::system>(ev)[0] +
          kane::angular_momentum<m::system>(ev)[1] + dx[3] + lin.A.sum() + lin.B.sum() + active +
-         pin.force[0] + pin.moment[1] + absolute_f;
+         pin.force[0] + pin.moment[1] + absolute_f + spectrum.values(0).real();
 }
 
 // Printing.
