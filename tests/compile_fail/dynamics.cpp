@@ -28,6 +28,7 @@
 // case linearize_constrained_lanes: kane: linearize_constrained takes one state at a time
 // case linearize_equations_lanes: kane: linearize_equations takes one state at a time
 // case cut_of_a_vector: kane: cut<P, Items...> takes the frames of the part's bodies and the points of its particles
+// case eigenvalues_of_a_dynamic_matrix: kane: eigenvalues takes a square matrix of real numbers of fixed size
 #include <array>
 
 #include <kane/kane.hpp>
@@ -293,4 +294,13 @@ double reduced_linearization() {
   kane::state<reduced_number, 2, 2, 9> s;
   using ev_type = kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, rates>;
   return kane::linearize_equations<sys, tied, ev_type>(s).status == kane::status_of<reduced_number>{};
+}
+#ifdef KANE_CASE_eigenvalues_of_a_dynamic_matrix
+using stability_matrix = Eigen::MatrixXd;
+#else
+using stability_matrix = Eigen::Matrix2d;
+#endif
+double stability() {
+  const stability_matrix a = Eigen::Matrix2d::Identity();
+  return kane::eigenvalues(a).values(0).real();
 }

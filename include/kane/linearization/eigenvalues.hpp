@@ -186,10 +186,12 @@ bool francis_qr(square<S, N>& a, std::array<S, std::size_t(N)>& re, std::array<S
 }  // namespace detail
 
 template <class Derived>
-requires(Derived::RowsAtCompileTime > 0 && Derived::RowsAtCompileTime == Derived::ColsAtCompileTime &&
-         std::is_floating_point_v<typename Derived::Scalar>)
-    spectrum<typename Derived::Scalar, Derived::RowsAtCompileTime> eigenvalues(
-        const Eigen::MatrixBase<Derived>& m, int sweeps = 30) {
+spectrum<typename Derived::Scalar, Derived::RowsAtCompileTime> eigenvalues(
+    const Eigen::MatrixBase<Derived>& m, int sweeps = 30) {
+  static_assert(Derived::RowsAtCompileTime > 0 && Derived::RowsAtCompileTime == Derived::ColsAtCompileTime &&
+                    std::is_floating_point_v<typename Derived::Scalar>,
+                "kane: eigenvalues takes a square matrix of real numbers of fixed size: copy it into an "
+                "Eigen::Matrix<double, N, N>");
   using S = typename Derived::Scalar;
   constexpr int n = Derived::RowsAtCompileTime;
   spectrum<S, n> out;
