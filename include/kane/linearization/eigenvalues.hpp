@@ -196,16 +196,11 @@ spectrum<typename Derived::Scalar, Derived::RowsAtCompileTime> eigenvalues(
   constexpr int n = Derived::RowsAtCompileTime;
   spectrum<S, n> out;
   detail::square<S, n> a;
-  bool finite = true;
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const S x = m(i, j);
-      finite = finite && std::isfinite(x);
-      a[std::size_t(i)][std::size_t(j)] = x;
-    }
+    for (int j = 0; j < n; ++j) a[std::size_t(i)][std::size_t(j)] = m(i, j);
   std::array<S, std::size_t(n)> re{}, im{};
   out.status = solve_status::not_finite;
-  if (finite) {
+  if (detail::all_finite_matrix(m)) {
     detail::balance<S, n>(a);
     detail::hessenberg<S, n>(a);
     out.status = detail::francis_qr<S, n>(a, re, im, sweeps) ? solve_status::ok : solve_status::not_converged;
