@@ -64,7 +64,10 @@ EOF
         examples/*) echo "$f|example" ;;
         benchmarks/chain_dynamics/*)
           for n in 6 12 24 48; do echo "$f -DKANE_CHAIN_N=$n|benchmark: the $n-link chain's forward dynamics"; done ;;
+        # lanes of four doubles: built for this machine (wider than SSE2's registers, -O2 refuses them)
+        benchmarks/lanes/*) echo "$f -march=native|benchmark: kane's side of bench_lanes, -march=native" ;;
         benchmarks/*) echo "$f|benchmark: kane's side of bench_$(basename "$f" _kane.cpp)" ;;
+        tests/test_chain_speeds.cpp) echo "$f -march=native|test, -march=native" ;;
         tests/*) echo "$f|test" ;;
       esac
     done
@@ -118,7 +121,7 @@ measure() {
   [[ $src == /* ]] && file=$src || file=$root/$src
   [ -e "$file" ] || { echo "- | -" && return; }
   [ "$expect" = ok ] || extra=(-Wfatal-errors)
-  # shellcheck disable=SC2086  # defs: the unit's -D flags
+  # shellcheck disable=SC2086  # defs: the unit's flags (-D..., -march=native)
   if (cd "$root" && /usr/bin/time -o "$work/time" -f "%U %M" "$cxx" "${flags[@]}" "${extra[@]}" $defs "$src" 2>"$work/err"); then
     [ "$expect" = ok ] || { echo "$0: $3 compiled at $root" >&2 && echo "compiled | compiled" && return; }
   elif [ "$expect" = ok ]; then
