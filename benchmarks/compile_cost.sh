@@ -67,7 +67,7 @@ EOF
         # lanes of four doubles: built for this machine (wider than SSE2's registers, -O2 refuses them)
         benchmarks/lanes/*) echo "$f -march=native|benchmark: kane's side of bench_lanes, -march=native" ;;
         benchmarks/*) echo "$f|benchmark: kane's side of bench_$(basename "$f" _kane.cpp)" ;;
-        tests/test_chain_speeds.cpp) echo "$f -march=native|test, -march=native" ;;
+        tests/test_chain_speeds.cpp) echo "$f -march=native|test, -march=native (lanes of four doubles)" ;;
         tests/*) echo "$f|test" ;;
       esac
     done
