@@ -101,22 +101,6 @@ KANE_ALWAYS_INLINE auto articulated_accelerations(const body_frames<JF, Ev>& bf,
   std::array<articulated<S>, nf> x;
   std::array<vec, n> uw, uv;
   std::array<S, n> dd, dn;
-  w[0] = zero, v[0] = zero;
-  for (std::size_t g = 1; g < nf; ++g)  // velocities, bias accelerations
-    step(g, [&](const auto& e, auto KC, auto OC, const vec& kg) KANE_ALWAYS_INLINE_LAMBDA {
-      constexpr auto K = decltype(KC)::value;
-      constexpr auto O = decltype(OC)::value;
-      const auto p = std::size_t(t.parent[g]);
-      const int r = t.speed[g];
-      const vec wp = e.down(w[p]);
-      v[g] = all_zero(O) ? e.down(v[p]) : e.down(v[p] + cross_along<O>(w[p], bf.offset[g]));
-      w[g] = wp, cw[g] = zero, cv[g] = zero;
-      if (r >= 0) {
-        const S u = joint_rate<1>(ev, std::size_t(r));
-        w[g] = add_along<K, onto::sum>(wp, u, kg);
-        cw[g] = u * cross_along<K>(w[g], kg), cv[g] = u * cross_along<K>(v[g], kg);
-      }
-    });
   // each frame's own items: their inertias (a table of numbers where literals give them), their loads
   using known = known_inertias<JF, Sys, body_frames<JF, Ev>>;
   constexpr bool loaded = loads_below_root<JF, Sys>;
@@ -124,24 +108,40 @@ KANE_ALWAYS_INLINE auto articulated_accelerations(const body_frames<JF, Ev>& bf,
   if constexpr (!known::value) own_inertias<JF, Sys>(bf, ev, rigid);
   std::array<vec, loaded ? nf : 1> ff, fn;
   if constexpr (loaded) own_loads<JF, Sys>(bf, ev, ff, fn);
-  for (std::size_t g = 1; g < nf; ++g) {  // I = [i [h]; -[h] m 1], p = v x* I v - f_ext
-    const composite_inertia<S> q = [&] {
-      if constexpr (known::value) {
-        const composite_inertia<double>& o = known::own[g];
-        return composite_inertia<S>{S(o.mass),
-                                    {S(o.h.x), S(o.h.y), S(o.h.z)},
-                                    {S(o.i[0]), S(o.i[1]), S(o.i[2]), S(o.i[3]), S(o.i[4]), S(o.i[5])}};
-      } else
-        return rigid[g];
-    }();
-    articulated<S>& y = x[g];
-    y.a = q.i;
-    y.b = {vec{S(0), -q.h.z, q.h.y}, vec{q.h.z, S(0), -q.h.x}, vec{-q.h.y, q.h.x, S(0)}};  // [h]
-    y.c = {q.mass, q.mass, q.mass, S(0), S(0), S(0)};
-    const vec hh = sym_times(q.i, w[g]) + cross3(q.h, v[g]), ll = q.mass * v[g] - cross3(q.h, w[g]);
-    y.n = cross3(w[g], hh) + cross3(v[g], ll), y.f = cross3(w[g], ll);
-    if constexpr (loaded) y.n = y.n + fn[g], y.f = y.f + ff[g];
-  }
+  w[0] = zero, v[0] = zero;
+  // velocities, bias accelerations, and each frame's I = [i [h]; -[h] m 1] and p = v x* I v - f_ext
+  for (std::size_t g = 1; g < nf; ++g)
+    step(g, [&](const auto& e, auto KC, auto OC, const vec& kg) KANE_ALWAYS_INLINE_LAMBDA {
+      constexpr auto K = decltype(KC)::value;
+      constexpr auto O = decltype(OC)::value;
+      const auto p = std::size_t(t.parent[g]);
+      const int r = t.speed[g];
+      const vec wp = e.down(w[p]);
+      vec wg = wp, vg = all_zero(O) ? e.down(v[p]) : e.down(v[p] + cross_along<O>(w[p], bf.offset[g]));
+      cw[g] = zero, cv[g] = zero;
+      if (r >= 0) {
+        const S u = joint_rate<1>(ev, std::size_t(r));
+        wg = add_along<K, onto::sum>(wp, u, kg);
+        cw[g] = u * cross_along<K>(wg, kg), cv[g] = u * cross_along<K>(vg, kg);
+      }
+      w[g] = wg, v[g] = vg;
+      const composite_inertia<S> q = [&] {
+        if constexpr (known::value) {
+          const composite_inertia<double>& o = known::own[g];
+          return composite_inertia<S>{S(o.mass),
+                                      {S(o.h.x), S(o.h.y), S(o.h.z)},
+                                      {S(o.i[0]), S(o.i[1]), S(o.i[2]), S(o.i[3]), S(o.i[4]), S(o.i[5])}};
+        } else
+          return rigid[g];
+      }();
+      articulated<S>& y = x[g];
+      y.a = q.i;
+      y.b = {vec{S(0), -q.h.z, q.h.y}, vec{q.h.z, S(0), -q.h.x}, vec{-q.h.y, q.h.x, S(0)}};  // [h]
+      y.c = {q.mass, q.mass, q.mass, S(0), S(0), S(0)};
+      const vec hh = sym_times(q.i, wg) + cross3(q.h, vg), ll = q.mass * vg - cross3(q.h, wg);
+      y.n = cross3(wg, hh) + cross3(vg, ll), y.f = cross3(wg, ll);
+      if constexpr (loaded) y.n = y.n + fn[g], y.f = y.f + ff[g];
+    });
   auto ok = lane_traits<S>::truth(true);
   for (std::size_t g = nf - 1; g > 0; --g)  // leaves first
     step(g, [&](const auto& e, auto KC, auto OC, const vec& kg) KANE_ALWAYS_INLINE_LAMBDA {
