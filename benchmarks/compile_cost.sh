@@ -46,8 +46,8 @@ examples/pendulum3d.cpp|3D double pendulum, u' by kane::motion
 examples/models/free_body_motion.cpp|free body: the model compiled once
 benchmarks/compile/bicycle_whole.cpp|bicycle as a user's one unit: u', reduced equations, F_r and F*_r, linearization, eigenvalues
 benchmarks/compile/small_models.cpp|six small models' x' and two linearizations as a user's one unit
-benchmarks/compile/dynamics6_lanes.cpp|6R arm: M, f, u' and tau at double
-benchmarks/compile/dynamics6_lanes.cpp -DKANE_LANES=8|6R arm: the same at double and at 8 lanes of double
+benchmarks/compile/dynamics6_lanes.cpp -march=native|6R arm: M, f, u' and tau at double, -march=native
+benchmarks/compile/dynamics6_lanes.cpp -march=native -DKANE_LANES=8|6R arm: the same at double and at 8 lanes of double, -march=native
 examples/free_body_dynamics.cpp|free body: the example that calls it
 EOF
   local root f n glob

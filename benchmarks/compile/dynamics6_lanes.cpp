@@ -1,11 +1,12 @@
 // The 6-revolute arm's entry points (examples/models/arm6_dynamics.hpp) as a user's unit: M, M and
 // f, forward and inverse dynamics at double; with -DKANE_LANES=W the same at kane::lanes<double, W>
-// too. The compile table gives what the lanes add to the unit.
+// too. The compile table gives what the lanes add to the unit, built for this machine
+// (-march=native), where a register holds eight doubles.
 #include <cstdio>
 
 #include "../../examples/models/arm6_dynamics.hpp"
 #if defined(KANE_LANES)
-#define KANE_ALLOW_WIDE_LANES  // compiled for its cost at -O2, never run: any W
+#define KANE_ALLOW_WIDE_LANES  // compiled for its cost, never run: any W on any target
 #include <kane/scalars/lanes.hpp>
 #endif
 
