@@ -131,9 +131,9 @@ awk -F, -v reps=$reps -v dir="$work" '
   }' "$work/runs.csv"
 
 # --- the machine of the run-time tables (the compile table names its own), then every block measured
-if [ -n "$only" ]; then  # one table: its own date and commit, the page's line as it is
-  printf '\nMeasured on %s at commit %s, apart from the other tables.\n' "$(date -u +%Y-%m-%d)" \
-    "$(git rev-parse --short HEAD)" >>"$work/table_$only.md"
+if [ -n "$only" ]; then  # one table: its own date, commit and processor, the page's line as it is
+  printf '\nMeasured on %s at commit %s on %s, apart from the other tables.\n' "$(date -u +%Y-%m-%d)" \
+    "$(git rev-parse --short HEAD)" "$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //')" >>"$work/table_$only.md"
 fi
 [ $run = 1 ] && [ -z "$only" ] && {
   printf 'Run-time tables measured on %s at commit %s: %s, %s cores, %s, Eigen %s.\n' "$(date -u +%Y-%m-%d)" \
