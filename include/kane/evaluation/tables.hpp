@@ -80,27 +80,34 @@ KANE_ALWAYS_INLINE void set_column(T& t, Eigen::Index c, const V& v) {
   else
     t.col(c) = v;
 }
-// t = [v...] in blocks (wide_stores.hpp): a copy of t reads it in blocks.
-template <class T, class... V>
+// t = [v...] in blocks (wide_stores.hpp): a copy of t reads it in blocks. ByColumn: three rows
+// column by column, as a copy into three rows of a taller matrix reads them (J.topRows<3>() = t).
+template <bool ByColumn, class T, class... V>
 KANE_ALWAYS_INLINE void set_columns(T& t, const V&... v) {
   constexpr std::size_t rows = std::size_t(T::RowsAtCompileTime);
   const auto columns = std::forward_as_tuple(v...);
-  store_in_blocks<rows * sizeof...(V)>(t.data(), [&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
-    return std::get<i / rows>(columns)(Eigen::Index(i % rows));
-  });
+  if constexpr (ByColumn && rows == 3)
+    static_for_inline<sizeof...(V)>(
+        [&](auto c) KANE_ALWAYS_INLINE_LAMBDA { set_column(t, Eigen::Index(c), std::get<c>(columns)); });
+  else
+    store_in_blocks<rows * sizeof...(V)>(t.data(), [&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
+      return std::get<i / rows>(columns)(Eigen::Index(i % rows));
+    });
 }
 // x = T u + t in A: the table T = [v_1 ... v_n] (rows 1 for a scalar x, 3 for
 // a vector) and the remainder t, each computed only if asked for. Column r is
 // the expression dx/du_r + sum_s dx/dq_s' W_sr, t is x_0 + sum_s dx/dq_s' X_s,
-// with the zeros and ones of W and X known at compile time (speeds.hpp).
-template <class A, linear_part Parts, class X, class Ev>
+// with the zeros and ones of W and X known at compile time (speeds.hpp). T by column for a caller's
+// copy (the entry points below), in blocks for Kane's sums.
+template <class A, linear_part Parts, bool ByColumn = false, class X, class Ev>
 KANE_ALWAYS_INLINE auto linear_parts_in(const X& x, const Ev& ev) {
   using Sp = speeds_of<Ev>;
   constexpr int rows = ScalarExpr<X> ? 1 : 3;
   Eigen::Matrix<typename Ev::scalar, rows, int(Sp::n)> t;
   Eigen::Matrix<typename Ev::scalar, rows, 1> rest;
   [&]<std::size_t... R>(std::index_sequence<R...>) {
-    if constexpr (has(Parts, linear_part::table)) set_columns(t, numbers<A>(column_of<Sp, R + 1>(x), ev)...);
+    if constexpr (has(Parts, linear_part::table))
+      set_columns<ByColumn>(t, numbers<A>(column_of<Sp, R + 1>(x), ev)...);
     if constexpr (has(Parts, linear_part::remainder)) rest = numbers<A>(remainder_of<Sp>(x), ev);
   }
   (std::make_index_sequence<Sp::n>{});
@@ -113,11 +120,11 @@ KANE_ALWAYS_INLINE auto linear_parts_in(const X& x, const Ev& ev) {
 }
 template <class A, linear_part Parts, class X, class Ev>
 requires(inlined_entry<Ev>) KANE_INLINE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
-  return linear_parts_in<A, Parts>(x, ev);
+  return linear_parts_in<A, Parts, true>(x, ev);
 }
 template <class A, linear_part Parts, class X, class Ev>
 requires(!inlined_entry<Ev>) KANE_FLATTEN auto linear_parts(const X& x, const Ev& ev) {
-  return linear_parts_in<A, Parts>(x, ev);
+  return linear_parts_in<A, Parts, true>(x, ev);
 }
 }  // namespace detail
 
