@@ -31,7 +31,7 @@ cleanup() {
 trap cleanup EXIT
 flags=(-std=c++20 -O2 -DNDEBUG -Iinclude -Iexamples -isystem /usr/include/eigen3 -c -o /dev/null)
 
-# units ROOT...: "source [-D...]|what" a line, the sources of every ROOT (benchmarks in this layout);
+# units ROOT...: "source [flags]|what" a line (flags: -D..., -march=native), the sources of every ROOT (benchmarks in this layout);
 # "@NAME" is a unit made for each tree (make_units), " fail" after the source a unit that must not
 # compile (timed to its first error).
 units() {
@@ -64,7 +64,7 @@ EOF
         examples/*) echo "$f|example" ;;
         benchmarks/chain_dynamics/*)
           for n in 6 12 24 48; do echo "$f -DKANE_CHAIN_N=$n|benchmark: the $n-link chain's forward dynamics"; done ;;
-        # lanes of four doubles: built for this machine (wider than SSE2's registers, -O2 refuses them)
+        # lanes wider than SSE2's registers, which plain -O2 refuses: built for this machine
         benchmarks/lanes/*) echo "$f -march=native|benchmark: kane's side of bench_lanes, -march=native" ;;
         benchmarks/*) echo "$f|benchmark: kane's side of bench_$(basename "$f" _kane.cpp)" ;;
         tests/test_chain_speeds.cpp) echo "$f -march=native|test, -march=native (lanes of four doubles)" ;;

@@ -33,7 +33,11 @@ foreach(file IN LISTS files)
   endif()
 endforeach()
 
-# One call for every file: its diagnostics name each file that drifts.
+# One call for every file (none: no call, which would read standard input); its diagnostics name
+# each file that drifts.
+if(NOT checked)
+  message(FATAL_ERROR "no C++ file found under ${dirs} of ${SOURCE_DIR}")
+endif()
 execute_process(COMMAND ${CLANG_FORMAT} --dry-run --Werror ${checked} WORKING_DIRECTORY ${SOURCE_DIR}
                 RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE out)
 set(drifting)
@@ -49,12 +53,12 @@ if(NOT result EQUAL 0)
     message(FATAL_ERROR "${CLANG_FORMAT} failed")
   endif()
 endif()
-list(LENGTH checked checked)
+list(LENGTH checked count)
 
 if(drifting)
   list(LENGTH drifting n)
   list(JOIN drifting " " drifting)
-  message(FATAL_ERROR "${n} of ${checked} files drift from .clang-format; fix with\n"
+  message(FATAL_ERROR "${n} of ${count} files drift from .clang-format; fix with\n"
                       "  clang-format-14 -i ${drifting}")
 endif()
-message(STATUS "${checked} files match .clang-format")
+message(STATUS "${count} files match .clang-format")
