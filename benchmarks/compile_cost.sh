@@ -67,7 +67,7 @@ EOF
         # lanes wider than SSE2's registers, which plain -O2 refuses: built for this machine
         benchmarks/lanes/*) echo "$f -march=native|benchmark: kane's side of bench_lanes, -march=native" ;;
         benchmarks/*) echo "$f|benchmark: kane's side of bench_$(basename "$f" _kane.cpp)" ;;
-        tests/test_chain_speeds.cpp) echo "$f -march=native|test, -march=native (lanes of four doubles)" ;;
+        tests/test_chain_speeds.cpp | tests/test_lane*.cpp) echo "$f -march=native|test, -march=native (lanes)" ;;
         tests/*) echo "$f|test" ;;
       esac
     done

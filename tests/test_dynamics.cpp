@@ -7,6 +7,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <kane/kane.hpp>
 
@@ -403,6 +404,24 @@ TEST_CASE("dynamics: an M known at compile time, against the M of Kane's sums") 
   body(x, dx, 0.0);
   CHECK(body.status() == kane::solve_status::not_finite);
   for (double v : dx) CHECK(std::isnan(v));
+  // NaN or inf at any entry of x, in an array (copied in blocks) and in a vector (number by number);
+  // q5..q7 enter no equation but are checked
+  for (const double bad :
+       {std::numeric_limits<double>::quiet_NaN(), -std::numeric_limits<double>::infinity()})
+    for (std::size_t i = 0; i < 14; ++i) {
+      std::array<double, 14> xa{};
+      xa[0] = 1, xa[i] = bad;
+      std::vector<double> xv(xa.begin(), xa.end()), dv(14);
+      body(xa, dx, 0.0);
+      CHECK(body.status() == kane::solve_status::not_finite);
+      for (double v : dx) CHECK(std::isnan(v));
+      body(xv, dv, 0.0);
+      CHECK(body.status() == kane::solve_status::not_finite);
+      for (double v : dv) CHECK(std::isnan(v));
+    }
+  x = {}, x[0] = 1;
+  body(x, dx, 0.0);
+  CHECK(body.status() == kane::solve_status::ok);
 }
 
 namespace {

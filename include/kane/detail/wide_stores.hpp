@@ -3,6 +3,7 @@
 // copies of small objects and Eigen's fixed-size products read doubles in such blocks.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstring>
 #include <type_traits>
@@ -65,26 +66,56 @@ KANE_ALWAYS_INLINE void store_in_blocks(S* to, const F& value) {
   (std::make_index_sequence<N>{});
 }
 
+// The entries of a small matrix that are zero at compile time, by rows: none by default.
+template <std::size_t Rows, std::size_t Cols>
+struct zero_pattern {
+  std::array<bool, Rows * Cols> zero{};
+};
+
+template <auto Zeros, int Inner>
+constexpr bool zero_entry(int r, int k) {
+  if constexpr (Zeros.zero.size() == 0)
+    return false;
+  else
+    return Zeros.zero[std::size_t(r * Inner + k)];
+}
+template <auto Zeros, int Inner>
+constexpr int first_entry(int r) {  // the first entry of row r not zero, or Inner
+  int k = 0;
+  while (k < Inner && zero_entry<Zeros, Inner>(r, k)) ++k;
+  return k;
+}
+// (a b)_RC = sum over k of a_Rk b_kC in ascending order, Zeros' entries of a skipped
+template <auto Zeros, int R, int C, class A, class B>
+KANE_ALWAYS_INLINE typename A::Scalar product_entry(const A& a, const B& b) {
+  using S = typename A::Scalar;
+  constexpr int inner = A::ColsAtCompileTime, first = first_entry<Zeros, inner>(R);
+  if constexpr (first == inner)
+    return S(0);
+  else {
+    S x = a.coeff(R, first) * b.coeff(first, C);
+    [&]<int... K>(std::integer_sequence<int, K...>) KANE_ALWAYS_INLINE_LAMBDA {
+      ((K > first_entry<Zeros, A::ColsAtCompileTime>(R) && !zero_entry<Zeros, A::ColsAtCompileTime>(R, K)
+            ? void(x += a.coeff(R, K) * b.coeff(K, C))
+            : void()),
+       ...);
+    }
+    (std::make_integer_sequence<int, inner>{});
+    return x;
+  }
+}
+
 // a b of small fixed sizes, each number a sum over k in ascending order of numbers read one by
-// one: no wide load of a or b, which were often just stored number by number. A matrix is
-// stored in blocks.
-template <class A, class B>
+// one: no wide load of a or b, which were often just stored number by number. The entries of a
+// that Zeros marks skip their products. A matrix is stored in blocks.
+template <auto Zeros = zero_pattern<0, 0>{}, class A, class B>
 KANE_ALWAYS_INLINE Eigen::Matrix<typename A::Scalar, A::RowsAtCompileTime, B::ColsAtCompileTime>
 product_in_blocks(const A& a, const B& b) {
   using S = typename A::Scalar;
-  constexpr int rows = A::RowsAtCompileTime, inner = A::ColsAtCompileTime;
+  constexpr int rows = A::RowsAtCompileTime;
   Eigen::Matrix<S, rows, B::ColsAtCompileTime> out;
   const auto number = [&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
-    constexpr Eigen::Index r = Eigen::Index(i) % rows, c = Eigen::Index(i) / rows;
-    if constexpr (inner == 0)
-      return S(0);
-    else
-      return [&]<int... K>(std::integer_sequence<int, K...>) KANE_ALWAYS_INLINE_LAMBDA {
-        S x = a.coeff(r, 0) * b.coeff(0, c);
-        ((x += a.coeff(r, K + 1) * b.coeff(K + 1, c)), ...);
-        return x;
-      }
-    (std::make_integer_sequence<int, inner - 1>{});
+    return product_entry<Zeros, int(i) % A::RowsAtCompileTime, int(i) / A::RowsAtCompileTime>(a, b);
   };
   constexpr std::size_t size = std::size_t(rows * B::ColsAtCompileTime);
   if constexpr (B::ColsAtCompileTime == 1)  // a vector, kept in registers

@@ -101,7 +101,7 @@ class motion
     if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
       return;
     else
-      ev.template update_for<detail::equation_reads<Sys, Ev, true>>(s_);
+      ev.template update_for<detail::reads_of_copy<detail::equation_reads<Sys, Ev, true>, scalar, X>>(s_);
     auto r = detail::forward_at<Sys, detail::rates::zero>(ev);
     detail::finish_forward<Sys, Ev>(r);
     status_ = r.status;

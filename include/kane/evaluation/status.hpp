@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -179,6 +180,38 @@ constexpr S nonfinite_residue(const std::array<S, N>& a) {
     return -S(0);
   else
     return pairwise_residue<0, N>(a);
+}
+// The nonfinite_residue of a state's arrays, whose owner stored them long before or in blocks
+// (detail/wide_stores.hpp): doubles read in those blocks into one vector sum, reduced once.
+template <class S, std::size_t... N>
+KANE_ALWAYS_INLINE S input_residue(const std::array<S, N>&... a) {
+  if constexpr (std::is_same_v<S, double>) {
+    constexpr std::size_t w = widest_store;
+    using wide_block = typename block_of<w>::type;
+    using pair = typename block_of<2>::type;
+    wide_block sum = wide_block{} - 0.0;  // -0: the identity the optimizer folds away
+    pair half = pair{} - 0.0;
+    double one = -0.0;
+    const auto add = [&]<std::size_t M>(const std::array<double, M>& x) KANE_ALWAYS_INLINE_LAMBDA {
+      constexpr std::size_t wide = M / w * w, pairs = wide + (M - wide) / 2 * 2;
+      for (std::size_t k = 0; k < wide; k += w) {
+        wide_block b;
+        std::memcpy(&b, x.data() + k, sizeof b);
+        sum += b - b;
+      }
+      if constexpr (pairs > wide) {
+        pair b;
+        std::memcpy(&b, x.data() + wide, sizeof b);
+        half += b - b;
+      }
+      if constexpr (M > pairs) one += x[pairs] - x[pairs];
+    };
+    (add(a), ...);
+    half += __builtin_shufflevector(sum, sum, 0, 1);
+    if constexpr (w > 2) half += __builtin_shufflevector(sum, sum, w - 2, w - 1);
+    return half[0] + half[1] + one;
+  } else
+    return (S(-0.0) + ... + nonfinite_residue(a));
 }
 // spoil(x) makes x (an S or a matrix of S) NaN unless ok: for numbers a product
 // by 1 or NaN (no branch, so the results need not merge), else a store.

@@ -209,18 +209,21 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
               else
                 return detail::inertia_in_root<I>(ev);
             }();
+            // in its own frame, I's zero components skip their products
+            constexpr auto zeros = std::is_same_v<A, typename I::frame>    ? detail::inertia_zeros<I>()
+                                   : std::is_same_v<A, typename IL::frame> ? detail::inertia_zeros<IL>()
+                                                                           : detail::zero_pattern<3, 3>{};
             if constexpr (has(Parts, parts::mass_matrix)) {
-              const Eigen::Matrix<S, 3, int(n)> iw = product_in_blocks(i, w);
+              const Eigen::Matrix<S, 3, int(n)> iw = product_in_blocks<zeros>(i, w);
               detail::add_upper<reached_columns<Cols, Sp, Om, A>, false>(out.M, w, iw);
             }
             if constexpr (has(Parts, parts::forcing)) {
               // -(I alpha0 + w x I w) number by number: no wide load of what was stored so
               const auto as_v3 = [](const Eigen::Matrix<S, 3, 1>& x) { return v3<S>{x(0), x(1), x(2)}; };
               const v3<S> omega = eval_in<A>(angular_velocity<R, B>(), ev);
-              const v3<S> t =
-                  as_v3(product_in_blocks(i, alpha0)) +
-                  cross3(omega,
-                         as_v3(product_in_blocks(i, Eigen::Matrix<S, 3, 1>(omega.x, omega.y, omega.z))));
+              const v3<S> t = as_v3(product_in_blocks<zeros>(i, alpha0)) +
+                              cross3(omega, as_v3(product_in_blocks<zeros>(
+                                                i, Eigen::Matrix<S, 3, 1>(omega.x, omega.y, omega.z))));
               detail::add_transposed<Cols::template kinds<detail::nonzero_columns<Sp, Om, A>()>()>(
                   out.f, w, Eigen::Matrix<S, 3, 1>(-t.x, -t.y, -t.z));
             }

@@ -53,6 +53,15 @@ Eigen::Matrix<typename Ev::scalar, 3, 3> inertia_in_own(const Ev& ev) {
   });
   return out;
 }
+// The components of I that are zero at compile time, as entries of its 3 x 3 matrix.
+template <class I>
+constexpr zero_pattern<3, 3> inertia_zeros() {
+  using Cs = std::remove_cvref_t<decltype(I::components)>;
+  return [&]<std::size_t... JK>(std::index_sequence<JK...>) {
+    return zero_pattern<3, 3>{{is_zero_v<std::tuple_element_t<sym_index[JK / 3][JK % 3], Cs>>...}};
+  }
+  (std::make_index_sequence<9>{});
+}
 // How many unit vectors of frames other than A the vector V holds (each a rotation to A).
 template <class A, class V>
 constexpr int foreign_units() {
