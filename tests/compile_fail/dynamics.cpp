@@ -29,6 +29,8 @@
 // case linearize_equations_lanes: kane: linearize_equations takes one state at a time
 // case cut_of_a_vector: kane: cut<P, Items...> takes the frames of the part's bodies and the points of its particles
 // case eigenvalues_of_a_dynamic_matrix: kane: eigenvalues takes a square matrix of real numbers of fixed size
+// A case's compile defines KANE_A_CASE: then it compiles only the functions its misuse reaches. The
+// accepted twin compiles all.
 #include <array>
 
 #include <kane/kane.hpp>
@@ -90,12 +92,17 @@ using wheel_speeds = kane::qdot_speeds<2>;
 #else
 using wheel_speeds = kane::speeds<kane::dt(kane::q<1>), kane::dt(kane::q<2>), kane::free_speed>;
 #endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_inertia_in_turning_frame) ||                                \
+    defined(KANE_CASE_inertia_about_other_point) || defined(KANE_CASE_inertia_not_inertia) ||              \
+    defined(KANE_CASE_wheel_inertia_not_symmetric) || defined(KANE_CASE_spinning_inertia_not_symmetric) || \
+    defined(KANE_CASE_wheel_speed_not_in_set)
 double use_wheel() {
   kane::state<double, 2, 3, 9> s;
   kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, wheel_speeds> ev;
   ev.update(s);
   return kane::mass_matrix_and_forcing<kane::system<body, wheel>>(ev).M(0, 0);
 }
+#endif
 struct M : kane::root_frame {};  // another tree
 #ifdef KANE_CASE_torque_from_other_tree
 using twist = kane::torque<B, p<9> * e<M, 1>>;
@@ -104,12 +111,17 @@ using twist = kane::torque<B, p<9> * e<N, 1>>;
 #endif
 using sys = kane::system<body, tip, push, twist, kane::gravity<-p<8> * e<N, 3>>>;
 
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_inertia_in_turning_frame) ||                      \
+    defined(KANE_CASE_inertia_about_other_point) || defined(KANE_CASE_inertia_not_inertia) ||    \
+    defined(KANE_CASE_particle_mass_not_scalar) || defined(KANE_CASE_force_at_massless_point) || \
+    defined(KANE_CASE_torque_from_other_tree)
 double use() {
   kane::state<double, 2, 2, 9> s;
   kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, kane::qdot_speeds<2>> ev;
   ev.update(s);
   return kane::mass_matrix_and_forcing<sys>(ev).M(0, 0);
 }
+#endif
 
 // q2' = q1' as a nonholonomic constraint on the speeds u1 = q1', u2 = q2'
 using rates = kane::speeds<kane::dt(kane::q<1>), kane::dt(kane::q<2>)>;
@@ -119,6 +131,7 @@ using tied_speeds = kane::qdot_speeds<2>;
 #else
 using tied_speeds = rates;
 #endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_equations_on_other_speeds)
 double use_tied() {
   kane::state<double, 2, 2, 9> s;
   kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, tied_speeds> ev;
@@ -126,7 +139,9 @@ double use_tied() {
   return kane::reduced_mass_matrix_and_forcing<sys, tied>(ev, kane::solve_constraints<tied>(ev))
       .reduced.M(0, 0);
 }
+#endif
 
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_cut_names_no_mass) || defined(KANE_CASE_cut_of_a_vector)
 // The pin's reaction on the body fixed in B: a cut names bodies by their frames, particles by their points.
 double pin() {
   kane::state<double, 2, 2, 9> s;
@@ -141,7 +156,9 @@ double pin() {
 #endif
   return kane::reaction<sys, part>(ev).force[0];
 }
+#endif
 
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_motion_wrong_size) || defined(KANE_CASE_motion_index_beyond)
 double integrate() {
   kane::state<double, 2, 2, 9> s;
   using ev_type =
@@ -160,7 +177,9 @@ double integrate() {
   return dx[f.index(kane::u<2>)];
 #endif
 }
+#endif
 
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_constrained_index_dependent)
 double integrate_tied() {
   kane::state<double, 2, 2, 9> s;
   using ev_type = kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, rates>;
@@ -174,11 +193,13 @@ double integrate_tied() {
   return dx[f.index(kane::u<1>)];
 #endif
 }
+#endif
 
 // A body whose mass centre is known by its velocity: momentum and kinetic energy, no potential.
 struct Bv : kane::point_by_velocity<N, kane::dt(kane::q<1>) * p<1> * e<A, 2>> {};
 using rolling_sys = kane::system<kane::rigid_body<B, Bv, p<3>, kane::inertia<B, Bv, p<4>, p<4>, p<5>>>,
                                  kane::gravity<-p<8> * e<N, 3>>>;
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_potential_of_velocity_point)
 double energy() {
   kane::state<double, 2, 2, 9> s;
   kane::evaluator<decltype(s), kane::frames<B>, kane::level::velocity> ev;
@@ -189,6 +210,7 @@ double energy() {
   return kane::kinetic_energy<rolling_sys>(ev) + kane::angular_momentum<rolling_sys>(ev)[0];
 #endif
 }
+#endif
 
 // A spring from O to a particle at Bo.
 #ifdef KANE_CASE_spring_stiffness_not_scalar
@@ -196,12 +218,14 @@ using stretched = kane::system<kane::particle<Bo, p<3>>, kane::spring<O, Bo, p<6
 #else
 using stretched = kane::system<kane::particle<Bo, p<3>>, kane::spring<O, Bo, p<6>, p<7>>>;
 #endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_spring_stiffness_not_scalar)
 double stretched_energy() {
   kane::state<double, 2, 2, 9> s;
   kane::evaluator<decltype(s), kane::frames<B>, kane::level::acceleration> ev;
   ev.update(s);
   return kane::potential_energy<stretched>(ev) + kane::mass_matrix_and_forcing<stretched>(ev).f(0);
 }
+#endif
 
 // Analytical derivatives: a tree of simple rotations by q, loads fixed in the bodies they act on.
 #ifdef KANE_CASE_derivatives_of_world_load
@@ -214,6 +238,8 @@ using steering_speeds = kane::speeds<kane::dt(q<2>{}), kane::dt(q<1>{})>;  // th
 #else
 using steering_speeds = kane::qdot_speeds<2>;
 #endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_derivatives_of_world_load) || \
+    defined(KANE_CASE_derivatives_of_reordered_rates) || defined(KANE_CASE_derivatives_without_joint_form)
 double derivative() {
   kane::state<double, 2, 2, 9> s;
   kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, steering_speeds> ev;
@@ -224,7 +250,9 @@ double derivative() {
   return kane::forward_dynamics_derivatives<steered>(ev).dud_dq(0, 0);
 #endif
 }
+#endif
 
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_linear_index_not_in_x)
 // Rows and columns of a linearization by coordinate and speed.
 double linear_entry() {
   kane::state<double, 2, 2, 9> s;
@@ -238,9 +266,12 @@ double linear_entry() {
   return lin.A(L::index(kane::q<1>), L::index(kane::u<2>));
 #endif
 }
+#endif
 
 // kane::motion<System>: its state is kane::state_of<System>; its second argument a speed set or an evaluator.
 using pendulum = kane::system<kane::particle<Bo, p<3>>, kane::gravity<-p<8> * e<N, 3>>>;
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_motion_state_of_other_type) || \
+    defined(KANE_CASE_motion_second_argument)
 double own_motion() {
 #ifdef KANE_CASE_motion_state_of_other_type
   kane::state<double, 2, 2, 9> s;
@@ -256,6 +287,7 @@ double own_motion() {
   f(x, dx, 0.0);
   return dx[3];
 }
+#endif
 
 // Linearization over kane::lanes: the analytical derivatives with inputs of the state; one state at a
 // time otherwise.
@@ -270,37 +302,46 @@ using lane_inputs = kane::inputs<p<7>>;
 #else
 using lane_inputs = kane::inputs<kane::r<1>>;
 #endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_linearize_lanes_by_sums) || \
+    defined(KANE_CASE_linearize_lanes_by_parameter)
 double lanes_linearization() {
   kane::state<two, 2, 2, 9, 1> s;
   using ev_type = kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, lane_speeds>;
   return kane::linearize<steered, ev_type, lane_inputs>(s).A(0, 0)[0];
 }
+#endif
 #ifdef KANE_CASE_linearize_constrained_lanes
 using tied_number = two;
 #else
 using tied_number = double;
 #endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_linearize_constrained_lanes)
 double tied_linearization() {
   kane::state<tied_number, 2, 2, 9> s;
   using ev_type = kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, rates>;
   return kane::linearize_constrained<sys, tied, ev_type>(s).status == kane::status_of<tied_number>{};
 }
+#endif
 #ifdef KANE_CASE_linearize_equations_lanes
 using reduced_number = two;
 #else
 using reduced_number = double;
 #endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_linearize_equations_lanes)
 double reduced_linearization() {
   kane::state<reduced_number, 2, 2, 9> s;
   using ev_type = kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, rates>;
   return kane::linearize_equations<sys, tied, ev_type>(s).status == kane::status_of<reduced_number>{};
 }
+#endif
 #ifdef KANE_CASE_eigenvalues_of_a_dynamic_matrix
 using stability_matrix = Eigen::MatrixXd;
 #else
 using stability_matrix = Eigen::Matrix2d;
 #endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_eigenvalues_of_a_dynamic_matrix)
 double stability() {
   const stability_matrix a = Eigen::Matrix2d::Identity();
   return kane::eigenvalues(a).values(0).real();
 }
+#endif
