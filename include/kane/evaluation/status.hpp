@@ -182,10 +182,10 @@ constexpr S nonfinite_residue(const std::array<S, N>& a) {
     return pairwise_residue<0, N>(a);
 }
 // The nonfinite_residue of a state's arrays, whose owner stored them long before or in blocks
-// (detail/wide_stores.hpp): doubles read in those blocks into one vector sum, reduced once.
+// (detail/wide_stores.hpp): six doubles or more read in those blocks into one vector sum, reduced once.
 template <class S, std::size_t... N>
 KANE_ALWAYS_INLINE S input_residue(const std::array<S, N>&... a) {
-  if constexpr (std::is_same_v<S, double>) {
+  if constexpr (std::is_same_v<S, double> && (0 + ... + N) >= 6) {
     constexpr std::size_t w = widest_store;
     using wide_block = typename block_of<w>::type;
     using pair = typename block_of<2>::type;
