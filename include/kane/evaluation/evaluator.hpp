@@ -214,11 +214,6 @@ class evaluator<St, frames<Fs...>, Level, Given>
   static constexpr bool rests = requires {
     Reads::rest;
   };
-  // Reads::in_blocks: the state's arrays were stored in blocks (detail/wide_stores.hpp), and are read so
-  template <class Reads>
-  static constexpr bool in_blocks = requires {
-    Reads::in_blocks;
-  };
   template <class Reads>
   static constexpr detail::rates ud_of = rests<Reads> ? detail::rates::at_rest : detail::rates::of_state;
 
@@ -245,17 +240,9 @@ class evaluator<St, frames<Fs...>, Level, Given>
     else if constexpr (Rates)
       detail::assign(st_.u, s.u), detail::assign(st_.ud, s.ud);
     const auto tr = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
-    scalar residue = (s.t - s.t) + norm_residue;
-    constexpr bool ud = acceleration && ud_of<Reads> == detail::rates::of_state;
-    if constexpr (in_blocks<Reads> && Rates && solves && ud)  // the state's arrays in one sum
-      residue += detail::input_residue(s.q, s.p, s.u, s.ud);
-    else if constexpr (in_blocks<Reads> && Rates && solves && velocity)
-      residue += detail::input_residue(s.q, s.p, s.u);
-    else {
-      residue += in_blocks<Reads> ? detail::input_residue(s.q, s.p)
-                                  : detail::nonfinite_residue(s.q) + detail::nonfinite_residue(s.p);
-      if constexpr (Rates) residue += rates_residue<ud_of<Reads>>(s);
-    }
+    constexpr bool u = Rates && solves && velocity, ud = u && acceleration && !rests<Reads>;  // u' of s
+    scalar residue = norm_residue + detail::state_residue<detail::reads_in_blocks<Reads>, u, ud>(s);
+    if constexpr (Rates && !solves) residue += rates_residue<ud_of<Reads>>(s);
     this->status_ =
         detail::checks<scalar>(residue == scalar(0), solve_status::not_finite, rotations,
                                solve_status::not_a_rotation, !conflict, solve_status::conflicting_rates);

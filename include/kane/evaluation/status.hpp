@@ -20,6 +20,7 @@
 #include "kane/detail/inline.hpp"
 #include "kane/detail/v3.hpp"
 #include "kane/detail/wide_stores.hpp"
+#include "kane/evaluation/finite.hpp"
 #include "kane/scalars/scalar.hpp"
 
 #if (defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__)) && \
@@ -163,56 +164,6 @@ KANE_ALWAYS_INLINE typename lane_traits<S>::mask ok_of(const status_of<S>& st) {
     return mask{__builtin_convertvector(st.code == 0, typename mask::vector)};
   }
 }
-// 0 if every number of a is finite, NaN otherwise: x - x is 0 for a finite x and
-// NaN for NaN or inf, and a sum of zeros is 0 (no comparison per number). The sum is
-// pairwise, so its additions do not wait on each other. An empty sum is -0, the additive
-// identity the optimizer folds away (x + 0 is not x for x = -0).
-template <std::size_t B, std::size_t E, class S, std::size_t N>
-constexpr S pairwise_residue(const std::array<S, N>& a) {
-  if constexpr (E - B == 1)
-    return a[B] - a[B];
-  else
-    return pairwise_residue<B, B + (E - B) / 2>(a) + pairwise_residue<B + (E - B) / 2, E>(a);
-}
-template <class S, std::size_t N>
-constexpr S nonfinite_residue(const std::array<S, N>& a) {
-  if constexpr (N == 0)
-    return -S(0);
-  else
-    return pairwise_residue<0, N>(a);
-}
-// The nonfinite_residue of a state's arrays, whose owner stored them long before or in blocks
-// (detail/wide_stores.hpp): six doubles or more read in those blocks into one vector sum, reduced once.
-template <class S, std::size_t... N>
-KANE_ALWAYS_INLINE S input_residue(const std::array<S, N>&... a) {
-  if constexpr (std::is_same_v<S, double> && (0 + ... + N) >= 6) {
-    constexpr std::size_t w = widest_store;
-    using wide_block = typename block_of<w>::type;
-    using pair = typename block_of<2>::type;
-    wide_block sum = wide_block{} - 0.0;  // -0: the identity the optimizer folds away
-    pair half = pair{} - 0.0;
-    double one = -0.0;
-    const auto add = [&]<std::size_t M>(const std::array<double, M>& x) KANE_ALWAYS_INLINE_LAMBDA {
-      constexpr std::size_t wide = M / w * w, pairs = wide + (M - wide) / 2 * 2;
-      for (std::size_t k = 0; k < wide; k += w) {
-        wide_block b;
-        std::memcpy(&b, x.data() + k, sizeof b);
-        sum += b - b;
-      }
-      if constexpr (pairs > wide) {
-        pair b;
-        std::memcpy(&b, x.data() + wide, sizeof b);
-        half += b - b;
-      }
-      if constexpr (M > pairs) one += x[pairs] - x[pairs];
-    };
-    (add(a), ...);
-    half += __builtin_shufflevector(sum, sum, 0, 1);
-    if constexpr (w > 2) half += __builtin_shufflevector(sum, sum, w - 2, w - 1);
-    return half[0] + half[1] + one;
-  } else
-    return (S(-0.0) + ... + nonfinite_residue(a));
-}
 // spoil(x) makes x (an S or a matrix of S) NaN unless ok: for numbers a product
 // by 1 or NaN (no branch, so the results need not merge), else a store.
 template <class S, class Mask = bool>
@@ -245,27 +196,6 @@ KANE_ALWAYS_INLINE void spoil_unless(M& x, const Mask& ok) {
   } else
     nan_unless<S>(ok)(x);
 }
-template <class S, std::size_t N>
-constexpr auto all_finite(const std::array<S, N>& a) {
-  return nonfinite_residue(a) == S(0);
-}
-// The same for an Eigen matrix of fixed size: one sum, no branch per entry.
-template <class M>
-auto all_finite_matrix(const M& m) {
-  return (m.array() - m.array()).sum() == typename M::Scalar(0);
-}
-// The same number by number, for a small matrix whose numbers were just stored one by one: a
-// wide load of them would wait.
-template <class M>
-auto all_finite_numbers(const M& m) {
-  if constexpr (M::SizeAtCompileTime > 16)
-    return all_finite_matrix(m);
-  else
-    return [&]<std::size_t... I>(std::index_sequence<I...>) {
-      return all_finite(std::array<typename M::Scalar, sizeof...(I)>{m.coeff(std::ptrdiff_t(I))...});
-    }
-  (std::make_index_sequence<std::size_t(M::SizeAtCompileTime)>{});
-}
 // ok_of(st) hidden from the optimizer for one state (detail/inline.hpp: opaque)
 template <class S>
 KANE_ALWAYS_INLINE typename lane_traits<S>::mask opaque_ok(const status_of<S>& st) {
@@ -294,14 +224,6 @@ status_of<typename M::Scalar> finished(M& x, status_of<typename M::Scalar> statu
   else if (status != solve_status::ok)
     x.setConstant(std::numeric_limits<S>::quiet_NaN());
   return status;
-}
-// The diagonal of a mass matrix M finite: so is all of M, |M_rs| <= (M_rr M_ss)^1/2 (M positive
-// semidefinite).
-template <class M>
-auto finite_diagonal(const M& m) {
-  using S = typename M::Scalar;
-  return [&]<int... I>(std::integer_sequence<int, I...>) { return ((m(I, I) - m(I, I)) + ...) == S(0); }
-  (std::make_integer_sequence<int, M::RowsAtCompileTime>{});
 }
 }  // namespace detail
 

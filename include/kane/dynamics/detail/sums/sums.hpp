@@ -209,10 +209,7 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
               else
                 return detail::inertia_in_root<I>(ev);
             }();
-            // in its own frame, I's zero components skip their products
-            constexpr auto zeros = std::is_same_v<A, typename I::frame>    ? detail::inertia_zeros<I>()
-                                   : std::is_same_v<A, typename IL::frame> ? detail::inertia_zeros<IL>()
-                                                                           : detail::zero_pattern<3, 3>{};
+            constexpr auto zeros = detail::inertia_zeros_in<A, I, IL>();
             if constexpr (has(Parts, parts::mass_matrix)) {
               const Eigen::Matrix<S, 3, int(n)> iw = product_in_blocks<zeros>(i, w);
               detail::add_upper<reached_columns<Cols, Sp, Om, A>, false>(out.M, w, iw);

@@ -62,6 +62,16 @@ constexpr zero_pattern<3, 3> inertia_zeros() {
   }
   (std::make_index_sequence<9>{});
 }
+// I's zero components where the sums take I in A: its own frame's or its lift IL's, none in others
+template <class A, class I, class IL>
+constexpr zero_pattern<3, 3> inertia_zeros_in() {
+  if constexpr (std::is_same_v<A, typename I::frame>)
+    return inertia_zeros<I>();
+  else if constexpr (std::is_same_v<A, typename IL::frame>)
+    return inertia_zeros<IL>();
+  else
+    return {};
+}
 // How many unit vectors of frames other than A the vector V holds (each a rotation to A).
 template <class A, class V>
 constexpr int foreign_units() {
