@@ -40,8 +40,8 @@ KANE_ALWAYS_INLINE S input_residue(const std::array<S, N>&... a) {
     constexpr std::size_t w = widest_store;
     using wide_block = typename block_of<w>::type;
     using pair = typename block_of<2>::type;
-    wide_block sum = wide_block{} - 0.0;  // -0: the identity the optimizer folds away
-    pair half = pair{} - 0.0;
+    wide_block sum = -wide_block{};  // -0: the identity the optimizer folds away
+    pair half = -pair{};
     double one = -0.0;
     const auto add = [&]<std::size_t M>(const std::array<double, M>& x) KANE_ALWAYS_INLINE_LAMBDA {
       constexpr std::size_t wide = M / w * w, pairs = wide + (M - wide) / 2 * 2;

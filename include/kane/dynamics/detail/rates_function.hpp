@@ -99,9 +99,6 @@ KANE_ALWAYS_INLINE void copy_wide(S* to, const X& x, std::size_t from) {
   else
     for (std::size_t i = 0; i < N; ++i) to[i] = x[from + i];
 }
-// dxdt[i] = q'_i, i < N, NaN unless ok (q' may be finite where u' is NaN): by products and a flag
-// the optimizer cannot thread, since a branch here keeps the local evaluator's dead stores (and
-// the work behind them, such as sin and cos of an angle nothing reads) alive.
 // Reads of a state whose arrays copy_wide stored from X: in blocks where X's are contiguous doubles
 template <class Reads>
 struct read_in_blocks : Reads {
@@ -110,6 +107,9 @@ struct read_in_blocks : Reads {
 template <class Reads, class S, class X>
 using reads_of_copy =
     std::conditional_t<std::is_same_v<S, double> && contiguous<X>(), read_in_blocks<Reads>, Reads>;
+// dxdt[i] = q'_i, i < N, NaN unless ok (q' may be finite where u' is NaN): by products and a flag
+// the optimizer cannot thread, since a branch here keeps the local evaluator's dead stores (and
+// the work behind them, such as sin and cos of an angle nothing reads) alive.
 template <std::size_t N, class S, class Q, class DX>
 KANE_ALWAYS_INLINE void write_rates(DX& dxdt, const Q& qd, const status_of<S>& status) {
   const auto spoil = nan_unless<S>(opaque_ok<S>(status));
