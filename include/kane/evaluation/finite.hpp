@@ -32,11 +32,12 @@ constexpr S nonfinite_residue(const std::array<S, N>& a) {
   else
     return pairwise_residue<0, N>(a);
 }
-// The nonfinite_residue of a state's arrays, whose owner stored them long before or in blocks
-// (detail/wide_stores.hpp): six doubles or more read in those blocks into one vector sum, reduced once.
-template <class S, std::size_t... N>
+// The nonfinite_residue of a state's arrays. InBlocks: their owner stored them in blocks
+// (detail/wide_stores.hpp); then six doubles or more are read in those blocks into one vector sum,
+// reduced once.
+template <bool InBlocks, class S, std::size_t... N>
 KANE_ALWAYS_INLINE S input_residue(const std::array<S, N>&... a) {
-  if constexpr (std::is_same_v<S, double> && (0 + ... + N) >= 6) {
+  if constexpr (InBlocks && std::is_same_v<S, double> && (0 + ... + N) >= 6) {
     constexpr std::size_t w = widest_store;
     using wide_block = typename block_of<w>::type;
     using pair = typename block_of<2>::type;
@@ -69,24 +70,16 @@ template <class Reads>
 inline constexpr bool reads_in_blocks = requires {
   Reads::in_blocks;
 };
-// The residue of a state's t, q and p, with u where U and u' where Ud: q, p, u and u' read in the
-// blocks they were stored in where InBlocks.
+// The residue of a state's t, q and p, with u where U and u' where Ud (input_residue).
 template <bool InBlocks, bool U, bool Ud, class St>
 KANE_ALWAYS_INLINE auto state_residue(const St& s) {
   const auto t = s.t - s.t;
-  if constexpr (InBlocks && U && Ud)
-    return t + input_residue(s.q, s.p, s.u, s.ud);
-  else if constexpr (InBlocks && U)
-    return t + input_residue(s.q, s.p, s.u);
-  else if constexpr (InBlocks)
-    return t + input_residue(s.q, s.p);
-  else if constexpr (U && Ud)
-    return t + nonfinite_residue(s.q) + nonfinite_residue(s.p) + nonfinite_residue(s.u) +
-           nonfinite_residue(s.ud);
+  if constexpr (U && Ud)
+    return t + input_residue<InBlocks>(s.q, s.p, s.u, s.ud);
   else if constexpr (U)
-    return t + nonfinite_residue(s.q) + nonfinite_residue(s.p) + nonfinite_residue(s.u);
+    return t + input_residue<InBlocks>(s.q, s.p, s.u);
   else
-    return t + nonfinite_residue(s.q) + nonfinite_residue(s.p);
+    return t + input_residue<InBlocks>(s.q, s.p);
 }
 template <class S, std::size_t N>
 constexpr auto all_finite(const std::array<S, N>& a) {
