@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/lane_traits.hpp"
 #include "kane/detail/list.hpp"
 #include "kane/detail/v3.hpp"
 #include "kane/evaluation/evaluate.hpp"
@@ -207,11 +208,11 @@ inline constexpr bool is_recalling = false;
 template <class Ev, class Plan>
 inline constexpr bool is_recalling<recalling<Ev, Plan>> = true;
 
-// f(ev), or f of ev recalling the repeated nodes of X... where the scalar is not a
-// number (numbers: the compiler finds common subexpressions itself).
+// f(ev), or f of ev recalling the repeated nodes of X... where the scalar is neither a number
+// nor lanes of numbers (there the compiler finds common subexpressions itself).
 template <class... X, class Ev, class F>
 inline decltype(auto) with_common_subexpressions(const Ev& ev, F&& f) {
-  if constexpr (std::is_arithmetic_v<typename Ev::scalar>)
+  if constexpr (std::is_arithmetic_v<typename Ev::scalar> || lane_traits<typename Ev::scalar>::width > 1)
     return f(ev);
   else if constexpr (memo_plan<X...>::repeated.n == 0)
     return f(ev);

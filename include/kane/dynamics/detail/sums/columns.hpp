@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "kane/detail/lane_traits.hpp"
 #include "kane/detail/list.hpp"
 #include "kane/detail/patterned.hpp"
 #include "kane/evaluation/evaluate.hpp"
@@ -116,7 +117,7 @@ inline void add_transposed(Eigen::Matrix<S, N, 1>& out, const Eigen::Matrix<S, 3
       if (column_axis(k) >= 0) return true;
     return false;
   }();
-  if constexpr (!units && !std::is_floating_point_v<S>)
+  if constexpr (!units && !std::is_floating_point_v<S> && lane_traits<S>::width == 1)
     out.noalias() += v.transpose() * x;
   else
     static_for<std::size_t(N)>([&](auto r) {

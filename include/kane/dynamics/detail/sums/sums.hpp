@@ -22,6 +22,7 @@
 #include "kane/detail/choices.hpp"
 #include "kane/detail/inline.hpp"
 #include "kane/detail/invert.hpp"
+#include "kane/detail/lane_traits.hpp"
 #include "kane/detail/wide_stores.hpp"
 #include "kane/dynamics/bodies.hpp"
 #include "kane/dynamics/detail/sums/columns.hpp"
@@ -283,10 +284,10 @@ auto equations_along(const Ev& ev, const Cols& cols) {
   if constexpr (!known && with_m) out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
   if constexpr (known && !with_m)  // the caller checks M^-1 f: a NaN or inf of f reaches it
     return out;
-  const auto finite = [&] {  // numbers: M's diagonal suffices (M = sum m V^T V + W^T I W)
+  const auto finite = [&] {  // numbers and lanes: M's diagonal suffices (M = sum m V^T V + W^T I W)
     if constexpr (known || !with_m)
       return detail::all_finite_numbers(out.f);
-    else if constexpr (std::is_floating_point_v<S>)
+    else if constexpr (std::is_floating_point_v<S> || lane_traits<S>::width > 1)
       return detail::finite_diagonal(out.M) && detail::all_finite_numbers(out.f);
     else
       return detail::all_finite_matrix(out.M) && detail::all_finite_numbers(out.f);
@@ -295,6 +296,5 @@ auto equations_along(const Ev& ev, const Cols& cols) {
   return out;
 }
 }  // namespace detail
-
 }  // namespace kane
 #pragma GCC diagnostic pop
