@@ -143,6 +143,64 @@ TEST_CASE("lanes: to_lanes and from_lanes of states shorter and longer than the 
   check_transposes<float, 8, 8>(8);
 }
 
+TEST_CASE("lanes: to_lanes and from_lanes through row functions, states inside the user's structs",
+          "[lanes]") {
+  struct in {
+    int id;
+    std::array<double, 6> x;
+  };
+  struct out {
+    double xd[6];
+    int status;
+  };
+  std::vector<in> ins(5);
+  for (std::size_t l = 0; l < ins.size(); ++l) {
+    ins[l].id = int(l);
+    for (std::size_t k = 0; k < 6; ++k) ins[l].x[k] = double(10 * l + k);
+  }
+  const auto x = kane::to_lanes<4, 6>([&](std::size_t l) { return ins[1 + l].x.data(); }, 3);
+  for (std::size_t l = 0; l < 4; ++l)
+    for (std::size_t k = 0; k < 6; ++k) CHECK(x[k][l] == ins[l < 3 ? 1 + l : 1].x[k]);
+  std::vector<out> outs(4, out{{-1, -1, -1, -1, -1, -1}, 7});
+  kane::from_lanes(
+      x, [&](std::size_t l) { return outs[l].xd; }, 3);
+  for (std::size_t l = 0; l < 4; ++l) {
+    for (std::size_t k = 0; k < 6; ++k) CHECK(outs[l].xd[k] == (l < 3 ? ins[1 + l].x[k] : -1.0));
+    CHECK(outs[l].status == 7);  // the numbers after xd untouched
+  }
+}
+
+namespace {
+// all_of and any_of of masks with each one lane differing from the rest
+template <class S, std::size_t W>
+void check_reductions() {
+  using L = kane::lanes<S, W>;
+  const L zero(0), one(1);
+  CHECK(all_of(one > zero));
+  CHECK(any_of(one > zero));
+  CHECK(!all_of(one < zero));
+  CHECK(!any_of(one < zero));
+  for (std::size_t i = 0; i < W; ++i) {
+    L a = zero;
+    a.set(i, S(1));
+    INFO("W " << W << ", lane " << i);
+    CHECK(any_of(a > zero));
+    CHECK(!all_of(a > zero));
+    CHECK(any_of(a == zero) == (W > 1));
+    CHECK(!all_of(a == zero));
+  }
+}
+}  // namespace
+
+TEST_CASE("lanes: all_of and any_of see every lane", "[lanes]") {
+  check_reductions<double, 2>();
+  check_reductions<double, 4>();
+  check_reductions<double, 8>();
+  check_reductions<float, 4>();
+  check_reductions<float, 8>();
+  check_reductions<float, 16>();
+}
+
 TEST_CASE("lanes: the exact powers of two that scale a solve, lane by lane as for one number", "[lanes]") {
   using L = kane::lanes<double, 8>;
   const double tiny = std::numeric_limits<double>::denorm_min(), big = std::numeric_limits<double>::max();

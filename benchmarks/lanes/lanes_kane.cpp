@@ -31,7 +31,17 @@ void batches(Motion& motion, const In* in, Out* out) {
       Out& o = out[first];
       motion(in[first].x, o.xd, S(0));
       if constexpr (requires { o.status; }) o.status = motion.status() == kane::solve_status::ok ? 0 : 1;
-    } else {
+    } else if constexpr (std::is_same_v<S, double>) {  // as the docs teach: to_lanes, from_lanes
+      const auto x = kane::to_lanes<W, N>([&](std::size_t l) { return in[first + int(l)].x.data(); }, W);
+      std::array<L, N> xd;
+      motion(x, xd, L(S(0)));
+      kane::from_lanes(
+          xd, [&](std::size_t l) { return out[first + int(l)].xd; }, W);
+      if constexpr (requires { out->status; }) {
+        const auto status = motion.status();
+        for (int l = 0; l < W; ++l) out[first + l].status = status[l] == kane::solve_status::ok ? 0 : 1;
+      }
+    } else {  // floats from and to the doubles of In and Out
       std::array<L, N> x, xd;
       for (int k = 0; k < N; ++k)
         x[k] = L::generate([&](std::size_t l) { return S(in[first + int(l)].x[k]); });

@@ -19,6 +19,26 @@
 #pragma GCC diagnostic ignored "-Wpsabi"
 namespace kane::detail {
 
+// Whether every lane of a mask m is true (all bits set; false: none): one test of the register where
+// the target has one, else lane by lane.
+template <class M>
+KANE_ALWAYS_INLINE bool all_lanes(const M& m) {
+#if defined(__AVX512F__)
+  if constexpr (sizeof(M) == 64)
+    return _mm512_cmpneq_epi32_mask(std::bit_cast<__m512i>(m), _mm512_set1_epi32(-1)) == 0;
+#endif
+#if defined(__AVX__)
+  if constexpr (sizeof(M) == 32)
+    return _mm256_testc_si256(std::bit_cast<__m256i>(m), _mm256_set1_epi32(-1)) != 0;
+#endif
+#if defined(__SSE4_1__)
+  if constexpr (sizeof(M) == 16) return _mm_testc_si128(std::bit_cast<__m128i>(m), _mm_set1_epi32(-1)) != 0;
+#endif
+  bool all = true;
+  for (std::size_t i = 0; i < sizeof(M) / sizeof(m[0]); ++i) all = all && m[i] != 0;
+  return all;
+}
+
 // sin x and cos x in every lane, in vector registers for |x| <= 1e5 (doubles; floats 8192): x =
 // k pi/2 + r, |r| <= pi/4, and polynomials in r (fdlibm's kernels; for floats Cephes'), within an
 // ulp or two of std::sin and std::cos. Other lanes (large, inf, NaN) take std::sin and std::cos.
@@ -29,8 +49,7 @@ KANE_ALWAYS_INLINE void lane_sincos(const vector& x, vector& s, vector& c) {
   typedef I ints __attribute__((vector_size(sizeof(S) * W)));
   const vector ax = x < vector{} ? -x : x;
   const ints near = ax <= vector{} + S(dbl ? 1e5 : 8192);
-  bool all = true;
-  for (std::size_t i = 0; i < W; ++i) all = all && near[i] != 0;
+  const bool all = all_lanes(near);
   const vector xr = near ? x : vector{};
   const vector t = xr * S(0.63661977236758134308) + (xr < vector{} ? S(-0.5) : S(0.5));
   ints k;

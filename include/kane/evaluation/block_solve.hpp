@@ -123,9 +123,10 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
   if constexpr (coupled) {
     constexpr real lo = pow2<real>(limits::min_exponent / 2), hi = pow2<real>(limits::max_exponent / 2);
     const auto outside = scale > S(0) && scale <= limits::max() && !(scale >= S(lo) && scale <= S(hi));
-    if constexpr (lane_traits<S>::width > 1)
-      out.f = lane_traits<S>::select(outside, inverse_power_of_two(scale), out.f);
-    else if (outside)
+    if constexpr (lane_traits<S>::width > 1) {
+      if (any_of(outside))  // a branch, rarely taken: the solve does not wait on the scaling
+        out.f = lane_traits<S>::select(outside, inverse_power_of_two(scale), out.f);
+    } else if (outside)
       out.f = inverse_power_of_two(scale);
   }
   static_for_inline<Sys::form.count>([&](auto b) KANE_ALWAYS_INLINE_LAMBDA {

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <concepts>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -24,6 +25,7 @@
 
 #include "kane/detail/invert.hpp"
 #include "kane/detail/lane_math.hpp"
+#include "kane/detail/lane_transpose.hpp"
 #include "kane/detail/packet.hpp"
 #include "kane/scalars/scalar.hpp"
 
@@ -54,17 +56,9 @@ struct lane_mask {
   friend lane_mask operator&&(const lane_mask& a, const lane_mask& b) { return a & b; }
   friend lane_mask operator||(const lane_mask& a, const lane_mask& b) { return a | b; }
   // every lane true
-  friend bool all_of(const lane_mask& m) {
-    bool all = true;
-    for (std::size_t i = 0; i < W; ++i) all = all && m.bits[i] != 0;
-    return all;
-  }
+  friend bool all_of(const lane_mask& m) { return detail::all_lanes(m.bits); }
   // some lane true
-  friend bool any_of(const lane_mask& m) {
-    bool any = false;
-    for (std::size_t i = 0; i < W; ++i) any = any || m.bits[i] != 0;
-    return any;
-  }
+  friend bool any_of(const lane_mask& m) { return !detail::all_lanes(~m.bits); }
 };
 
 // W numbers of S, one per state, computed together.
@@ -189,20 +183,35 @@ struct lane_traits<lanes<S, W>> {
   }
 };
 
-// count states (count <= W), each N numbers, as N lanes of W: lane l holds states[l]; lanes past count
-// repeat states[0], so that no empty lane reports a status of its own.
-template <std::size_t W, class S, std::size_t N>
-std::array<lanes<S, W>, N> to_lanes(const std::array<S, N>* states, std::size_t count) {
+// count states (count <= W) of N numbers as N lanes of W: lane l holds the N numbers at row(l), a
+// pointer; lanes past count repeat the first state, so that no empty lane reports a status of its own.
+// Transposed in vector registers (detail/lane_transpose.hpp).
+template <std::size_t W, std::size_t N, class Row>
+requires std::is_pointer_v<std::invoke_result_t<const Row&, std::size_t>> KANE_ALWAYS_INLINE auto to_lanes(
+    const Row& row, std::size_t count) {
+  using S = std::remove_cv_t<std::remove_pointer_t<std::invoke_result_t<const Row&, std::size_t>>>;
   std::array<lanes<S, W>, N> x;
-  for (std::size_t k = 0; k < N; ++k)
-    x[k] = lanes<S, W>::generate([&](std::size_t l) { return states[l < count ? l : 0][k]; });
+  detail::rows_to_lanes<S, W>(
+      x, [&](std::size_t l) { return row(l < count ? l : 0); }, std::make_index_sequence<(N + W - 1) / W>{});
   return x;
 }
-// The first count lanes of x (N lanes of W) into count states of N numbers.
+// count states of N numbers each, as above
+template <std::size_t W, class S, std::size_t N>
+KANE_ALWAYS_INLINE std::array<lanes<S, W>, N> to_lanes(const std::array<S, N>* states, std::size_t count) {
+  return to_lanes<W, N>([&](std::size_t l) { return states[l].data(); }, count);
+}
+// The first count lanes of x (N lanes of W) into count states of N numbers, state l at row(l)
+template <class S, std::size_t W, std::size_t N, class Row>
+requires std::is_pointer_v<std::invoke_result_t<const Row&, std::size_t>> KANE_ALWAYS_INLINE void from_lanes(
+    const std::array<lanes<S, W>, N>& x, const Row& row, std::size_t count) {
+  detail::lanes_to_rows<S, W>(x, row, count, std::make_index_sequence<(N + W - 1) / W>{});
+}
+// into count states, as above
 template <class S, std::size_t W, std::size_t N>
-void from_lanes(const std::array<lanes<S, W>, N>& x, std::array<S, N>* states, std::size_t count) {
-  for (std::size_t l = 0; l < count && l < W; ++l)
-    for (std::size_t k = 0; k < N; ++k) states[l][k] = x[k][l];
+KANE_ALWAYS_INLINE void from_lanes(const std::array<lanes<S, W>, N>& x, std::array<S, N>* states,
+                                   std::size_t count) {
+  from_lanes(
+      x, [&](std::size_t l) { return states[l].data(); }, count);
 }
 
 // A coupled block of a structured solve (evaluation/block_solve.hpp), lane by lane: full pivoting
