@@ -24,6 +24,7 @@
 #include <Eigen/Core>
 
 #include "kane/detail/invert.hpp"
+#include "kane/detail/lane_invert.hpp"
 #include "kane/detail/lane_math.hpp"
 #include "kane/detail/lane_transpose.hpp"
 #include "kane/detail/packet.hpp"
@@ -214,8 +215,9 @@ KANE_ALWAYS_INLINE void from_lanes(const std::array<lanes<S, W>, N>& x, std::arr
       x, [&](std::size_t l) { return states[l].data(); }, count);
 }
 
-// A coupled block of a structured solve (evaluation/block_solve.hpp), lane by lane: full pivoting
-// picks its pivots per state. inv NaN, and the mask false, in the lanes whose pivot fails.
+// A coupled block of a structured solve (evaluation/block_solve.hpp) in every lane: full pivoting
+// picks its pivots per state (detail/lane_invert.hpp). inv NaN, and the mask false, in the lanes whose
+// pivot fails.
 template <class S, std::size_t W, int N>
 lane_mask<S, W> factor_block(const Eigen::Matrix<lanes<S, W>, N, N>& b, Eigen::Matrix<lanes<S, W>, N, N>& inv,
                              const lanes<S, W>& tol) {
@@ -230,19 +232,8 @@ lane_mask<S, W> factor_block(const Eigen::Matrix<lanes<S, W>, N, N>& b, Eigen::M
     const L r = select(ok, L(S(1)) / det, L(std::numeric_limits<S>::quiet_NaN()));
     inv << d * r, -c01 * r, -c10 * r, a * r;
     return ok;
-  }
-  lane_mask<S, W> factored;
-  for (std::size_t l = 0; l < W; ++l) {
-    Eigen::Matrix<S, N, N> bl, il;
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j < N; ++j) bl(i, j) = b(i, j)[l];
-    const bool ok = detail::invert(bl, il, tol[l]);
-    if (!ok) il.setConstant(std::numeric_limits<S>::quiet_NaN());
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j < N; ++j) inv(i, j).set(l, il(i, j));
-    factored.bits[l] = ok ? -1 : 0;
-  }
-  return factored;
+  } else
+    return detail::lane_invert(b, inv, tol);
 }
 
 }  // namespace kane
