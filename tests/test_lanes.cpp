@@ -201,6 +201,48 @@ TEST_CASE("lanes: all_of and any_of see every lane", "[lanes]") {
   check_reductions<float, 16>();
 }
 
+namespace {
+// A coupled block of N unknowns in 8 lanes: each lane against detail::invert of its own matrix, with
+// pivots in other places per lane, an exactly singular lane, a NaN and an inf lane
+template <int N>
+void check_block_inverse() {
+  using L = kane::lanes<double, 8>;
+  Eigen::Matrix<L, N, N> m, inv;
+  std::array<Eigen::Matrix<double, N, N>, 8> ms;
+  for (std::size_t l = 0; l < 8; ++l) {
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        ms[l](i, j) = std::sin(1.0 + double(l) + 3.1 * i + 1.7 * j * j) * (i == int((l + j) % N) ? 9.0 : 1.0);
+    if (l == 3) ms[l].row(N - 1) = 2.0 * ms[l].row(0) - ms[l].row(1);  // singular
+    if (l == 5) ms[l](1, N - 1) = std::numeric_limits<double>::quiet_NaN();
+    if (l == 6) ms[l](N - 1, 0) = std::numeric_limits<double>::infinity();
+  }
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) m(i, j) = L::generate([&](std::size_t l) { return ms[l](i, j); });
+  const auto ok = factor_block(m, inv, L(-1.0));
+  for (std::size_t l = 0; l < 8; ++l) {
+    INFO("N " << N << ", lane " << l);
+    Eigen::Matrix<double, N, N> one;
+    const bool expected = kane::detail::invert(ms[l], one);
+    CHECK(ok[l] == expected);
+    CHECK(expected == (l != 3 && l != 5 && l != 6));
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) {
+        if (!expected)
+          CHECK(std::isnan(inv(i, j)[l]));
+        else
+          CHECK(std::abs(inv(i, j)[l] - one(i, j)) <= 1e-13 * (1 + std::abs(one(i, j))));
+      }
+  }
+}
+}  // namespace
+
+TEST_CASE("lanes: a coupled block inverted in every lane at once as one state alone", "[lanes]") {
+  check_block_inverse<3>();
+  check_block_inverse<4>();
+  check_block_inverse<5>();
+}
+
 TEST_CASE("lanes: the exact powers of two that scale a solve, lane by lane as for one number", "[lanes]") {
   using L = kane::lanes<double, 8>;
   const double tiny = std::numeric_limits<double>::denorm_min(), big = std::numeric_limits<double>::max();
