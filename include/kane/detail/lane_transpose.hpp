@@ -35,6 +35,15 @@ KANE_ALWAYS_INLINE void transpose(std::array<V, W>& r) {
   transpose(r, std::make_index_sequence<std::bit_width(W) - 1>{});
 }
 
+// g++ splits an unaligned load of 32 bytes in two for AVX2 targets, and the halves then pass
+// through the stack: such vectors load as two halves joined in registers
+template <class V>
+inline constexpr bool split_loads =
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__AVX512F__)
+    sizeof(V) == 32;
+#else
+    false;
+#endif
 // out = the lanes I... of a and b side by side (functions here return no vector: -Wpsabi)
 template <class V, class Out, std::size_t... I>
 KANE_ALWAYS_INLINE void shuffle(const V& a, const V& b, Out& out, std::index_sequence<I...>) {
@@ -46,7 +55,7 @@ template <std::size_t N, class S, class V>
 KANE_ALWAYS_INLINE void load_first(const S* p, V& v) {
   constexpr std::size_t W = sizeof(V) / sizeof(S), h = W / 2;
   v = V{};
-  if constexpr (N == W)
+  if constexpr (N == W && !split_loads<V>)
     std::memcpy(&v, p, sizeof v);
   else if constexpr (N == 1)
     v[0] = p[0];
