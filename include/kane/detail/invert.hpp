@@ -24,6 +24,20 @@
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
 
+// y = U^-1 L^-1 y, a holding L (unit diagonal) below its diagonal and U above, r the 1 / u_kk
+template <class S, std::size_t N>
+KANE_ALWAYS_INLINE void lu_substitute(const S (&a)[N][N], const S (&r)[N], S (&y)[N]) {
+  for (std::size_t i = 0; i < N; ++i) {
+    S t = y[i];
+    for (std::size_t j = 0; j < i; ++j) t -= a[i][j] * y[j];
+    y[i] = t;
+  }
+  for (std::size_t i = N; i-- > 0;) {
+    S t = y[i];
+    for (std::size_t j = i + 1; j < N; ++j) t -= a[i][j] * y[j];
+    y[i] = t * r[i];
+  }
+}
 // inv = m^-1 and true, or false if a pivot is not above tol (m finite). tol < 0:
 // the relative rule above.
 template <class S, int N>
@@ -71,16 +85,8 @@ bool invert(const Eigen::Matrix<S, N, N>& m, Eigen::Matrix<S, N, N>& inv, S tol 
 #pragma GCC unroll 8
   for (std::size_t c = 0; c < n; ++c) {  // column c of m^-1: L z = P e_c, U y = z, x = Q y
     S y[n];
-    for (std::size_t i = 0; i < n; ++i) {
-      S t = S(p[i] == c);
-      for (std::size_t j = 0; j < i; ++j) t -= a[i][j] * y[j];
-      y[i] = t;
-    }
-    for (std::size_t i = n; i-- > 0;) {
-      S t = y[i];
-      for (std::size_t j = i + 1; j < n; ++j) t -= a[i][j] * y[j];
-      y[i] = t * r[i];
-    }
+    for (std::size_t i = 0; i < n; ++i) y[i] = S(p[i] == c);
+    lu_substitute(a, r, y);
     for (std::size_t i = 0; i < n; ++i) inv(Eigen::Index(q[i]), Eigen::Index(c)) = y[i];
   }
   return true;

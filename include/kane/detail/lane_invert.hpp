@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include "kane/detail/invert.hpp"
+
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 namespace kane::detail {
@@ -64,16 +66,8 @@ auto lane_invert(const Eigen::Matrix<L, N, N>& m, Eigen::Matrix<L, N, N>& inv, L
 #pragma GCC unroll 8
   for (std::size_t c = 0; c < n; ++c) {  // column c of m^-1: L z = P e_c, U y = z, x = Q y
     L y[n];
-    for (std::size_t i = 0; i < n; ++i) {
-      L t = select(p[i] == L(S(c)), L(S(1)), L(S(0)));
-      for (std::size_t j = 0; j < i; ++j) t -= a[i][j] * y[j];
-      y[i] = t;
-    }
-    for (std::size_t i = n; i-- > 0;) {
-      L t = y[i];
-      for (std::size_t j = i + 1; j < n; ++j) t -= a[i][j] * y[j];
-      y[i] = t * r[i];
-    }
+    for (std::size_t i = 0; i < n; ++i) y[i] = select(p[i] == L(S(c)), L(S(1)), L(S(0)));
+    lu_substitute(a, r, y);
     for (std::size_t row = 0; row < n; ++row) {  // x_q[i] = y_i: one i per lane
       L x = y[0];
       for (std::size_t i = 1; i < n; ++i) x = select(q[i] == L(S(row)), y[i], x);
