@@ -91,9 +91,9 @@ KANE_ALWAYS_INLINE void store_first(S* p, const V& v) {
   }
 }
 
-// x[k] lane l = row(l)[k] for k < N and l < W (L: lanes of W numbers S in L::vector v), in blocks
+// x[k] lane l = row(l)[k] for k < N and l < W (L: lanes of W numbers in L::vector v), in blocks
 // of W numbers, the last one short
-template <class S, std::size_t W, class L, std::size_t N, class Row, std::size_t... B>
+template <std::size_t W, class L, std::size_t N, class Row, std::size_t... B>
 KANE_ALWAYS_INLINE void rows_to_lanes(std::array<L, N>& x, const Row& row, std::index_sequence<B...>) {
   (
       [&]() KANE_ALWAYS_INLINE_LAMBDA {
@@ -106,7 +106,7 @@ KANE_ALWAYS_INLINE void rows_to_lanes(std::array<L, N>& x, const Row& row, std::
       ...);
 }
 // row(l)[k] = x[k] lane l for k < N and l < count
-template <class S, std::size_t W, class L, std::size_t N, class Row, std::size_t... B>
+template <std::size_t W, class L, std::size_t N, class Row, std::size_t... B>
 KANE_ALWAYS_INLINE void lanes_to_rows(const std::array<L, N>& x, const Row& row, std::size_t count,
                                       std::index_sequence<B...>) {
   using V = typename L::vector;

@@ -191,8 +191,9 @@ template <std::size_t W, std::size_t N, class Row>
 requires std::is_pointer_v<std::invoke_result_t<const Row&, std::size_t>> KANE_ALWAYS_INLINE auto to_lanes(
     const Row& row, std::size_t count) {
   using S = std::remove_cv_t<std::remove_pointer_t<std::invoke_result_t<const Row&, std::size_t>>>;
+  static_assert(std::is_floating_point_v<S>, "kane: to_lanes reads float or double: row(l) points to them");
   std::array<lanes<S, W>, N> x;
-  detail::rows_to_lanes<S, W>(
+  detail::rows_to_lanes<W>(
       x, [&](std::size_t l) { return row(l < count ? l : 0); }, std::make_index_sequence<(N + W - 1) / W>{});
   return x;
 }
@@ -205,7 +206,9 @@ KANE_ALWAYS_INLINE std::array<lanes<S, W>, N> to_lanes(const std::array<S, N>* s
 template <class S, std::size_t W, std::size_t N, class Row>
 requires std::is_pointer_v<std::invoke_result_t<const Row&, std::size_t>> KANE_ALWAYS_INLINE void from_lanes(
     const std::array<lanes<S, W>, N>& x, const Row& row, std::size_t count) {
-  detail::lanes_to_rows<S, W>(x, row, count, std::make_index_sequence<(N + W - 1) / W>{});
+  static_assert(std::is_same_v<std::invoke_result_t<const Row&, std::size_t>, S*>,
+                "kane: from_lanes writes the lanes' numbers: row(l) gives an S* for lanes<S, W>");
+  detail::lanes_to_rows<W>(x, row, count, std::make_index_sequence<(N + W - 1) / W>{});
 }
 // into count states, as above
 template <class S, std::size_t W, std::size_t N>
