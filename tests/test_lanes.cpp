@@ -170,6 +170,23 @@ TEST_CASE("lanes: to_lanes and from_lanes through row functions, states inside t
   }
 }
 
+TEST_CASE("lanes: load and store W numbers of a structure-of-arrays buffer", "[lanes]") {
+  using L = kane::lanes<double, 4>;
+  std::array<std::array<double, 9>, 2> soa{};  // two quantities of 9 states: lanes at an odd offset
+  for (std::size_t k = 0; k < 2; ++k)
+    for (std::size_t l = 0; l < 9; ++l) soa[k][l] = double(100 * k + l);
+  const L a = L::load(soa[0].data() + 1), b = L::load(soa[1].data() + 5);
+  for (std::size_t l = 0; l < 4; ++l) {
+    CHECK(a[l] == double(1 + l));
+    CHECK(b[l] == double(105 + l));
+  }
+  std::array<double, 6> out{-1, -1, -1, -1, -1, -1};
+  (a + b).store(out.data() + 1);
+  CHECK(out[0] == -1);
+  for (std::size_t l = 0; l < 4; ++l) CHECK(out[1 + l] == double(106 + 2 * l));
+  CHECK(out[5] == -1);
+}
+
 namespace {
 // all_of and any_of of masks with each one lane differing from the rest
 template <class S, std::size_t W>

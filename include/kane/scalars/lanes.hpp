@@ -16,6 +16,7 @@
 #include <cmath>
 #include <concepts>
 #include <cstddef>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <type_traits>
@@ -92,6 +93,14 @@ struct lanes {
     return [&]<std::size_t... I>(std::index_sequence<I...>) { return lanes(vector{S(f(I))...}); }
     (std::make_index_sequence<W>{});
   }
+  // The W numbers at p, one after the other (a structure-of-arrays buffer), at any alignment
+  static lanes load(const S* p) {
+    lanes x;
+    std::memcpy(&x.v, p, sizeof x.v);
+    return x;
+  }
+  // the W numbers to p
+  void store(S* p) const { std::memcpy(p, &v, sizeof v); }
   // lane i
   S operator[](std::size_t i) const { return v[i]; }
   // lane i set to x
