@@ -16,15 +16,12 @@
 #include <cmath>
 #include <concepts>
 #include <cstddef>
-#include <cstring>
-#include <functional>
 #include <limits>
 #include <type_traits>
 #include <utility>
 
 #include <Eigen/Core>
 
-#include "kane/detail/invert.hpp"
 #include "kane/detail/lane_invert.hpp"
 #include "kane/detail/lane_math.hpp"
 #include "kane/detail/lane_transpose.hpp"
@@ -96,11 +93,11 @@ struct lanes {
   // The W numbers at p, one after the other (a structure-of-arrays buffer), at any alignment
   static lanes load(const S* p) {
     lanes x;
-    std::memcpy(&x.v, p, sizeof x.v);
+    detail::load_first<W>(p, x.v);
     return x;
   }
   // the W numbers to p
-  void store(S* p) const { std::memcpy(p, &v, sizeof v); }
+  void store(S* p) const { detail::store_first<W>(p, v); }
   // lane i
   S operator[](std::size_t i) const { return v[i]; }
   // lane i set to x
