@@ -76,31 +76,40 @@ void batches(const In* in, Out* out) {
   batches(instance<Motion>(), in, out);
 }
 
-// x' of the batch held in lanes (lanes_models.hpp): the states loaded at the first call
+// x' of the batch kept as structure-of-arrays buffers (lanes_models.hpp): number k of state i at
+// x[k][i], filled from the states at the first call. Each call loads W states by L::load, calls
+// once and stores x' and the statuses back by store.
 template <class Motion>
-struct held {
+struct soa {
   using L = typename Motion::scalar;
-  static constexpr int W = int(kane::lane_traits<L>::width), N = int(Motion::size),
-                       B = lanes_bench::batch / W;
-  static inline std::array<std::array<L, N>, B> x, xd;
+  static constexpr int W = int(kane::lane_traits<L>::width), N = int(Motion::size), B = lanes_bench::batch;
+  static inline std::array<std::array<double, B>, N> x, xd;
+  static inline std::array<int, B> status;
   template <class In>
   static const void* run(const In* in) {
     static const bool loaded = [&] {
-      for (int b = 0; b < B; ++b)
-        for (int k = 0; k < N; ++k)
-          x[b][k] = L::generate([&](std::size_t l) { return in[b * W + int(l)].x[k]; });
+      for (int i = 0; i < B; ++i)
+        for (int k = 0; k < N; ++k) x[k][i] = in[i].x[k];
       return true;
     }();
     (void)loaded;
     Motion& motion = instance<Motion>();
-    for (int b = 0; b < B; ++b) motion(x[b], xd[b], L(0.0));
+    for (int first = 0; first < B; first += W) {
+      std::array<L, N> xl, xdl;
+      for (int k = 0; k < N; ++k) xl[k] = L::load(&x[k][first]);
+      motion(xl, xdl, L(0.0));
+      for (int k = 0; k < N; ++k) xdl[k].store(&xd[k][first]);
+      const auto st = motion.status();
+      for (int l = 0; l < W; ++l) status[first + l] = st[l] == kane::solve_status::ok ? 0 : 1;
+    }
     return &xd;
   }
   template <class Out>
   static void out(Out* o) {
-    for (int b = 0; b < B; ++b)
-      for (int l = 0; l < W; ++l)
-        for (int k = 0; k < N; ++k) o[b * W + l].xd[k] = xd[b][k][std::size_t(l)];
+    for (int i = 0; i < B; ++i) {
+      for (int k = 0; k < N; ++k) o[i].xd[k] = xd[k][i];
+      o[i].status = status[i];
+    }
   }
 };
 
@@ -199,17 +208,17 @@ void top_kane_float_x16(const small::top_in* in, small::top_out* out) {
 }
 #endif
 #if KANE_LANES_WIDE
-const void* top_kane_x8_held(const small::top_in* in) { return held<top<kane::lanes<double, 8>>>::run(in); }
-const void* spacecraft_kane_x8_held(const small::spacecraft_in* in) {
-  return held<spacecraft<kane::lanes<double, 8>>>::run(in);
+const void* top_kane_x8_soa(const small::top_in* in) { return soa<top<kane::lanes<double, 8>>>::run(in); }
+const void* spacecraft_kane_x8_soa(const small::spacecraft_in* in) {
+  return soa<spacecraft<kane::lanes<double, 8>>>::run(in);
 }
-const void* pendulum_absolute_kane_x8_held(const small::pendulum_in* in) {
-  return held<pendulum_absolute<kane::lanes<double, 8>>>::run(in);
+const void* pendulum_absolute_kane_x8_soa(const small::pendulum_in* in) {
+  return soa<pendulum_absolute<kane::lanes<double, 8>>>::run(in);
 }
-void top_held_out(small::top_out* out) { held<top<kane::lanes<double, 8>>>::out(out); }
-void spacecraft_held_out(small::spacecraft_out* out) { held<spacecraft<kane::lanes<double, 8>>>::out(out); }
-void pendulum_absolute_held_out(small::pendulum_out* out) {
-  held<pendulum_absolute<kane::lanes<double, 8>>>::out(out);
+void top_soa_out(small::top_out* out) { soa<top<kane::lanes<double, 8>>>::out(out); }
+void spacecraft_soa_out(small::spacecraft_out* out) { soa<spacecraft<kane::lanes<double, 8>>>::out(out); }
+void pendulum_absolute_soa_out(small::pendulum_out* out) {
+  soa<pendulum_absolute<kane::lanes<double, 8>>>::out(out);
 }
 #endif
 void spacecraft_kane(const small::spacecraft_in* in, small::spacecraft_out* out) {

@@ -38,15 +38,16 @@ void pendulum_absolute_kane(const small::pendulum_in*, small::pendulum_out*);
 void pendulum_absolute_kane_x4(const small::pendulum_in*, small::pendulum_out*);
 void pendulum_absolute_kane_x8(const small::pendulum_in*, small::pendulum_out*);
 void pendulum_absolute_kane_float_x16(const small::pendulum_in*, small::pendulum_out*);
-// x' of the batch held in lanes of 8 doubles, as an integrator of 8 trajectories holds its states:
-// loaded once (at the first call), no loading or storing in the timed calls; the results stay in
-// lanes, and out receives them (not timed: the caller copies them once, to check them)
-const void* top_kane_x8_held(const small::top_in*);
-const void* spacecraft_kane_x8_held(const small::spacecraft_in*);
-const void* pendulum_absolute_kane_x8_held(const small::pendulum_in*);
-void top_held_out(small::top_out*);
-void spacecraft_held_out(small::spacecraft_out*);
-void pendulum_absolute_held_out(small::pendulum_out*);
+// x' of the batch in lanes of 8 doubles from structure-of-arrays buffers (number k of state i at
+// x[k][i]), as an integrator of many trajectories keeps its states: the buffers are filled from in
+// once (at the first call); each call loads 8 states by L::load, calls once and stores x' and the
+// statuses into buffers of the same form. out receives them (not timed: once, to check them)
+const void* top_kane_x8_soa(const small::top_in*);
+const void* spacecraft_kane_x8_soa(const small::spacecraft_in*);
+const void* pendulum_absolute_kane_x8_soa(const small::pendulum_in*);
+void top_soa_out(small::top_out*);
+void spacecraft_soa_out(small::spacecraft_out*);
+void pendulum_absolute_soa_out(small::pendulum_out*);
 // the 6-revolute arm's forward dynamics (../dynamics6/dynamics6.hpp): q'' of each state
 void arm6_forward_kane(const dynamics6::input*, dynamics6::output*);
 void arm6_forward_kane_x4(const dynamics6::input*, dynamics6::output*);

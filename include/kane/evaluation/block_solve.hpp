@@ -158,7 +158,7 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
       const S tol = limits::epsilon() * S(n) * (scale * f);
       const auto block = scaled_block<Sys, first, size>(m, f);
       Eigen::Matrix<S, int(size), int(size)> inverse;
-      if constexpr (lane_traits<S>::width > 1) {  // factor_block of lanes (lanes.hpp): NaN where it fails
+      if constexpr (lane_traits<S>::width > 1) {  // factor_block of lanes (lanes.hpp): false where it fails
         const auto factored = factor_block(block, inverse, tol);
         out.singular = out.singular || (!factored && all_finite_matrix(block));
       } else if (!factor_block(block, inverse, tol)) {
@@ -252,7 +252,7 @@ KANE_ALWAYS_INLINE status_of<S> substitute_structured(const table<S, Sys::n, Sys
   });
   const auto status = checks<S>(fac.scale <= limits::max(), solve_status::not_finite, !fac.singular,
                                 solve_status::singular, residue == S(0), solve_status::not_finite);
-  const auto spoil = nan_unless<S>(ok_of<S>(status));
+  const auto spoil = nan_unless_rare<S>(ok_of<S>(status));
   static_for_inline<n * k>([&](auto cj) KANE_ALWAYS_INLINE_LAMBDA {
     constexpr std::size_t c = cj / k, j = cj % k;
     if constexpr (Sys::x[c][j] == entry::other) spoil(x[c][j]);

@@ -46,7 +46,7 @@ using component_frame_t = typename component_row<
 template <std::size_t K, std::size_t D, class Ev>
 KANE_ALWAYS_INLINE v3<typename Ev::scalar> component_values(const Ev& ev) {
   using S = typename Ev::scalar;
-  const auto spoil = nan_unless<S>(ok_of<S>(ev.status()));
+  const auto spoil = nan_unless_rare<S>(ok_of<S>(ev.status()));
   S x = eval_scalar(speed<K, D>{}, ev), y = eval_scalar(speed<K + 1, D>{}, ev),
     z = eval_scalar(speed<K + 2, D>{}, ev);
   spoil(x), spoil(y), spoil(z);

@@ -199,7 +199,7 @@ class kinematic_equations {
       }
     });
     fail_unless(status_, finite, solve_status::not_finite);
-    const auto spoil = nan_unless<scalar>(ok_of<scalar>(status_));
+    const auto spoil = nan_unless_rare<scalar>(ok_of<scalar>(status_));
     static_for_where<stored_entries()>([&](auto rc) {
       constexpr std::size_t r = rc / nq, c = rc % nq;
       if constexpr (system::x[r][c] == entry::other) spoil(kde_w_[r][c]);

@@ -184,6 +184,29 @@ KANE_ALWAYS_INLINE auto nan_unless(const Mask& ok) {
         x = nan;
     };
 }
+// As nan_unless; for lanes a select behind a branch taken only where some lane failed, so that
+// the results do not wait on the checks. Not for a call's last results: a branch there keeps
+// a local evaluator's dead stores alive, and the work behind them (rates_function.hpp).
+template <class S, class Mask = bool>
+KANE_ALWAYS_INLINE auto nan_unless_rare(const Mask& ok) {
+  if constexpr (lane_traits<S>::width > 1)
+    return [ok, all = all_of(ok)](auto& x) KANE_ALWAYS_INLINE_LAMBDA {
+      if (all) return;
+      const S nan = S(std::numeric_limits<typename real_type<S>::type>::quiet_NaN());
+      using X = std::remove_cvref_t<decltype(x)>;
+      if constexpr (std::is_same_v<X, S>)
+        x = lane_traits<S>::select(ok, x, nan);
+      else if constexpr (requires { X::SizeAtCompileTime; })
+        static_for_inline<std::size_t(X::SizeAtCompileTime)>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA {
+          x.coeffRef(Eigen::Index(i)) = lane_traits<S>::select(ok, x.coeff(Eigen::Index(i)), nan);
+        });
+      else
+        static_for_inline<std::tuple_size<X>::value>(
+            [&](auto i) KANE_ALWAYS_INLINE_LAMBDA { x[i] = lane_traits<S>::select(ok, x[i], nan); });
+    };
+  else
+    return nan_unless<S>(ok);
+}
 // x (a fixed-size Eigen matrix) NaN unless ok, as nan_unless; doubles rewritten in blocks
 // (detail/wide_stores.hpp), which a copy of x reads whole.
 template <class M, class Mask = bool>
@@ -204,14 +227,13 @@ KANE_ALWAYS_INLINE typename lane_traits<S>::mask opaque_ok(const status_of<S>& s
   else
     return ok_of<S>(st);
 }
-// The numbers of x (a std::array) NaN where st is not ok: a branch for one state, products for lanes.
+// The numbers of x (a std::array) NaN where st is not ok: a branch for one state and for lanes.
 template <class S, class X>
 KANE_ALWAYS_INLINE void nan_where_failed(const status_of<S>& st, X& x) {
   if constexpr (lane_traits<S>::width == 1) {
     if (st != solve_status::ok) fill_nan(x);
   } else {
-    const auto spoil = nan_unless<S>(ok_of<S>(st));
-    for (auto& e : x) spoil(e);
+    nan_unless_rare<S>(ok_of<S>(st))(x);
   }
 }
 // The status of a result x computed at status: not_finite where x is not, and x NaN unless ok.

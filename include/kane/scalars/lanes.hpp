@@ -225,8 +225,8 @@ KANE_ALWAYS_INLINE void from_lanes(const std::array<lanes<S, W>, N>& x, std::arr
 }
 
 // A coupled block of a structured solve (evaluation/block_solve.hpp) in every lane: full pivoting
-// picks its pivots per state (detail/lane_invert.hpp). inv NaN, and the mask false, in the lanes whose
-// pivot fails.
+// picks its pivots per state (detail/lane_invert.hpp). The mask is false in the lanes whose pivot
+// fails; their inv is no inverse, and the solve's status makes what it gives there NaN.
 template <class S, std::size_t W, int N>
 lane_mask<S, W> factor_block(const Eigen::Matrix<lanes<S, W>, N, N>& b, Eigen::Matrix<lanes<S, W>, N, N>& inv,
                              const lanes<S, W>& tol) {
@@ -237,10 +237,9 @@ lane_mask<S, W> factor_block(const Eigen::Matrix<lanes<S, W>, N, N>& b, Eigen::M
             cd = select(abs(c10) > abs(d), abs(c10), abs(d));
     const L best = select(ab > cd, ab, cd), det = a * d - c01 * c10;
     const L t = select(tol < L(S(0)), L(std::numeric_limits<S>::epsilon() * S(2)) * best, tol);
-    const lane_mask<S, W> ok = best > t && abs(det) > t * best && det - det == L(S(0));
-    const L r = select(ok, L(S(1)) / det, L(std::numeric_limits<S>::quiet_NaN()));
+    const L r = L(S(1)) / det;  // not waiting on the rule: the caller spoils where it fails
     inv << d * r, -c01 * r, -c10 * r, a * r;
-    return ok;
+    return best > t && abs(det) > t * best && det - det == L(S(0));
   } else
     return detail::lane_invert(b, inv, tol);
 }
