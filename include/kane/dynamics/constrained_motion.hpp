@@ -140,7 +140,7 @@ class constrained_motion
     const auto [ud, status] = detail::speed_derivatives_at(
         detail::reduced_mass_matrix_and_forcing_at<Sys, NH, detail::rates::at_rest>(ev, sol).reduced);
     status_ = status;
-    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status);
+    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status, ud);
     for (std::size_t k = 0; k < p; ++k) dxdt[nq + k] = ud(Eigen::Index(k));
   }
 };

@@ -101,9 +101,13 @@ forward_result<S, N> speed_derivatives_at(const equations_of_motion<S, N>& e) {
   const auto positive = solve_positive_definite(e.M, e.f, ud);
   status_of<S> status = e.status;
   fail_unless(status, positive, solve_status::singular);
-  fail_unless(status, detail::all_finite_numbers(ud), solve_status::not_finite);
-  spoil_unless(ud, opaque_ok<S>(status));
-  return {ud, status};
+  if constexpr (lane_traits<S>::width > 1)
+    return {ud, finished(ud, status)};
+  else {
+    fail_unless(status, detail::all_finite_numbers(ud), solve_status::not_finite);
+    spoil_unless(ud, opaque_ok<S>(status));
+    return {ud, status};
+  }
 }
 }  // namespace detail
 

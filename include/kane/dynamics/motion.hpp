@@ -105,7 +105,7 @@ class motion
     auto r = detail::forward_at<Sys, detail::rates::zero>(ev);
     detail::finish_forward<Sys, Ev>(r);
     status_ = r.status;
-    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), r.status);
+    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), r.status, r.ud);
     for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = r.ud(Eigen::Index(i));
   }
 };

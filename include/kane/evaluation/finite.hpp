@@ -90,6 +90,14 @@ template <class M>
 auto all_finite_matrix(const M& m) {
   return (m.array() - m.array()).sum() == typename M::Scalar(0);
 }
+// The nonfinite_residue of a fixed-size Eigen matrix, pairwise.
+template <class M>
+KANE_ALWAYS_INLINE auto matrix_residue(const M& m) {
+  return [&]<std::size_t... I>(std::index_sequence<I...>) {
+    return nonfinite_residue(std::array<typename M::Scalar, sizeof...(I)>{m.coeff(std::ptrdiff_t(I))...});
+  }
+  (std::make_index_sequence<std::size_t(M::SizeAtCompileTime)>{});
+}
 // The same number by number, for a small matrix whose numbers were just stored one by one: a
 // wide load of them would wait.
 template <class M>
@@ -97,10 +105,7 @@ auto all_finite_numbers(const M& m) {
   if constexpr (M::SizeAtCompileTime > 16)
     return all_finite_matrix(m);
   else
-    return [&]<std::size_t... I>(std::index_sequence<I...>) {
-      return all_finite(std::array<typename M::Scalar, sizeof...(I)>{m.coeff(std::ptrdiff_t(I))...});
-    }
-  (std::make_index_sequence<std::size_t(M::SizeAtCompileTime)>{});
+    return matrix_residue(m) == typename M::Scalar(0);
 }
 // The diagonal of a mass matrix M finite: so is all of M, |M_rs| <= (M_rr M_ss)^1/2 (M positive
 // semidefinite).

@@ -237,14 +237,21 @@ KANE_ALWAYS_INLINE void nan_where_failed(const status_of<S>& st, X& x) {
   }
 }
 // The status of a result x computed at status: not_finite where x is not, and x NaN unless ok.
+// For lanes x becomes x (NaN unless the status given is ok) - r, with r the sum of x_i - x_i: 0 if
+// every x_i is finite, else NaN (x - 0 is x, also for x = -0). So x waits on its own sum, not on
+// the status that the sum sets.
 template <class M>
 status_of<typename M::Scalar> finished(M& x, status_of<typename M::Scalar> status) {
   using S = typename M::Scalar;
-  fail_unless(status, all_finite_matrix(x), solve_status::not_finite);
-  if constexpr (lane_traits<S>::width > 1)
+  if constexpr (lane_traits<S>::width > 1) {
+    const S r = matrix_residue(x);
     nan_unless<S>(ok_of<S>(status))(x);
-  else if (status != solve_status::ok)
-    x.setConstant(std::numeric_limits<S>::quiet_NaN());
+    x.array() -= r;
+    fail_unless(status, r == S(0), solve_status::not_finite);
+  } else {
+    fail_unless(status, all_finite_matrix(x), solve_status::not_finite);
+    if (status != solve_status::ok) x.setConstant(std::numeric_limits<S>::quiet_NaN());
+  }
   return status;
 }
 }  // namespace detail
