@@ -49,11 +49,11 @@ done >"$work/runs.csv"
 # One table per benchmark group (the first part of a name, group/problem/implementation):
 # per preset the median [min-max] CPU ns of each implementation, kane / hand, kane / SymPy's
 # C, kane / hand and / SymPy's C checked as kane is (../common/checked.hpp) and KDL / kane of the medians; with
-# lanes (kane_x4, kane_x8, kane_x8_soa) kane / kane_x4, kane / kane_x8, kane / kane_x8_soa,
-# kane_x8 / SymPy's C and kane_x8_soa / SymPy's C.
+# lanes (kane_x4, kane_x8, kane_soa) kane / kane_x4, kane / kane_x8, kane / kane_soa,
+# kane_x8 / SymPy's C and kane_soa / SymPy's C.
 awk -F, -v reps=$reps -v dir="$work" '
   BEGIN { rank["hand"] = 1; rank["hand_checked"] = 2; rank["sympy"] = 3; rank["sympy_checked"] = 4
-          rank["kdl"] = 5; rank["kane"] = 6; rank["kane_x4"] = 7; rank["kane_x8"] = 8; rank["kane_x8_soa"] = 8.5; rank["kane_float_x16"] = 9 }
+          rank["kdl"] = 5; rank["kane"] = 6; rank["kane_x4"] = 7; rank["kane_x8"] = 8; rank["kane_soa"] = 8.5; rank["kane_float_x16"] = 9 }
   { gsub(/"/, "", $2); n = split($2, part, "/"); impl = part[n]; group = part[1]
     prob = substr($2, length(group) + 2, length($2) - length(group) - length(impl) - 2)
     t = $5 + 0; if ($6 == "us") t *= 1e3; else if ($6 == "ms") t *= 1e6
@@ -84,9 +84,9 @@ awk -F, -v reps=$reps -v dir="$work" '
       if ((G, "kdl") in has) refs = refs ", KDL/kane"
       if ((G, "kane_x4") in has) refs = refs ", kane/kane_x4"
       if ((G, "kane_x8") in has) refs = refs ", kane/kane_x8"
-      if ((G, "kane_x8_soa") in has) refs = refs ", kane/kane_x8_soa"
+      if ((G, "kane_soa") in has) refs = refs ", kane/kane_soa"
       if ((G, "kane_x8") in has && (G, "sympy") in has) refs = refs ", kane_x8/SymPy"
-      if ((G, "kane_x8_soa") in has && (G, "sympy") in has) refs = refs ", kane_x8_soa/SymPy"
+      if ((G, "kane_soa") in has && (G, "sympy") in has) refs = refs ", kane_soa/SymPy"
       head = "| " G
       for (j = 1; j <= 2; ++j) head = head " | " pn[j] ": " names (refs == "" ? "" : " | " substr(refs, 3))
       print head " |" > out
@@ -108,9 +108,9 @@ awk -F, -v reps=$reps -v dir="$work" '
           if ((G, "kdl") in has) r = r ", " ratio(m["kdl"], m["kane"])
           if ((G, "kane_x4") in has) r = r ", " ratio(m["kane"], m["kane_x4"])
           if ((G, "kane_x8") in has) r = r ", " ratio(m["kane"], m["kane_x8"])
-          if ((G, "kane_x8_soa") in has) r = r ", " ratio(m["kane"], m["kane_x8_soa"])
+          if ((G, "kane_soa") in has) r = r ", " ratio(m["kane"], m["kane_soa"])
           if ((G, "kane_x8") in has && (G, "sympy") in has) r = r ", " ratio(m["kane_x8"], m["sympy"])
-          if ((G, "kane_x8_soa") in has && (G, "sympy") in has) r = r ", " ratio(m["kane_x8_soa"], m["sympy"])
+          if ((G, "kane_soa") in has && (G, "sympy") in has) r = r ", " ratio(m["kane_soa"], m["sympy"])
           row = row " | " cells (r == "" ? "" : " | " substr(r, 3))
         }
         print row " |" > out

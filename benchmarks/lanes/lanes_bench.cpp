@@ -180,11 +180,9 @@ void soa_agree(const std::vector<small::input<N>>& states, lanes_bench::batch_fu
 }
 void agree() {
   using namespace lanes_bench;
-#if KANE_LANES_WIDE
-  soa_agree<6>(tops, top_kane, top_kane_x8_soa, top_soa_out);
-  soa_agree<14>(spacecrafts, spacecraft_kane, spacecraft_kane_x8_soa, spacecraft_soa_out);
-  soa_agree<4>(pendulums, pendulum_absolute_kane, pendulum_absolute_kane_x8_soa, pendulum_absolute_soa_out);
-#endif
+  soa_agree<6>(tops, top_kane, top_kane_soa, top_soa_out);
+  soa_agree<14>(spacecrafts, spacecraft_kane, spacecraft_kane_soa, spacecraft_soa_out);
+  soa_agree<4>(pendulums, pendulum_absolute_kane, pendulum_absolute_kane_soa, pendulum_absolute_soa_out);
   agree<6>(tops, small::top_hand, {top_kane, top_kane_x4 KANE_X8(top_kane)}, KANE_X16(top_kane));
   agree<14>(spacecrafts, small::spacecraft_hand,
             {spacecraft_kane, spacecraft_kane_x4 KANE_X8(spacecraft_kane)}, KANE_X16(spacecraft_kane));
@@ -233,13 +231,14 @@ void agree() {
 }
 }  // namespace
 
-#define KANE_LANES_ROWS(model, states)                                                                \
-  BENCHMARK(run<each<small::model##_hand>, states>)->Name(KANE_LANES_GROUP "/" #model "/hand");       \
-  BENCHMARK(run<each<small::model##_sympy>, states>)->Name(KANE_LANES_GROUP "/" #model "/sympy");     \
-  BENCHMARK(run<each<small::model##_sympy_checked>, states>)                                          \
-      ->Name(KANE_LANES_GROUP "/" #model "/sympy_checked");                                           \
-  BENCHMARK(run<lanes_bench::model##_kane, states>)->Name(KANE_LANES_GROUP "/" #model "/kane");       \
-  BENCHMARK(run<lanes_bench::model##_kane_x4, states>)->Name(KANE_LANES_GROUP "/" #model "/kane_x4"); \
+#define KANE_LANES_ROWS(model, states)                                                                      \
+  BENCHMARK(run<each<small::model##_hand>, states>)->Name(KANE_LANES_GROUP "/" #model "/hand");             \
+  BENCHMARK(run<each<small::model##_sympy>, states>)->Name(KANE_LANES_GROUP "/" #model "/sympy");           \
+  BENCHMARK(run<each<small::model##_sympy_checked>, states>)                                                \
+      ->Name(KANE_LANES_GROUP "/" #model "/sympy_checked");                                                 \
+  BENCHMARK(run<lanes_bench::model##_kane, states>)->Name(KANE_LANES_GROUP "/" #model "/kane");             \
+  BENCHMARK(run<lanes_bench::model##_kane_x4, states>)->Name(KANE_LANES_GROUP "/" #model "/kane_x4");       \
+  BENCHMARK(run_soa<lanes_bench::model##_kane_soa, states>)->Name(KANE_LANES_GROUP "/" #model "/kane_soa"); \
   KANE_LANES_WIDE_ROWS(model, states)
 // F over the batch in structure-of-arrays buffers (lanes_models.hpp)
 template <auto F, const auto& States>
@@ -251,8 +250,6 @@ void run_soa(benchmark::State& st) {
 }
 #if KANE_LANES_WIDE
 #define KANE_LANES_WIDE_ROWS(model, states)                                                           \
-  BENCHMARK(run_soa<lanes_bench::model##_kane_x8_soa, states>)                                        \
-      ->Name(KANE_LANES_GROUP "/" #model "/kane_x8_soa");                                             \
   BENCHMARK(run<lanes_bench::model##_kane_x8, states>)->Name(KANE_LANES_GROUP "/" #model "/kane_x8"); \
   BENCHMARK(run<lanes_bench::model##_kane_float_x16, states>)                                         \
       ->Name(KANE_LANES_GROUP "/" #model "/kane_float_x16")

@@ -76,6 +76,8 @@ void batches(const In* in, Out* out) {
   batches(instance<Motion>(), in, out);
 }
 
+// the widest lanes of doubles the target's registers hold
+using widest = kane::lanes<double, kane::native_lanes<double>>;
 // x' of the batch kept as structure-of-arrays buffers (lanes_models.hpp): number k of state i at
 // x[k][i], filled from the states at the first call. Each call loads W states by L::load, calls
 // once and stores x' and the statuses back by store.
@@ -207,20 +209,14 @@ void top_kane_float_x16(const small::top_in* in, small::top_out* out) {
   batches<top<kane::lanes<float, 16>>>(in, out);
 }
 #endif
-#if KANE_LANES_WIDE
-const void* top_kane_x8_soa(const small::top_in* in) { return soa<top<kane::lanes<double, 8>>>::run(in); }
-const void* spacecraft_kane_x8_soa(const small::spacecraft_in* in) {
-  return soa<spacecraft<kane::lanes<double, 8>>>::run(in);
+const void* top_kane_soa(const small::top_in* in) { return soa<top<widest>>::run(in); }
+const void* spacecraft_kane_soa(const small::spacecraft_in* in) { return soa<spacecraft<widest>>::run(in); }
+const void* pendulum_absolute_kane_soa(const small::pendulum_in* in) {
+  return soa<pendulum_absolute<widest>>::run(in);
 }
-const void* pendulum_absolute_kane_x8_soa(const small::pendulum_in* in) {
-  return soa<pendulum_absolute<kane::lanes<double, 8>>>::run(in);
-}
-void top_soa_out(small::top_out* out) { soa<top<kane::lanes<double, 8>>>::out(out); }
-void spacecraft_soa_out(small::spacecraft_out* out) { soa<spacecraft<kane::lanes<double, 8>>>::out(out); }
-void pendulum_absolute_soa_out(small::pendulum_out* out) {
-  soa<pendulum_absolute<kane::lanes<double, 8>>>::out(out);
-}
-#endif
+void top_soa_out(small::top_out* out) { soa<top<widest>>::out(out); }
+void spacecraft_soa_out(small::spacecraft_out* out) { soa<spacecraft<widest>>::out(out); }
+void pendulum_absolute_soa_out(small::pendulum_out* out) { soa<pendulum_absolute<widest>>::out(out); }
 void spacecraft_kane(const small::spacecraft_in* in, small::spacecraft_out* out) {
   batches<spacecraft<double>>(in, out);
 }

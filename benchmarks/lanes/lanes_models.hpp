@@ -38,13 +38,14 @@ void pendulum_absolute_kane(const small::pendulum_in*, small::pendulum_out*);
 void pendulum_absolute_kane_x4(const small::pendulum_in*, small::pendulum_out*);
 void pendulum_absolute_kane_x8(const small::pendulum_in*, small::pendulum_out*);
 void pendulum_absolute_kane_float_x16(const small::pendulum_in*, small::pendulum_out*);
-// x' of the batch in lanes of 8 doubles from structure-of-arrays buffers (number k of state i at
-// x[k][i]), as an integrator of many trajectories keeps its states: the buffers are filled from in
-// once (at the first call); each call loads 8 states by L::load, calls once and stores x' and the
-// statuses into buffers of the same form. out receives them (not timed: once, to check them)
-const void* top_kane_x8_soa(const small::top_in*);
-const void* spacecraft_kane_x8_soa(const small::spacecraft_in*);
-const void* pendulum_absolute_kane_x8_soa(const small::pendulum_in*);
+// x' of the batch in the widest lanes of doubles (kane::native_lanes: 8 with AVX-512, 4 with AVX2)
+// from structure-of-arrays buffers (number k of state i at x[k][i]), as an integrator of many
+// trajectories keeps its states: the buffers are filled from in once (at the first call); each
+// call loads W states by L::load, calls once and stores x' and the statuses into buffers of the
+// same form. out receives them (not timed: once, to check them)
+const void* top_kane_soa(const small::top_in*);
+const void* spacecraft_kane_soa(const small::spacecraft_in*);
+const void* pendulum_absolute_kane_soa(const small::pendulum_in*);
 void top_soa_out(small::top_out*);
 void spacecraft_soa_out(small::spacecraft_out*);
 void pendulum_absolute_soa_out(small::pendulum_out*);
