@@ -109,11 +109,16 @@ class motion
       detail::fail_unless(r.status, res == scalar(0), solve_status::not_finite);
       status_ = r.status;
       const auto qd = ev.coordinate_rates();
-      for (std::size_t i = 0; i < size; ++i) {
-        scalar v = i < nq ? qd[i] : r.ud(Eigen::Index(i - nq));
+      constexpr std::size_t n = nq;
+      detail::static_for<size>([&](auto i) {
+        scalar v;
+        if constexpr (i < n)
+          v = qd[i];
+        else
+          v = r.ud(Eigen::Index(i - n));
         spoil(v);
         dxdt[i] = v - res;
-      }
+      });
     } else {
       detail::finish_forward<Sys, Ev>(r);
       status_ = r.status;
