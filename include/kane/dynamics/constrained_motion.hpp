@@ -139,9 +139,13 @@ class constrained_motion
         ev, s_, x);  // the constraints' derivatives read every alpha and q''
     const auto [ud, status] = detail::speed_derivatives_at(
         detail::reduced_mass_matrix_and_forcing_at<Sys, NH, detail::rates::at_rest>(ev, sol).reduced);
-    status_ = status;
-    detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status, ud);
-    for (std::size_t k = 0; k < p; ++k) dxdt[nq + k] = ud(Eigen::Index(k));
+    if constexpr (lane_traits<scalar>::width > 1)
+      status_ = detail::write_lane_rates<nq, scalar>(dxdt, ev.coordinate_rates(), ud, status);
+    else {
+      status_ = status;
+      detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status);
+      for (std::size_t k = 0; k < p; ++k) dxdt[nq + k] = ud(Eigen::Index(k));
+    }
   }
 };
 

@@ -103,26 +103,12 @@ class motion
     else
       ev.template update_for<detail::reads_of_copy<detail::equation_reads<Sys, Ev, true>, scalar, X>>(s_);
     auto r = detail::forward_at<Sys, detail::rates::zero>(ev);
-    if constexpr (lane_traits<scalar>::width > 1) {  // q' and u' wait on one sum r of u'_i - u'_i
-      const scalar res = detail::matrix_residue(r.ud);
-      const auto spoil = detail::nan_unless<scalar>(detail::ok_of<scalar>(r.status));
-      detail::fail_unless(r.status, res == scalar(0), solve_status::not_finite);
-      status_ = r.status;
-      const auto qd = ev.coordinate_rates();
-      constexpr std::size_t n = nq;
-      detail::static_for<size>([&](auto i) {
-        scalar v;
-        if constexpr (i < n)
-          v = qd[i];
-        else
-          v = r.ud(Eigen::Index(i - n));
-        spoil(v);
-        dxdt[i] = v - res;
-      });
+    if constexpr (lane_traits<scalar>::width > 1) {
+      status_ = detail::write_lane_rates<nq, scalar>(dxdt, ev.coordinate_rates(), r.ud, r.status);
     } else {
       detail::finish_forward<Sys, Ev>(r);
       status_ = r.status;
-      detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), r.status, r.ud);
+      detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), r.status);
       for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = r.ud(Eigen::Index(i));
     }
   }

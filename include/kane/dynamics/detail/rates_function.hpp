@@ -109,21 +109,34 @@ using reads_of_copy =
     std::conditional_t<std::is_same_v<S, double> && contiguous<X>(), read_in_blocks<Reads>, Reads>;
 // dxdt[i] = q'_i, i < N, NaN unless ok (q' may be finite where u' is NaN): by products and a flag
 // the optimizer cannot thread, since a branch here keeps the local evaluator's dead stores (and
-// the work behind them, such as sin and cos of an angle nothing reads) alive. For lanes q' - r,
-// r the nonfinite_residue of u' (ud, NaN wherever status is not ok): q' waits on u', not on status.
-template <std::size_t N, class S, class Q, class DX, class Ud>
-KANE_ALWAYS_INLINE void write_rates(DX& dxdt, const Q& qd, const status_of<S>& status, const Ud& ud) {
-  if constexpr (lane_traits<S>::width > 1) {
-    const S r = matrix_residue(ud);
-    static_for<N>([&](auto i) { dxdt[i] = qd[i] - r; });
-  } else {
-    const auto spoil = nan_unless<S>(opaque_ok<S>(status));
-    static_for<N>([&](auto i) {
-      S v = qd[i];
-      spoil(v);
-      dxdt[i] = v;
-    });
-  }
+// the work behind them, such as sin and cos of an angle nothing reads) alive.
+template <std::size_t N, class S, class Q, class DX>
+KANE_ALWAYS_INLINE void write_rates(DX& dxdt, const Q& qd, const status_of<S>& status) {
+  const auto spoil = nan_unless<S>(opaque_ok<S>(status));
+  static_for<N>([&](auto i) {
+    S v = qd[i];
+    spoil(v);
+    dxdt[i] = v;
+  });
+}
+// dxdt = (q', u') over lanes (N numbers of q'), each number x as x (NaN unless status is ok) - r,
+// with r the sum of u'_i - u'_i, 0 or NaN: the results wait on that one sum, not on the status it
+// sets. The status, not_finite where r is NaN.
+template <std::size_t N, class S, class Q, class Ud, class DX>
+KANE_ALWAYS_INLINE status_of<S> write_lane_rates(DX& dxdt, const Q& qd, const Ud& ud, status_of<S> status) {
+  const S r = matrix_residue(ud);
+  const auto spoil = nan_unless<S>(ok_of<S>(status));
+  fail_unless(status, r == S(0), solve_status::not_finite);
+  static_for<N + std::size_t(Ud::SizeAtCompileTime)>([&](auto i) {
+    S v;
+    if constexpr (i < N)
+      v = qd[i];
+    else
+      v = ud(Eigen::Index(i - N));
+    spoil(v);
+    dxdt[i] = v - r;
+  });
+  return status;
 }
 
 // The members both right-hand sides keep; Size entries of x and dx/dt.
