@@ -54,7 +54,12 @@ KANE_ALWAYS_INLINE void lane_sincos(const vector& x, vector& s, vector& c) {
   const vector t = xr * S(0.63661977236758134308) + (xr < vector{} ? S(-0.5) : S(0.5));
   ints k;
   vector kd;
-  if constexpr (dbl) {  // k in 32 bits (|k| < 2^16): AVX2 converts doubles to 32-bit integers only
+#ifdef __AVX512DQ__
+  constexpr bool to_32_bits = false;  // AVX-512DQ converts doubles to 64-bit integers and back
+#else
+  constexpr bool to_32_bits = dbl;
+#endif
+  if constexpr (to_32_bits) {  // k in 32 bits (|k| < 2^16): AVX2 converts doubles to 32-bit integers only
     typedef int ints32 __attribute__((vector_size(sizeof(int) * W)));
     const ints32 k32 = __builtin_convertvector(t, ints32);
     k = __builtin_convertvector(k32, ints), kd = __builtin_convertvector(k32, vector);
