@@ -18,6 +18,7 @@
 #include <utility>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/list.hpp"
 #include "kane/detail/v3.hpp"
 #include "kane/detail/wide_stores.hpp"
 #include "kane/evaluation/finite.hpp"
