@@ -35,8 +35,9 @@ KANE_ALWAYS_INLINE void transpose(std::array<V, W>& r) {
   transpose(r, std::make_index_sequence<std::bit_width(W) - 1>{});
 }
 
-// g++ splits an unaligned load of 32 bytes in two for AVX2 targets, and the halves then pass
-// through the stack: such vectors load as two halves joined in registers
+// g++ splits an unaligned load or store of 32 bytes in two for AVX2 targets, and the halves then
+// pass through the stack: such vectors load as two halves joined in registers, and store as two
+// halves taken in registers
 template <class V>
 inline constexpr bool split_loads =
 #if defined(__GNUC__) && !defined(__clang__) && !defined(__AVX512F__)
@@ -75,7 +76,7 @@ constexpr std::index_sequence<(Offset + I)...> offset_sequence(std::index_sequen
 template <std::size_t N, class S, class V>
 KANE_ALWAYS_INLINE void store_first(S* p, const V& v) {
   constexpr std::size_t W = sizeof(V) / sizeof(S), h = W / 2;
-  if constexpr (N == W)
+  if constexpr (N == W && !split_loads<V>)
     std::memcpy(p, &v, sizeof v);
   else if constexpr (N == 1)
     p[0] = v[0];
