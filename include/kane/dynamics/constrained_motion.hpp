@@ -137,7 +137,7 @@ class constrained_motion
     Ev ev;
     const auto sol = detail::update_at_independent_speeds<NH, detail::every_read<Ev>>(
         ev, s_, x);  // the constraints' derivatives read every alpha and q''
-    const auto [ud, status] = detail::speed_derivatives_at(
+    const auto [ud, status] = detail::speed_derivatives_at<lane_traits<scalar>::width == 1>(
         detail::reduced_mass_matrix_and_forcing_at<Sys, NH, detail::rates::at_rest>(ev, sol).reduced);
     if constexpr (lane_traits<scalar>::width > 1)
       status_ = detail::write_lane_rates<nq, scalar>(dxdt, ev.coordinate_rates(), ud, status);

@@ -93,8 +93,9 @@ mass_matrix_only<typename Ev::scalar, Ev::nu> mass_matrix(const Ev& ev) {
 
 namespace detail {
 // speed_derivatives in the caller's body, with no branch around a store (after it, motion's local
-// evaluator's unread stores stay dead: motion.hpp)
-template <class S, std::size_t N>
+// evaluator's unread stores stay dead: motion.hpp). Lanes with Finish false: u' unchecked, for a
+// caller that checks and spoils it with its other results (write_lane_rates).
+template <bool Finish = true, class S, std::size_t N>
 forward_result<S, N> speed_derivatives_at(const equations_of_motion<S, N>& e) {
   Eigen::Matrix<S, int(N), 1> ud = Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN());
   using detail::solve_positive_definite;  // jets: theirs (argument-dependent lookup)
@@ -102,7 +103,7 @@ forward_result<S, N> speed_derivatives_at(const equations_of_motion<S, N>& e) {
   status_of<S> status = e.status;
   fail_unless(status, positive, solve_status::singular);
   if constexpr (lane_traits<S>::width > 1)
-    return {ud, finished(ud, status)};
+    return {ud, Finish ? finished(ud, status) : status};
   else {
     fail_unless(status, detail::all_finite_numbers(ud), solve_status::not_finite);
     spoil_unless(ud, opaque_ok<S>(status));

@@ -102,7 +102,7 @@ class motion
       return;
     else
       ev.template update_for<detail::reads_of_copy<detail::equation_reads<Sys, Ev, true>, scalar, X>>(s_);
-    auto r = detail::forward_at<Sys, detail::rates::zero>(ev);
+    auto r = detail::forward_at<Sys, detail::rates::zero, Ev, lane_traits<scalar>::width == 1>(ev);
     if constexpr (lane_traits<scalar>::width > 1) {
       status_ = detail::write_lane_rates<nq, scalar>(dxdt, ev.coordinate_rates(), r.ud, r.status);
     } else {
