@@ -1,7 +1,8 @@
 // Checks the compile-fail cases of one source (`// case NAME: RE1 && RE2 ...`, the misuse under
 // `#ifdef KANE_CASE_NAME`). One compile defines KANE_A_CASE and the macros of all its cases; each error is
-// given to the case whose `#ifdef` block holds the source line it was required from (g++: the last such
-// line up to the error; clang++: the first from the error on). A case passes when the compile fails, its
+// given to the case whose region holds the source line it was required from (g++: the last such line up
+// to the error; clang++: the first from the error on). A region is a misuse block, or a part that
+// KANE_A_CASE leaves out but for one case. A case passes when the compile fails, its
 // first error line matches every RE and the lines of its errors stay under MAX_BYTES. A case that finds
 // no error of its own, or another line first, is compiled alone with -Wfatal-errors and checked on that
 // diagnostic: a misuse whose instantiation another case made first reports nothing in the shared compile.
@@ -102,24 +103,30 @@ int main(int argc, char** argv) {
     if (!rules_only || c.patterns.front().rfind("kane: ", 0) != 0) cases.push_back(c);
   }
 
-  // owner[line] = the case whose misuse block (a directive naming it alone) holds the 1-based line.
+  // owner[line] = the case whose region holds the 1-based line: a misuse block (`#if`, `#ifdef` or
+  // `#elif` naming one case) or, where no block is, a part left out under KANE_A_CASE but for one case.
   std::map<std::size_t, std::string> owner;
   static const std::regex macro("KANE_CASE_([a-z_0-9]+)");
   static const std::regex opens("^\\s*#\\s*if"), splits("^\\s*#\\s*(else|elif)"), ends("^\\s*#\\s*endif");
-  for (std::size_t i = 0; i < src.size(); ++i) {
-    const auto& l = src[i];
-    if (!std::regex_search(l, opens) || l.find("KANE_A_CASE") != std::string::npos) continue;
-    std::vector<std::string> named;
-    for (std::sregex_iterator m(l.begin(), l.end(), macro), e; m != e; ++m) named.push_back((*m)[1]);
-    if (named.size() != 1) continue;
-    for (std::size_t j = i + 1, depth = 0; j < src.size(); ++j) {
-      if (std::regex_search(src[j], opens))
-        ++depth;
-      else if (std::regex_search(src[j], ends) && depth-- == 0)
-        break;
-      else if (depth == 0 && std::regex_search(src[j], splits))
-        break;
-      owner[j + 1] = named[0];
+  for (const bool helpers : {true, false}) {
+    for (std::size_t i = 0; i < src.size(); ++i) {
+      if (!std::regex_search(src[i], opens) && !std::regex_search(src[i], splits)) continue;
+      std::string l = src[i];
+      std::size_t j = i;
+      while (!src[j].empty() && src[j].back() == '\\' && j + 1 < src.size()) l += src[++j];
+      if ((l.find("KANE_A_CASE") != std::string::npos) != helpers) continue;
+      std::vector<std::string> named;
+      for (std::sregex_iterator m(l.begin(), l.end(), macro), e; m != e; ++m) named.push_back((*m)[1]);
+      if (named.size() != 1) continue;
+      for (std::size_t depth = 0; ++j < src.size();) {
+        if (std::regex_search(src[j], opens))
+          ++depth;
+        else if (std::regex_search(src[j], ends) && depth-- == 0)
+          break;
+        else if (depth == 0 && std::regex_search(src[j], splits))
+          break;
+        owner[j + 1] = named[0];
+      }
     }
   }
 
