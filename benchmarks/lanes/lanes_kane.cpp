@@ -2,6 +2,7 @@
 // double (one state a call), kane::lanes<double, 4>, kane::lanes<double, 8> and
 // kane::lanes<float, 16>. The lanes load W states, call once and store W results and statuses.
 #include <kane/scalars/lanes.hpp>
+#include <kane/scalars/soa_block.hpp>
 
 #include "../../examples/models/arm6_dynamics.hpp"
 #include "../../examples/models/bicycle.hpp"
@@ -79,28 +80,25 @@ void batches(const In* in, Out* out) {
 // the widest lanes of doubles the target's registers hold
 using widest = kane::lanes<double, kane::native_lanes<double>>;
 // x' of the batch kept as structure-of-arrays buffers (lanes_models.hpp): number k of state i at
-// x[k][i], filled from the states at the first call. Each call loads W states by L::load, calls
-// once and stores x' and the statuses back by store.
+// x[k * B + i], filled from the states at the first call. Each call reads W states and writes x' in
+// place by kane::soa_block, and stores the statuses.
 template <class Motion>
 struct soa {
   using L = typename Motion::scalar;
   static constexpr int W = int(kane::lane_traits<L>::width), N = int(Motion::size), B = lanes_bench::batch;
-  static inline std::array<std::array<double, B>, N> x, xd;
+  static inline std::array<double, N * B> x, xd;
   static inline std::array<int, B> status;
   template <class In>
   static const void* run(const In* in) {
     static const bool loaded = [&] {
       for (int i = 0; i < B; ++i)
-        for (int k = 0; k < N; ++k) x[k][i] = in[i].x[k];
+        for (int k = 0; k < N; ++k) x[k * B + i] = in[i].x[k];
       return true;
     }();
     (void)loaded;
     Motion& motion = instance<Motion>();
     for (int first = 0; first < B; first += W) {
-      std::array<L, N> xl, xdl;
-      for (int k = 0; k < N; ++k) xl[k] = L::load(&x[k][first]);
-      motion(xl, xdl, L(0.0));
-      for (int k = 0; k < N; ++k) xdl[k].store(&xd[k][first]);
+      motion(kane::soa_block<L>(x.data(), B, first), kane::soa_block<L>(xd.data(), B, first), L(0.0));
       const auto st = motion.status();
       for (int l = 0; l < W; ++l) status[first + l] = st[l] == kane::solve_status::ok ? 0 : 1;
     }
@@ -109,7 +107,7 @@ struct soa {
   template <class Out>
   static void out(Out* o) {
     for (int i = 0; i < B; ++i) {
-      for (int k = 0; k < N; ++k) o[i].xd[k] = xd[k][i];
+      for (int k = 0; k < N; ++k) o[i].xd[k] = xd[k * B + i];
       o[i].status = status[i];
     }
   }

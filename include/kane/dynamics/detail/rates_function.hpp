@@ -164,6 +164,12 @@ class rates_function {
   requires(sizes_checked<Size, X, DX>()) void operator()(const X& x, DX& dxdt, scalar time) {
     flat<scalar>([&] { static_cast<Derived*>(this)->step(x, dxdt, time); });
   }
+  // dxdt a view that writes through its copies (kane::soa_block): a temporary too
+  template <class X, class DX>
+  requires(std::remove_cvref_t<DX>::writes_through && !std::is_lvalue_reference_v<DX>) void operator()(
+      const X& x, DX&& dxdt, scalar time) {
+    (*this)(x, dxdt, time);
+  }
   // the status of the last call: ok, or why dxdt is NaN
   status_of<scalar> status() const { return status_; }
   // The inputs r of the calls from now on (a controller's torques), kept between calls.
