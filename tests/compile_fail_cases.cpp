@@ -55,7 +55,7 @@ bool matches(const kase& c, const std::string& line) {
   return true;
 }
 
-// The old per-case check: the case alone, its first error line and its whole diagnostic.
+// The case alone (-Wfatal-errors): its first error line and its whole diagnostic.
 bool alone(const std::string& command, const kase& c, std::size_t max_bytes, std::string& why,
            std::size_t& bytes) {
   int status = 0;
