@@ -33,6 +33,7 @@ TEST_CASE("lanes: the rolling disc's constrained motion, lane by lane as the sca
   xs[3][4] = std::numeric_limits<double>::quiet_NaN();
   xs[9][1] = std::numeric_limits<double>::infinity();
   compare(one, many, xs, 1e-13);
+  lanes_test::compare_soa(one, many, xs, 1e-13);  // from and to structure-of-arrays buffers
 }
 
 TEST_CASE("lanes: the 6R arm's forward and inverse dynamics on the recursive path, lane by lane", "[lanes]") {

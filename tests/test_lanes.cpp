@@ -10,7 +10,6 @@
 #include <limits>
 #include <vector>
 
-#include <kane/scalars/soa_block.hpp>
 #include "../examples/models/gyrostat.hpp"
 #include "../examples/models/heavy_top.hpp"
 #include "../examples/models/pendulum_absolute.hpp"
@@ -301,6 +300,11 @@ TEST_CASE("lanes: the spacecraft on Euler parameters, lane by lane as the scalar
   xs[7][10] = std::numeric_limits<double>::quiet_NaN();
   compare<kane::motion<m::system, m::speeds>, kane::motion<m::system, m::speeds, kane::lanes<double, 8>>>(
       xs, 1e-13);
+  // the same states from and to structure-of-arrays buffers (kane::soa_block), 4 lanes
+  kane::motion<m::system, m::speeds> one{kane::state_of<m::system, m::speeds>{}};
+  kane::motion<m::system, m::speeds, kane::lanes<double, 4>> many{
+      kane::state_of<m::system, m::speeds, kane::lanes<double, 4>>{}};
+  lanes_test::compare_soa(one, many, xs, 1e-13);
 }
 
 TEST_CASE("lanes: the double pendulum on absolute angles (u = q'), lane by lane as the scalar path",
@@ -309,44 +313,4 @@ TEST_CASE("lanes: the double pendulum on absolute angles (u = q'), lane by lane 
   xs[6][3] = std::numeric_limits<double>::infinity();
   using system = models::pendulum_absolute::system;
   compare<kane::motion<system>, kane::motion<system, void, kane::lanes<double, 8>>>(xs, 1e-13);
-}
-
-TEST_CASE("lanes: the spacecraft from and to structure-of-arrays buffers (soa_block), as the scalar path",
-          "[lanes]") {
-  namespace m = models::gyrostat;
-  using L = kane::lanes<double, 4>;
-  constexpr std::size_t N = 14, count = 19, B = 20;  // the last block padded by the first state
-  auto xs = states<double, N>(count, 11);
-  xs[4][0] = xs[4][1] = xs[4][2] = xs[4][3] = 0;  // no attitude
-  xs[13][10] = std::numeric_limits<double>::quiet_NaN();
-  std::array<double, N * B> x{}, xd{};  // number i of state k at i * B + k
-  for (std::size_t i = 0; i < N; ++i)
-    for (std::size_t k = 0; k < B; ++k) x[i * B + k] = xs[k < count ? k : 0][i];
-  kane::motion<m::system, m::speeds, L> many{kane::state_of<m::system, m::speeds, L>{}};
-  kane::motion<m::system, m::speeds> one{kane::state_of<m::system, m::speeds>{}};
-  const double* in = x.data();
-  int bad = 0;
-  for (std::size_t first = 0; first < B; first += 4) {
-    if (first % 8 == 0) {
-      many(kane::soa_block<L>(in, B, first), kane::soa_block<L>(xd.data(), B, first), L(0.0));
-    } else {  // dx/dt a named view, x a view of numbers one may write
-      auto out = kane::soa_block<L>(xd.data(), B, first);
-      many(kane::soa_block<L>(x.data(), B, first), out, L(0.0));
-    }
-    const auto statuses = many.status();
-    for (std::size_t l = 0; l < 4 && first + l < count; ++l) {
-      std::array<double, N> xd1;
-      one(xs[first + l], xd1, 0.0);
-      INFO("state " << first + l);
-      CHECK(statuses[l] == one.status());
-      bad += one.status() != kane::solve_status::ok;
-      for (std::size_t i = 0; i < N; ++i) {
-        if (one.status() == kane::solve_status::ok)
-          CHECK(std::abs(xd[i * B + first + l] - xd1[i]) <= 1e-13 * (1 + std::abs(xd1[i])));
-        else
-          CHECK(std::isnan(xd[i * B + first + l]));
-      }
-    }
-  }
-  CHECK(bad == 2);  // states 4 and 13
 }
