@@ -30,7 +30,10 @@
 // case cut_of_a_vector: kane: cut<P, Items...> takes the frames of the part's bodies and the points of its particles
 // case eigenvalues_of_a_dynamic_matrix: kane: eigenvalues takes a square matrix of real numbers of fixed size
 // A case's compile defines KANE_A_CASE: then it compiles only the functions its misuse reaches. The
-// accepted twin compiles all.
+// accepted twin compiles all. The types that several functions share (sys, steered, ...) keep their
+// fixes: a misuse is a type or a call of its case alone, on the lines of its #ifdef or in a function
+// compiled under KANE_A_CASE for that case alone. So the one compile of all cases gives each error to
+// its case.
 #include <array>
 
 #include <kane/kane.hpp>
@@ -49,77 +52,107 @@ struct O : kane::origin<N> {};
 struct J : kane::point<O, -p<1> * e<A, 3>> {};
 struct Bo : kane::point<J, -p<2> * e<B, 3>> {};
 struct S : kane::point<O, p<2> * e<A, 1> + kane::q<2> * e<N, 2>> {};  // on no body
-#ifdef KANE_CASE_inertia_in_turning_frame
-using inertia = kane::inertia<A, Bo, p<4>, p<4>, p<5>>;
-#elif defined(KANE_CASE_inertia_about_other_point)
-using inertia = kane::inertia<T, J, p<4>, p<4>, p<5>>;
-#else
+struct M : kane::root_frame {};                                       // another tree
 using inertia = kane::inertia<T, Bo, p<4>, p<4>, p<5>>;
-#endif
-#ifdef KANE_CASE_inertia_not_inertia
-using body = kane::rigid_body<B, Bo, p<3>, T>;
-#else
 using body = kane::rigid_body<B, Bo, p<3>, inertia>;
-#endif
-#ifdef KANE_CASE_particle_mass_not_scalar
-using tip = kane::particle<J, e<N, 1>>;
-#else
 using tip = kane::particle<J, p<6>>;
-#endif
-#ifdef KANE_CASE_force_at_massless_point
-using push = kane::force<S, p<7> * e<N, 1>>;
-#else
 using push = kane::force<Bo, p<7> * e<N, 1>>;
+using twist = kane::torque<B, p<9> * e<N, 1>>;
+// The system with its body, particle, force and torque; sys_with<...> with some of them replaced.
+template <class Body = body, class Tip = tip, class Push = push, class Twist = twist>
+using sys_with = kane::system<Body, Tip, Push, Twist, kane::gravity<-p<8> * e<N, 3>>>;
+using sys = sys_with<>;
+
+// M(0, 0) of Kane's equations of System at the speeds q'.
+template <class System>
+double equations() {
+  kane::state<double, 2, 2, 9> s;
+  kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, kane::qdot_speeds<2>> ev;
+  ev.update(s);
+  return kane::mass_matrix_and_forcing<System>(ev).M(0, 0);
+}
+// Each misuse replaces one item of sys; each fix is sys itself.
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_inertia_in_turning_frame)
+double inertia_in_turning_frame() {
+#ifdef KANE_CASE_inertia_in_turning_frame
+  return equations<sys_with<kane::rigid_body<B, Bo, p<3>, kane::inertia<A, Bo, p<4>, p<4>, p<5>>>>>();
+#else
+  return equations<sys_with<kane::rigid_body<B, Bo, p<3>, kane::inertia<T, Bo, p<4>, p<4>, p<5>>>>>();
 #endif
+}
+#endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_inertia_about_other_point)
+double inertia_about_other_point() {
+#ifdef KANE_CASE_inertia_about_other_point
+  return equations<sys_with<kane::rigid_body<B, Bo, p<3>, kane::inertia<T, J, p<4>, p<4>, p<5>>>>>();
+#else
+  return equations<sys_with<kane::rigid_body<B, Bo, p<3>, kane::inertia<T, Bo, p<4>, p<4>, p<5>>>>>();
+#endif
+}
+#endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_inertia_not_inertia)
+double inertia_not_inertia() {
+#ifdef KANE_CASE_inertia_not_inertia
+  return equations<sys_with<kane::rigid_body<B, Bo, p<3>, T>>>();
+#else
+  return equations<sys_with<kane::rigid_body<B, Bo, p<3>, inertia>>>();
+#endif
+}
+#endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_particle_mass_not_scalar)
+double particle_mass_not_scalar() {
+#ifdef KANE_CASE_particle_mass_not_scalar
+  return equations<sys_with<body, kane::particle<J, e<N, 1>>>>();
+#else
+  return equations<sys_with<body, kane::particle<J, p<6>>>>();
+#endif
+}
+#endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_force_at_massless_point)
+double force_at_massless_point() {
+#ifdef KANE_CASE_force_at_massless_point
+  return equations<sys_with<body, tip, kane::force<S, p<7> * e<N, 1>>>>();
+#else
+  return equations<sys_with<body, tip, kane::force<Bo, p<7> * e<N, 1>>>>();
+#endif
+}
+#endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_torque_from_other_tree)
+double torque_from_other_tree() {
+#ifdef KANE_CASE_torque_from_other_tree
+  return equations<sys_with<body, tip, push, kane::torque<B, p<9> * e<M, 1>>>>();
+#else
+  return equations<sys_with<body, tip, push, kane::torque<B, p<9> * e<N, 1>>>>();
+#endif
+}
+#endif
+
 // a wheel spinning in B about b2: its inertia may be given in B if symmetric about b2
 struct W : kane::frame<B, kane::spin<kane::axis::y, kane::speed<3>>> {};
-#ifdef KANE_CASE_wheel_inertia_not_symmetric
-using wheel = kane::rigid_body<W, Bo, p<3>, kane::inertia<B, Bo, p<4>, p<5>, p<6>>>;
-#else
 using wheel = kane::rigid_body<W, Bo, p<3>, kane::inertia<B, Bo, p<4>, p<5>, p<4>>>;
-#endif
+#ifdef KANE_CASE_wheel_inertia_not_symmetric
+static_assert(sizeof(kane::rigid_body<W, Bo, p<3>, kane::inertia<B, Bo, p<4>, p<5>, p<6>>>) > 0);
+#else
 static_assert(sizeof(wheel) > 0);
+#endif
 // given in the spinning frame itself, the inertia is symmetric about the spin axis too
 #ifdef KANE_CASE_spinning_inertia_not_symmetric
-using wheel_in_w = kane::rigid_body<W, Bo, p<3>, kane::inertia<W, Bo, p<4>, p<5>, p<6>>>;
+static_assert(sizeof(kane::rigid_body<W, Bo, p<3>, kane::inertia<W, Bo, p<4>, p<5>, p<6>>>) > 0);
 #else
-using wheel_in_w = kane::rigid_body<W, Bo, p<3>, kane::inertia<W, Bo, p<4>, p<5>, p<4>>>;
+static_assert(sizeof(kane::rigid_body<W, Bo, p<3>, kane::inertia<W, Bo, p<4>, p<5>, p<4>>>) > 0);
 #endif
-static_assert(sizeof(wheel_in_w) > 0);
 // the wheel's speed u3 is a free speed of the evaluator's speed set, though W is not among its frames
-#ifdef KANE_CASE_wheel_speed_not_in_set
-using wheel_speeds = kane::qdot_speeds<2>;
-#else
-using wheel_speeds = kane::speeds<kane::dt(kane::q<1>), kane::dt(kane::q<2>), kane::free_speed>;
-#endif
-#if !defined(KANE_A_CASE) || defined(KANE_CASE_inertia_in_turning_frame) ||                                \
-    defined(KANE_CASE_inertia_about_other_point) || defined(KANE_CASE_inertia_not_inertia) ||              \
-    defined(KANE_CASE_wheel_inertia_not_symmetric) || defined(KANE_CASE_spinning_inertia_not_symmetric) || \
-    defined(KANE_CASE_wheel_speed_not_in_set)
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_wheel_speed_not_in_set)
 double use_wheel() {
+#ifdef KANE_CASE_wheel_speed_not_in_set
+  using wheel_speeds = kane::qdot_speeds<2>;
+#else
+  using wheel_speeds = kane::speeds<kane::dt(kane::q<1>), kane::dt(kane::q<2>), kane::free_speed>;
+#endif
   kane::state<double, 2, 3, 9> s;
   kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, wheel_speeds> ev;
   ev.update(s);
   return kane::mass_matrix_and_forcing<kane::system<body, wheel>>(ev).M(0, 0);
-}
-#endif
-struct M : kane::root_frame {};  // another tree
-#ifdef KANE_CASE_torque_from_other_tree
-using twist = kane::torque<B, p<9> * e<M, 1>>;
-#else
-using twist = kane::torque<B, p<9> * e<N, 1>>;
-#endif
-using sys = kane::system<body, tip, push, twist, kane::gravity<-p<8> * e<N, 3>>>;
-
-#if !defined(KANE_A_CASE) || defined(KANE_CASE_inertia_in_turning_frame) ||                      \
-    defined(KANE_CASE_inertia_about_other_point) || defined(KANE_CASE_inertia_not_inertia) ||    \
-    defined(KANE_CASE_particle_mass_not_scalar) || defined(KANE_CASE_force_at_massless_point) || \
-    defined(KANE_CASE_torque_from_other_tree)
-double use() {
-  kane::state<double, 2, 2, 9> s;
-  kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, kane::qdot_speeds<2>> ev;
-  ev.update(s);
-  return kane::mass_matrix_and_forcing<sys>(ev).M(0, 0);
 }
 #endif
 
@@ -147,14 +180,18 @@ double pin() {
   kane::state<double, 2, 2, 9> s;
   kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, kane::qdot_speeds<2>> ev;
   ev.update(s);
-#if defined(KANE_CASE_cut_names_no_mass)
-  using part = kane::cut<J, A>;  // no body is fixed in A
-#elif defined(KANE_CASE_cut_of_a_vector)
-  using part = kane::cut<J, decltype(e<B, 1>)>;
+  double x = 0;
+#ifdef KANE_CASE_cut_names_no_mass
+  x += kane::reaction<sys, kane::cut<J, A>>(ev).force[0];  // no body is fixed in A
 #else
-  using part = kane::cut<J, B>;
+  x += kane::reaction<sys, kane::cut<J, B>>(ev).force[0];
 #endif
-  return kane::reaction<sys, part>(ev).force[0];
+#ifdef KANE_CASE_cut_of_a_vector
+  x += kane::reaction<sys, kane::cut<J, decltype(e<B, 1>)>>(ev).force[0];
+#else
+  x += kane::reaction<sys, kane::cut<J, B>>(ev).force[0];
+#endif
+  return x;
 }
 #endif
 
@@ -166,10 +203,11 @@ double integrate() {
   kane::motion<sys, ev_type> f(s);
 #ifdef KANE_CASE_motion_wrong_size
   std::array<double, 3> x{}, dx{};
+  f(x, dx, 0.0);
 #else
   std::array<double, 4> x{}, dx{};
-#endif
   f(x, dx, 0.0);
+#endif
   // x's entries by name: u_3 is none of the two speeds'
 #ifdef KANE_CASE_motion_index_beyond
   return dx[f.index(kane::u<3>)];
@@ -228,26 +266,39 @@ double stretched_energy() {
 #endif
 
 // Analytical derivatives: a tree of simple rotations by q, loads fixed in the bodies they act on.
-#ifdef KANE_CASE_derivatives_of_world_load
-using steered = kane::system<body, tip, push, kane::gravity<-p<8> * e<N, 3>>>;  // push is along n1
-#else
 using steered = kane::system<body, tip, kane::force<Bo, p<7> * e<B, 1>>, kane::gravity<-p<8> * e<N, 3>>>;
-#endif
-#ifdef KANE_CASE_derivatives_of_reordered_rates
-using steering_speeds = kane::speeds<kane::dt(q<2>{}), kane::dt(q<1>{})>;  // the recursive passes, u != q'
-#else
-using steering_speeds = kane::qdot_speeds<2>;
-#endif
-#if !defined(KANE_A_CASE) || defined(KANE_CASE_derivatives_of_world_load) || \
-    defined(KANE_CASE_derivatives_of_reordered_rates) || defined(KANE_CASE_derivatives_without_joint_form)
+template <class System, class Speeds = kane::qdot_speeds<2>>
 double derivative() {
   kane::state<double, 2, 2, 9> s;
-  kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, steering_speeds> ev;
+  kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, Speeds> ev;
   ev.update(s);
-#ifdef KANE_CASE_derivatives_without_joint_form
-  return kane::forward_dynamics_derivatives<rolling_sys>(ev).dud_dq(0, 0);  // Bv is known by its velocity
+  return kane::forward_dynamics_derivatives<System>(ev).dud_dq(0, 0);
+}
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_derivatives_of_world_load)
+double derivatives_of_world_load() {
+#ifdef KANE_CASE_derivatives_of_world_load
+  return derivative<kane::system<body, tip, push, kane::gravity<-p<8> * e<N, 3>>>>();  // push is along n1
 #else
-  return kane::forward_dynamics_derivatives<steered>(ev).dud_dq(0, 0);
+  return derivative<steered>();
+#endif
+}
+#endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_derivatives_of_reordered_rates)
+double derivatives_of_reordered_rates() {
+#ifdef KANE_CASE_derivatives_of_reordered_rates
+  // the recursive passes, u != q'
+  return derivative<steered, kane::speeds<kane::dt(q<2>{}), kane::dt(q<1>{})>>();
+#else
+  return derivative<steered>();
+#endif
+}
+#endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_derivatives_without_joint_form)
+double derivatives_without_joint_form() {
+#ifdef KANE_CASE_derivatives_without_joint_form
+  return derivative<rolling_sys>();  // Bv is known by its velocity
+#else
+  return derivative<steered>();
 #endif
 }
 #endif
@@ -270,14 +321,22 @@ double linear_entry() {
 
 // kane::motion<System>: its state is kane::state_of<System>; its second argument a speed set or an evaluator.
 using pendulum = kane::system<kane::particle<Bo, p<3>>, kane::gravity<-p<8> * e<N, 3>>>;
-#if !defined(KANE_A_CASE) || defined(KANE_CASE_motion_state_of_other_type) || \
-    defined(KANE_CASE_motion_second_argument)
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_motion_state_of_other_type)
 double own_motion() {
 #ifdef KANE_CASE_motion_state_of_other_type
   kane::state<double, 2, 2, 9> s;
 #else
   kane::state_of<pendulum> s;
 #endif
+  kane::motion<pendulum, kane::qdot_speeds<2>> f(s);
+  std::array<double, 4> x{}, dx{};
+  f(x, dx, 0.0);
+  return dx[3];
+}
+#endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_motion_second_argument)
+double motion_at_speeds() {
+  kane::state_of<pendulum> s;
 #ifdef KANE_CASE_motion_second_argument
   kane::motion<pendulum, double> f(s);
 #else
@@ -292,22 +351,28 @@ double own_motion() {
 // Linearization over kane::lanes: the analytical derivatives with inputs of the state; one state at a
 // time otherwise.
 using two = kane::lanes<double, 2>;
-#ifdef KANE_CASE_linearize_lanes_by_sums
-using lane_speeds = kane::speeds<kane::dt(q<2>{}), kane::dt(q<1>{})>;  // u != q': Kane's sums
-#else
-using lane_speeds = kane::qdot_speeds<2>;
-#endif
-#ifdef KANE_CASE_linearize_lanes_by_parameter
-using lane_inputs = kane::inputs<p<7>>;
-#else
-using lane_inputs = kane::inputs<kane::r<1>>;
-#endif
-#if !defined(KANE_A_CASE) || defined(KANE_CASE_linearize_lanes_by_sums) || \
-    defined(KANE_CASE_linearize_lanes_by_parameter)
+template <class Speeds, class Inputs = kane::inputs<kane::r<1>>>
 double lanes_linearization() {
   kane::state<two, 2, 2, 9, 1> s;
-  using ev_type = kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, lane_speeds>;
-  return kane::linearize<steered, ev_type, lane_inputs>(s).A(0, 0)[0];
+  using ev_type = kane::evaluator<decltype(s), kane::frames<T>, kane::level::acceleration, Speeds>;
+  return kane::linearize<steered, ev_type, Inputs>(s).A(0, 0)[0];
+}
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_linearize_lanes_by_sums)
+double linearize_lanes_by_sums() {
+#ifdef KANE_CASE_linearize_lanes_by_sums
+  return lanes_linearization<kane::speeds<kane::dt(q<2>{}), kane::dt(q<1>{})>>();  // u != q': Kane's sums
+#else
+  return lanes_linearization<kane::qdot_speeds<2>>();
+#endif
+}
+#endif
+#if !defined(KANE_A_CASE) || defined(KANE_CASE_linearize_lanes_by_parameter)
+double linearize_lanes_by_parameter() {
+#ifdef KANE_CASE_linearize_lanes_by_parameter
+  return lanes_linearization<kane::qdot_speeds<2>, kane::inputs<p<7>>>();
+#else
+  return lanes_linearization<kane::qdot_speeds<2>, kane::inputs<kane::r<1>>>();
+#endif
 }
 #endif
 #ifdef KANE_CASE_linearize_constrained_lanes
