@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Cholesky>
 #include <kane/kane.hpp>
 
 namespace {

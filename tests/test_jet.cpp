@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include <Eigen/Cholesky>
 #include <kane/linearization.hpp>
 
 #include "../examples/models/disc.hpp"

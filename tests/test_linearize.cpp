@@ -12,6 +12,7 @@
 #include <type_traits>
 #include <utility>
 
+#include <Eigen/Cholesky>
 #include <kane/linearization.hpp>
 
 #include "../examples/models/disc.hpp"

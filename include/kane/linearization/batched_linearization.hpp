@@ -11,9 +11,9 @@
 #include <limits>
 #include <type_traits>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
+#include "kane/detail/invert.hpp"
 #include "kane/dynamics/detail/method.hpp"
 #include "kane/dynamics/detail/rates_function.hpp"
 #include "kane/dynamics/inverse_dynamics.hpp"
@@ -43,12 +43,13 @@ model_of<Ev, In> linearize_in_batches(const typename Ev::state_type& s) {
   Ev ev;
   ev.update(s0);
   const auto eq = mass_matrix_and_forcing<Sys>(ev);
-  const Eigen::LLT<Eigen::Matrix<S, int(nu), int(nu)>> llt(eq.M);
-  const Eigen::Matrix<S, int(nu), 1> ud = llt.solve(eq.f);
-  solve_status status = eq.status != solve_status::ok  ? eq.status
-                        : llt.info() != Eigen::Success ? solve_status::singular
-                        : !all_finite_matrix(ud)       ? solve_status::not_finite
-                                                       : solve_status::ok;
+  const cholesky_factor<S, int(nu)> factor(eq.M);  // M = L D L^T, once
+  Eigen::Matrix<S, int(nu), 1> ud = -eq.f;
+  factor.solve_negated(ud);
+  solve_status status = eq.status != solve_status::ok ? eq.status
+                        : !factor.ok()                ? solve_status::singular
+                        : !all_finite_matrix(ud)      ? solve_status::not_finite
+                                                      : solve_status::ok;
   model_of<Ev, In> out;
   const auto qd = ev.coordinate_rates();
   for (std::size_t i = 0; i < nq; ++i) out.rate(Eigen::Index(i)) = qd[i];
@@ -80,8 +81,8 @@ model_of<Ev, In> linearize_in_batches(const typename Ev::state_type& s) {
     if (tau.status != solve_status::ok) status = tau.status;
     for (std::size_t j = 0; j < b; ++j)
       for (std::size_t i = 0; i < nu; ++i)
-        dtau(Eigen::Index(i), Eigen::Index(j)) = -tau.tau(Eigen::Index(i)).part(j);
-    llt.solveInPlace(dtau);
+        dtau(Eigen::Index(i), Eigen::Index(j)) = tau.tau(Eigen::Index(i)).part(j);
+    factor.solve_negated(dtau);  // -M^-1 dtau
     for (std::size_t d = lo; d < hi; ++d) {
       for (std::size_t i = 0; i < nq; ++i) put(i, d, jqd[i].part(d - lo));
       for (std::size_t i = 0; i < nu; ++i) put(nq + i, d, dtau(Eigen::Index(i), Eigen::Index(d - lo)));

@@ -12,7 +12,6 @@
 #include <limits>
 #include <type_traits>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "kane/detail/invert.hpp"
@@ -221,28 +220,28 @@ Eigen::Matrix<jet<S, D>, N, 1> solve_block(const Eigen::Matrix<jet<S, D>, N, N>&
   }
   return out;
 }
-// x = m^-1 f on jets: Cholesky of the values, then M dx = df - dM x for each direction.
+// x = m^-1 f on jets: m's values factored once (L D L^T), then M dx = df - dM x for each direction.
 template <class S, std::size_t D, int N>
 bool solve_positive_definite(const Eigen::Matrix<jet<S, D>, N, N>& m, const Eigen::Matrix<jet<S, D>, N, 1>& f,
                              Eigen::Matrix<jet<S, D>, N, 1>& x) {
   using I = Eigen::Index;
   Eigen::Matrix<S, N, N> mv;
-  Eigen::Matrix<S, N, 1> fv;
+  Eigen::Matrix<S, N, 1> xv;  // -f, then m^-1 f
   for (I i = 0; i < N; ++i) {
-    fv(i) = f(i).v;
+    xv(i) = -f(i).v;
     for (I j = 0; j < N; ++j) mv(i, j) = m(i, j).v;
   }
-  const Eigen::LLT<Eigen::Matrix<S, N, N>> llt(mv);
-  if (llt.info() != Eigen::Success) return false;
-  const Eigen::Matrix<S, N, 1> xv = llt.solve(fv);
-  Eigen::Matrix<S, N, int(D)> r;
+  const detail::cholesky_factor<S, N> factor(mv);
+  if (!factor.ok()) return false;
+  factor.solve_negated(xv);
+  Eigen::Matrix<S, N, int(D)> r;  // dM x - df, then m^-1 (df - dM x)
   for (I i = 0; i < N; ++i)
     for (std::size_t d = 0; d < D; ++d) {
-      S ri = f(i).part(d);
-      for (I k = 0; k < N; ++k) ri -= m(i, k).part(d) * xv(k);
+      S ri = -f(i).part(d);
+      for (I k = 0; k < N; ++k) ri += m(i, k).part(d) * xv(k);
       r(i, I(d)) = ri;
     }
-  llt.solveInPlace(r);
+  factor.solve_negated(r);
   for (I i = 0; i < N; ++i) {
     x(i) = jet<S, D>(xv(i));
     for (std::size_t d = 0; d < D; ++d) x(i).c[d / jet<S, D>::width][d % jet<S, D>::width] = r(i, I(d));
