@@ -219,9 +219,9 @@ class cholesky_factor {
   auto ok() const { return positive; }
   template <class... X>
   void solve_negated(X&... x) const {
-    static_assert(((X::RowsAtCompileTime == N && !X::IsRowMajor &&
+    static_assert(((X::RowsAtCompileTime == N && (!X::IsRowMajor || N == 1) &&
                     std::is_base_of_v<Eigen::PlainObjectBase<X>, X>)&&...),
-                  "solve_negated: each X a plain column-major matrix of N rows, its columns contiguous");
+                  "solve_negated: each X a plain matrix of N rows, its columns contiguous (column-major)");
     constexpr std::size_t cols = (std::size_t(X::ColsAtCompileTime) + ... + 0);
     constexpr std::size_t P = (cols + W - 1) / W, R = P * W;  // packets and numbers a row
     std::array<S, n * R> b;                                   // row i: (X_0 row i, X_1 row i, ...)
