@@ -2,7 +2,7 @@
 // its mass centre; forces at particles or at points fixed in bodies.
 // Each case is a misuse (#ifdef) and its fix (#else).
 // case inertia_in_turning_frame: inertia_given_in_a_frame_that_turns_relative_to_the_body<.*A, .*B>
-// case inertia_about_other_point: inertia_about_another_point_than_the_mass_centre_use_parallel_axis<.*J, .*Bo>
+// case inertia_about_other_point: inertia_about_another_point_than_the_mass_centre_use_parallel_axis<.*J, .*Bo>, .*give_the_inertia_about_the_mass_centre<.*Bo>
 // case force_at_massless_point: force_at_a_point_of_no_mass_apply_it_at_a_particle_or_a_point_fixed_in_a_body<.*S>
 // case wheel_inertia_not_symmetric: inertia_given_in_a_frame_that_turns_relative_to_the_body<.*B, .*W>
 // case spinning_inertia_not_symmetric: inertia_in_a_spinning_frame_is_symmetric_about_its_spin_axis<.*W>

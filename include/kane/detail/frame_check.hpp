@@ -130,6 +130,9 @@ struct call_kane_express;
 // kane::inertia<B, Bo, ...>: components in the body's frame (or one fixed in it).
 template <class Body>
 struct give_the_inertia_in_the_body_frame;
+// kane::inertia<F, Bo, ...> about the mass centre Bo: move it there by the parallel axis theorem.
+template <class Centre>
+struct give_the_inertia_about_the_mass_centre;
 // kane::state<S, NQ, ...> with NQ >= I, or kane::state_of<System>.
 template <std::size_t I>
 struct declare_kane_state_with_nq_at_least;

@@ -169,23 +169,27 @@ requires(!std::is_void_v<typename I::frame::tree_parent> &&
   using type = typename std::conditional_t<spins_symmetric<typename I::frame, in_parent>() && !spin_edge<P>,
                                            symmetric_lift<in_parent>, std::type_identity<I>>::type;
 };
-}  // namespace detail
-
-namespace detail {
+// The point an inertia is given about; Bo for what is no inertia (another rule refuses it).
+template <class Given, class Bo>
+struct about_of : std::type_identity<Bo> {};
+template <class Given, class Bo>
+requires std::derived_from<Given, inertia_tag>
+struct about_of<Given, Bo> : std::type_identity<typename Given::about> {
+};
 // The rules of rigid_body<B, Bo, m, I> as one value, without an error.
 template <class B, class Bo, class Given>
 constexpr bool body_rules() {
-  if constexpr (!std::derived_from<Given, inertia_tag>)
+  if constexpr (!std::derived_from<Given, inertia_tag> ||
+                !std::is_same_v<typename about_of<Given, Bo>::type, Bo>)
     return false;
   else {
     using F = typename Given::frame;
     if constexpr (!path<B, F>::joined)
       return false;
     else if constexpr (spin_edge<F>)
-      return inertia_for<Given>::symmetric && std::is_same_v<typename Given::about, Bo>;
+      return inertia_for<Given>::symmetric;
     else
-      return (fixed_frames<B, F>() || spins_symmetric<B, Given>()) &&
-             std::is_same_v<typename Given::about, Bo>;
+      return fixed_frames<B, F>() || spins_symmetric<B, Given>();
   }
 }
 }  // namespace detail
@@ -198,7 +202,11 @@ struct rigid_body
                         detail::spins_symmetric<B, typename detail::inertia_for<Given>::type>(),
                     error::inertia_given_in_a_frame_that_turns_relative_to_the_body<
                         typename detail::inertia_for<Given>::type::frame, B>,
-                    fix::give_the_inertia_in_the_body_frame<B>> {
+                    fix::give_the_inertia_in_the_body_frame<B>>,
+      detail::holds<std::is_same_v<typename detail::about_of<Given, Bo>::type, Bo>,
+                    error::inertia_about_another_point_than_the_mass_centre_use_parallel_axis<
+                        typename detail::about_of<Given, Bo>::type, Bo>,
+                    fix::give_the_inertia_about_the_mass_centre<Bo>> {
   static_assert(detail::ScalarArgument<Mass>,
                 "kane: rigid_body<B, Bo, m, I> takes a scalar expression m (or a number)");
   static_assert(std::derived_from<Given, detail::inertia_tag>,
@@ -206,10 +214,6 @@ struct rigid_body
   // the inertia as given, or in the parent of a frame that spins
   using I = typename detail::inertia_for<Given>::type;
   static_assert(detail::joined_frames<B, typename I::frame>::joined);
-  static_assert(
-      detail::check<
-          std::is_same_v<typename I::about, Bo>,
-          error::inertia_about_another_point_than_the_mass_centre_use_parallel_axis<typename I::about, Bo>>);
   // the body keeps its rules (a system admits it only then)
   static constexpr bool well_formed = detail::ScalarArgument<Mass> && detail::body_rules<B, Bo, Given>();
   // B, the frame the body is fixed in
@@ -243,9 +247,7 @@ constexpr bool carries(X*) {
   } else
     return false;
 }
-}  // namespace detail
 
-namespace detail {
 struct system_tag {};
 template <class X>
 struct items_of {
