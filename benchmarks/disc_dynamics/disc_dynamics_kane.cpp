@@ -1,6 +1,6 @@
 // kane's rolling disc (disc_dynamics.hpp, models/disc.hpp): kane_rates is the integrator's
 // right-hand side kane::constrained_motion, built once with the parameters and called per
-// state (two acceleration-level passes: one at u_dep = 0 for A and B, one at the solved
+// state (one pass: the pose, A and B from it, then the speeds and accelerations at the solved
 // u_dep). kane_reduced_rates is what a user may write instead: A and B from a pose-level
 // evaluator up to L (they read q1, q2 and r only), then one acceleration-level pass and
 // Kane's reduced equations; both evaluators built per call.
