@@ -29,13 +29,13 @@ int main() {
 
   constexpr auto v2 = kane::velocity<N, P2>();  // ^N v^P2, derived at compile time
   constexpr auto a2 = kane::acceleration<N, P2>();
-  kane::evaluator_for<decltype(s), kane::reads<v2, a2>> ev;  // the frames and the level v2, a2 read
+  kane::evaluator_for<decltype(s), kane::reads<v2, a2>> ev;  // holds the values of v2 and a2
   ev.update(s);
 
   std::printf("^N v^P2 = %s\n", kane::to_string(v2).c_str());
   const kane::vec<N> vN = kane::express<N>(v2, ev);
   const kane::vec<N> aN = kane::express<N>(a2, ev);
-  const kane::vec<B> vB = kane::express<B>(v2, ev);
+  const kane::vec<B> vB = kane::express<B>(vN, s);  // the held value turned into B
   std::printf("^N v^P2 in N: (% .6f, % .6f, % .6f)\n", vN[0], vN[1], vN[2]);
   std::printf("^N v^P2 in B: (% .6f, % .6f, % .6f)\n", vB[0], vB[1], vB[2]);
   std::printf("^N a^P2 in N: (% .6f, % .6f, % .6f)\n", aN[0], aN[1], aN[2]);

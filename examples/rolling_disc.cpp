@@ -34,8 +34,9 @@ int main() {
   s5.u = {0.5, -1.5, 0.8, 0.0, 0.0};
   s5.p = {0.25};
   constexpr auto v5 = kane::velocity<N, Centre5>();  // the centre; v_below: the constraints
-  kane::evaluator_for<decltype(s5), kane::reads<kane::partials_of(v5), kane::partials_of(v_below)>, speeds5>
-      ev5;
+  // the constraints read the evaluator's pose: kane::evaluator of the frames the partials read
+  using partials5 = kane::reads<kane::partials_of(v5), kane::partials_of(v_below)>;
+  kane::evaluator_for<decltype(s5), partials5, speeds5>::evaluator_type ev5;
   ev5.update(s5);
   const auto sol = kane::solve_constraints<rolling>(ev5);  // u4, u5 = A (u1 u2 u3) + B
   if (sol.status != kane::solve_status::ok) return 1;

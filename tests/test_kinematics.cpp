@@ -168,8 +168,10 @@ TEST_CASE("kinematics: evaluator_for holds the frames and the level its expressi
   using acceleration = kane::reads<a, kane::e<B6, 2>>;
   static_assert(pose::needed == kane::level::pose && velocity::needed == kane::level::velocity &&
                 acceleration::needed == kane::level::acceleration);
-  static_assert(kane::detail::size<kane::evaluator_for<St, velocity>::closure>::value == 6);  // N, B1 .. B5
-  static_assert(kane::detail::size<kane::evaluator_for<St, acceleration>::closure>::value == 7);
+  static_assert(kane::detail::size<kane::evaluator_for<St, velocity>::evaluator_type::closure>::value ==
+                6);  // N, B1 .. B5
+  static_assert(kane::detail::size<kane::evaluator_for<St, acceleration>::evaluator_type::closure>::value ==
+                7);
   for (const auto& c : sympy_kin::arm) {
     St s;
     load(s, c);
@@ -182,6 +184,59 @@ TEST_CASE("kinematics: evaluator_for holds the frames and the level its expressi
     CHECK(near(kane::express<N>(w, ev_velocity), c.w_N, 1e-13));
     CHECK(near(kane::express<N>(a, ev_acceleration), c.a_N, 1e-13));
   }
+}
+
+TEST_CASE("kinematics: evaluator_for holds the values of its reads, as the evaluator computes them") {
+  using St = kane::state<double, 6>;
+  constexpr auto r = kane::position<O, End>();
+  constexpr auto v = kane::velocity<N, End>();
+  constexpr auto w = kane::angular_velocity<N, B6>();
+  constexpr auto a = kane::acceleration<N, End>();
+  constexpr auto alpha = kane::angular_acceleration<N, B6>();
+  constexpr auto height = kane::dot(r, e<N, 3>);  // a scalar read
+  constexpr auto rate = kane::dt(kane::q<2>);
+  using all =
+      kane::reads<r, v, w, a, alpha, height, rate, kane::partials_of(v), kane::partials_of(w), e<B6, 2>>;
+  kane::evaluator_for<St, all> ev;
+  CHECK(!ev.updated());
+  CHECK(std::isnan(kane::express<N>(a, ev)[1]));  // NaN before the first update
+  CHECK(std::isnan(kane::partial_velocities<N>(v, ev)(2, 5)));
+  kane::evaluator<St, kane::frames<B6>> full;
+  for (const auto& c : sympy_kin::arm) {
+    St s;
+    load(s, c);
+    ev.update(s), full.update(s);
+    REQUIRE(ev.status() == kane::solve_status::ok);
+    CHECK(near(kane::express<N>(r, ev), c.r_N, 1e-13));
+    CHECK(near(kane::express<N>(v, ev), c.v_N, 1e-13));
+    CHECK(near(kane::express<N>(w, ev), c.w_N, 1e-13));
+    CHECK(near(kane::express<N>(a, ev), c.a_N, 1e-13));
+    CHECK(near(kane::express<N>(alpha, ev), c.alpha_N, 1e-13));
+    CHECK(kane::evaluate(height, ev) == Approx(c.r_N[2]).margin(1e-14));
+    CHECK(kane::evaluate(rate, ev) == c.qd[1]);
+    // the tables and a unit vector against the evaluator of the frames, and J u = v
+    const Eigen::Matrix<double, 3, 6> V = kane::partial_velocities<N>(v, ev);
+    CHECK((V - kane::partial_velocities<N>(v, full)).norm() < 1e-14);
+    CHECK((kane::partial_velocities<N>(w, ev) - kane::partial_velocities<N>(w, full)).norm() < 1e-14);
+    CHECK((V * Eigen::Map<const Eigen::Matrix<double, 6, 1>>(c.qd) - kane::express<N>(v, ev).eigen()).norm() <
+          1e-13);
+    CHECK((kane::express<N>(e<B6, 2>, ev).eigen() - full.axes<B6>().col(1)).norm() < 1e-15);
+  }
+  // A state that is not finite: the status says so and the values are NaN.
+  St s;
+  load(s, sympy_kin::arm[0]);
+  s.qd[3] = std::numeric_limits<double>::infinity();
+  ev.update(s);
+  CHECK(ev.updated());
+  CHECK(ev.status() == kane::solve_status::not_finite);
+  CHECK(!std::isfinite(kane::express<N>(v, ev)[0]));
+  // A read of the type of a held one with other numbers in it: NaN, never the held value.
+  constexpr auto twice = 2.0 * e<B1, 1>;
+  kane::evaluator_for<St, kane::reads<twice>> ev_twice;
+  load(s, sympy_kin::arm[0]);
+  ev_twice.update(s);
+  CHECK(kane::express<N>(twice, ev_twice)[0] == Approx(2 * std::cos(s.q[0])));
+  CHECK(std::isnan(kane::express<N>(3.0 * e<B1, 1>, ev_twice)[0]));
 }
 
 TEST_CASE("kinematics: the end point of a 6-revolute arm against SymPy") {

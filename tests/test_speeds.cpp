@@ -476,7 +476,7 @@ TEST_CASE("speeds: partial velocities and constraints need only the pose level")
       kane::reads<kane::partials_of(kane::velocity<DN, Centre5>()), kane::partials_of(v_contact)>;
   static_assert(partials::needed == kane::level::pose &&
                 kane::reads<kane::velocity<DN, Centre5>()>::needed == kane::level::velocity);
-  using EvFor = kane::evaluator_for<St5, partials, disc5_speeds>;
+  using EvFor = kane::evaluator_for<St5, partials, disc5_speeds>::evaluator_type;
   static_assert(std::is_same_v<EvFor::closure, EvPose::closure>);  // N, Y, L: not R
   for (const auto& c : sympy_speeds::disc) {
     St5 s;

@@ -12,12 +12,15 @@ constexpr auto w6 = kane::angular_velocity<N, B6>();
 constexpr auto v_end = kane::velocity<N, End>();
 constexpr auto alpha6 = kane::angular_acceleration<N, B6>();
 constexpr auto a_end = kane::acceleration<N, End>();
-// Each evaluator holds what its quantities read (kane::evaluator_for): Q2 to Q4 read nothing of
-// B6 but its angular velocity and acceleration (one edge below B5) and e_B6,1 = e_B5,1, so they
-// hold B1 .. B5 and q6 is not turned; the Jacobian's columns need the pose level only.
+// Each evaluator holds the values its rows read (kane::evaluator_for): update runs the outward pass
+// over the frames they read, B1 .. B6 for the pose and B1 .. B5 for the rest (B6 is one edge
+// below B5 and e_B6,1 = e_B5,1), and keeps only the values.
 using pose_reads = kane::reads<r_end, kane::e<B6, 1>, kane::e<B6, 2>, kane::e<B6, 3>>;
 using velocity_reads = kane::reads<w6, v_end>;
+using jacobian_reads = kane::reads<kane::partials_of(w6), kane::partials_of(v_end)>;
 using acceleration_reads = kane::reads<alpha6, a_end>;
+using all_reads = kane::reads<r_end, kane::e<B6, 1>, kane::e<B6, 2>, kane::e<B6, 3>, w6, v_end,
+                              kane::partials_of(w6), kane::partials_of(v_end), alpha6, a_end>;
 
 template <class V>
 void store(const V& v, double* out) {
@@ -25,7 +28,9 @@ void store(const V& v, double* out) {
 }
 template <class Ev>
 void q1(const Ev& ev, arm6::output& out) {
-  Eigen::Map<Eigen::Matrix3d>(out.R) = ev.template axes<B6>();
+  store(kane::express<N>(kane::e<B6, 1>, ev), out.R);
+  store(kane::express<N>(kane::e<B6, 2>, ev), out.R + 3);
+  store(kane::express<N>(kane::e<B6, 3>, ev), out.R + 6);
   store(kane::express<N>(r_end, ev), out.p);
 }
 template <class Ev>
@@ -44,13 +49,12 @@ void q4(const Ev& ev, arm6::output& out) {
   store(kane::express<N>(alpha6, ev), out.alpha);
   store(kane::express<N>(a_end, ev), out.a);
 }
-using all_reads = kane::reads<r_end, kane::e<B6, 2>, w6, v_end, alpha6, a_end>;
 // What a controller keeps across calls: its state and evaluators, updated at each call.
 struct kept {
   state s;
   kane::evaluator_for<state, pose_reads> pose;
   kane::evaluator_for<state, velocity_reads> velocity;
-  kane::evaluator<state, velocity_reads::frames, kane::level::pose> jacobian;
+  kane::evaluator_for<state, jacobian_reads> jacobian;
   kane::evaluator_for<state, acceleration_reads> acceleration;
   kane::evaluator_for<state, all_reads> every;
 } held;
@@ -74,7 +78,7 @@ void kane_q2(const input& in, output& out) {
 }
 void kane_q3(const input& in, output& out) {
   state s;
-  kane::evaluator<state, velocity_reads::frames, kane::level::pose> ev_jacobian;
+  kane::evaluator_for<state, jacobian_reads> ev_jacobian;
   s.q = in.q;
   ev_jacobian.update(s);
   q3(ev_jacobian, out);

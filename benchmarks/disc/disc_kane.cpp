@@ -15,7 +15,8 @@ void disc::kane_partials(const input& in, output& out) {
   s.u = in.u;
   s.p = {in.r};
   constexpr auto v5 = kane::velocity<N, Centre5>();
-  kane::evaluator_for<state, kane::reads<kane::partials_of(v5), kane::partials_of(v_below)>, speeds5> ev;
+  using partials = kane::reads<kane::partials_of(v5), kane::partials_of(v_below)>;
+  kane::evaluator_for<state, partials, speeds5>::evaluator_type ev;
   ev.update(s);
   const auto sol = kane::solve_constraints<rolling>(ev);
   const auto V = kane::nonholonomic_partial_velocities<N, rolling>(v5, ev, sol);

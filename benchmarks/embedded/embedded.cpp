@@ -41,9 +41,8 @@ extern "C" int disc_step(const real* q, const real* u, real radius, real* out) {
   for (int i = 0; i < 5; ++i) s.q[i] = q[i], s.u[i] = u[i];
   s.p[0] = radius;
   constexpr auto v = kane::velocity<disc::N, disc::Centre5>();
-  kane::evaluator_for<decltype(s), kane::reads<kane::partials_of(v), kane::partials_of(disc::v_below)>,
-                      disc::speeds5>
-      ev;
+  using partials = kane::reads<kane::partials_of(v), kane::partials_of(disc::v_below)>;
+  kane::evaluator_for<decltype(s), partials, disc::speeds5>::evaluator_type ev;
   ev.update(s);
   const auto sol = kane::solve_constraints<disc::rolling>(ev);
   const auto V = kane::nonholonomic_partial_velocities<disc::N, disc::rolling>(v, ev, sol);

@@ -6,6 +6,7 @@
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/evaluator.hpp"
 #include "kane/evaluation/evaluator_for.hpp"
+#include "kane/evaluation/expression_reads.hpp"
 #include "kane/evaluation/kinematic_equations.hpp"
 #include "kane/evaluation/nonholonomic_tables.hpp"
 #include "kane/evaluation/outward_pass.hpp"

@@ -30,6 +30,8 @@
 // case third_derivative_in_state: kane: a state holds q, q' and q'' only
 // case reads_only_root: kane: these expressions read no frame but a root. hold one with kane::evaluator<State, kane::frames<F>>
 // case partials_of_frame: kane: partials_of takes an expression linear in the speeds. for a frame pass its angular velocity
+// case read_not_held: evaluator_for_holds_the_values_of_its_reads_only<kane::unit<A, 2> ?>, .*add_it_to_kane_reads_or_use_kane_evaluator
+// case read_in_other_frame: evaluator_for_holds_its_reads_in_the_root_frame<A, N>, .*express_it_in_the_root_or_use_kane_evaluator<N>
 #include <kane/kane.hpp>
 
 using q1 = kane::coordinate<1>;
@@ -209,14 +211,23 @@ double use() {
   kane::evaluator_for<St, kane::reads<kane::e<A, 1>>> ev_for;
 #endif
   ev_for.update(s);
-  x += kane::express<N>(kane::e<N, 1>, ev_for)[0];
+#ifdef KANE_CASE_read_not_held
+  x += kane::express<N>(kane::e<A, 2>, ev_for)[0];
+#else
+  x += kane::express<N>(kane::e<A, 1>, ev_for)[0];
+#endif
+#ifdef KANE_CASE_read_in_other_frame
+  x += kane::express<A>(kane::e<A, 1>, ev_for)[0];
+#else
+  x += kane::express<N>(kane::e<A, 1>, ev_for)[1];
+#endif
 #ifdef KANE_CASE_partials_of_frame
   kane::evaluator_for<St, kane::reads<kane::partials_of(B{})>> ev_partials;
 #else
   kane::evaluator_for<St, kane::reads<kane::partials_of(angular_velocity<N, B>())>> ev_partials;
 #endif
   ev_partials.update(s);
-  x += kane::express<N>(kane::e<A, 1>, ev_partials)[0];
+  x += kane::partial_velocities<N>(angular_velocity<N, B>(), ev_partials)(0, 0);
 #ifdef KANE_CASE_third_derivative_in_state
   x += s[kane::dt(kane::dt(kane::dt(kane::q<1>)))];
 #else

@@ -120,6 +120,11 @@ struct analytical_derivatives_need_a_tree_of_simple_rotations_with_u_equal_to_q_
 // ... and loads of steady components in a frame fixed in the body they act on.
 template <class Load>
 struct analytical_derivatives_need_loads_fixed_in_their_bodies;
+// kane::evaluator_for holds the values of its reads, in the components of its tree's root.
+template <class Expression>
+struct evaluator_for_holds_the_values_of_its_reads_only;
+template <class Frame, class Root>
+struct evaluator_for_holds_its_reads_in_the_root_frame;
 }  // namespace error
 
 // The fixes that are calls or declarations, named beside their rule.
@@ -138,6 +143,11 @@ template <std::size_t I>
 struct declare_kane_state_with_nq_at_least;
 // kane::linearize differentiates any system, by jets.
 struct call_kane_linearize;
+// kane::reads<..., x>: the evaluator_for then holds x; kane::evaluator holds the frames for any x.
+struct add_it_to_kane_reads_or_use_kane_evaluator;
+// kane::express<Root>(x, ev), or kane::evaluator for other frames.
+template <class Root>
+struct express_it_in_the_root_or_use_kane_evaluator;
 }  // namespace fix
 
 namespace detail {

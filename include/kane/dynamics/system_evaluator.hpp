@@ -21,7 +21,7 @@
 #include "kane/dynamics/detail/system_rules.hpp"
 #include "kane/dynamics/loads.hpp"
 #include "kane/evaluation/evaluator.hpp"
-#include "kane/evaluation/evaluator_for.hpp"
+#include "kane/evaluation/expression_reads.hpp"
 #include "kane/evaluation/state_indices.hpp"
 #include "kane/frames/state.hpp"
 

@@ -99,18 +99,21 @@ KANE_ALWAYS_INLINE void set_columns(T& t, const V&... v) {
 // the expression dx/du_r + sum_s dx/dq_s' W_sr, t is x_0 + sum_s dx/dq_s' X_s,
 // with the zeros and ones of W and X known at compile time (speeds.hpp). T by column for a caller's
 // copy (the entry points below), in blocks for Kane's sums.
+template <class A, bool ByColumn, class X, class Ev, class T>
+KANE_ALWAYS_INLINE void table_into(const X& x, const Ev& ev, T& t) {
+  [&]<std::size_t... R>(std::index_sequence<R...>) KANE_ALWAYS_INLINE_LAMBDA {
+    set_columns<ByColumn>(t, numbers<A>(column_of<speeds_of<Ev>, R + 1>(x), ev)...);
+  }
+  (std::make_index_sequence<speeds_of<Ev>::n>{});
+}
 template <class A, linear_part Parts, bool ByColumn = false, class X, class Ev>
 KANE_ALWAYS_INLINE auto linear_parts_in(const X& x, const Ev& ev) {
   using Sp = speeds_of<Ev>;
   constexpr int rows = ScalarExpr<X> ? 1 : 3;
   Eigen::Matrix<typename Ev::scalar, rows, int(Sp::n)> t;
   Eigen::Matrix<typename Ev::scalar, rows, 1> rest;
-  [&]<std::size_t... R>(std::index_sequence<R...>) {
-    if constexpr (has(Parts, linear_part::table))
-      set_columns<ByColumn>(t, numbers<A>(column_of<Sp, R + 1>(x), ev)...);
-    if constexpr (has(Parts, linear_part::remainder)) rest = numbers<A>(remainder_of<Sp>(x), ev);
-  }
-  (std::make_index_sequence<Sp::n>{});
+  if constexpr (has(Parts, linear_part::table)) table_into<A, ByColumn>(x, ev, t);
+  if constexpr (has(Parts, linear_part::remainder)) rest = numbers<A>(remainder_of<Sp>(x), ev);
   if constexpr (Parts == linear_part::both)
     return linear_result<typename Ev::scalar, rows, int(Sp::n)>{t, rest};
   else if constexpr (has(Parts, linear_part::table))
