@@ -224,6 +224,8 @@ class evaluator<St, frames<Fs...>, Level, Given>
   template <detail::reading Read, class Reads = everything>
   KANE_ALWAYS_INLINE void pass_at(const St& s) {
     constexpr bool Rates = Read == detail::reading::whole_state;
+    // sin and cos first: nothing computed before the calls lives across them
+    const auto tr = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
     detail::assign(st_.q, s.q), detail::assign(st_.p, s.p), st_.t = s.t, detail::assign(st_.r, s.r);
     updated_ = true;
     const scalar norm_residue = detail::normalise(st_, closure{});  // Euler parameters of unit norm
@@ -239,7 +241,6 @@ class evaluator<St, frames<Fs...>, Level, Given>
       detail::assign(st_.u, s.u), detail::assign_zero(st_.ud);
     else if constexpr (Rates)
       detail::assign(st_.u, s.u), detail::assign(st_.ud, s.ud);
-    const auto tr = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
     constexpr bool u = Rates && solves && velocity, ud = u && acceleration && !rests<Reads>;  // u' of s
     scalar residue = norm_residue + detail::state_residue<detail::reads_in_blocks<Reads>, u, ud>(s);
     if constexpr (Rates && !solves) residue += rates_residue<ud_of<Reads>>(s);
