@@ -224,8 +224,7 @@ class evaluator<St, frames<Fs...>, Level, Given>
   template <detail::reading Read, class Reads = everything>
   KANE_ALWAYS_INLINE void pass_at(const St& s) {
     constexpr bool Rates = Read == detail::reading::whole_state;
-    // sin and cos first: nothing computed before the calls lives across them
-    const auto tr = detail::make_trig<pass_type::cached>(s);  // kept local: the pass reads it from registers
+    const auto tr = detail::make_trig<pass_type::cached>(s);  // first: nothing lives across the calls
     detail::assign(st_.q, s.q), detail::assign(st_.p, s.p), st_.t = s.t, detail::assign(st_.r, s.r);
     updated_ = true;
     const scalar norm_residue = detail::normalise(st_, closure{});  // Euler parameters of unit norm
