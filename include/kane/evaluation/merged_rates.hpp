@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstring>
 #include <type_traits>
+#include <utility>
 
 #include "kane/detail/inline.hpp"
 #include "kane/detail/wide_stores.hpp"
@@ -22,6 +23,12 @@ KANE_ALWAYS_INLINE bool merged_rates(std::array<S, NQ>& out, const std::array<S,
     out = d;
     return false;
   } else if constexpr (std::is_same_v<S, double> && NQ >= 2) {  // in blocks: no branch per number
+    bool u_zero = true;
+    for (std::size_t i = 0; i < NQ; ++i) u_zero = u_zero && u[i] == 0.0;
+    if (__builtin_constant_p(u_zero) && u_zero) {  // u known to be 0 (a state just filled): d
+      out = d;
+      return false;
+    }
     using wide = typename block_of<widest_store>::type;
     using pair = typename block_of<2>::type;
     constexpr std::size_t w = widest_store, wide_end = NQ / w * w,
@@ -30,9 +37,11 @@ KANE_ALWAYS_INLINE bool merged_rates(std::array<S, NQ>& out, const std::array<S,
     decltype(pair{} != pair{}) any_pair{};
     const auto merge = [&](auto block, std::size_t k, auto& any) KANE_ALWAYS_INLINE_LAMBDA {
       using B = decltype(block);
-      B x, y;
-      std::memcpy(&x, d.data() + k, sizeof x);
-      std::memcpy(&y, u.data() + k, sizeof y);
+      B x, y;  // number by number, unrolled: known numbers of d and u stay known
+      [&]<std::size_t... I>(std::index_sequence<I...>) KANE_ALWAYS_INLINE_LAMBDA {
+        ((x[I] = d[k + I], y[I] = u[k + I]), ...);
+      }
+      (std::make_index_sequence<sizeof x / sizeof x[0]>{});
       const auto given = x != B{}, other = y != B{};
       const B r = (given | ~other) ? x : y;  // d where u is 0 (-0 keeps its sign)
       std::memcpy(out.data() + k, &r, sizeof r);
