@@ -179,11 +179,11 @@ struct is_evaluator_for<evaluator_for<St, Rd, Sp>> : std::true_type {};
 // The rules of a read from an evaluator_for: V held, in the root's components.
 template <class A, class V, class E>
 inline constexpr bool held_read =
-    check < E::template place<V><E::count, error::evaluator_for_holds_the_values_of_its_reads_only<V>,
-                                 fix::add_it_to_kane_reads_or_use_kane_evaluator>&&
-                check<std::is_same_v<A, typename E::root>,
-                      error::evaluator_for_holds_its_reads_in_the_root_frame<A, typename E::root>,
-                      fix::express_it_in_the_root_or_use_kane_evaluator<typename E::root>>;
+    check<(E::template place<V> < E::count), error::evaluator_for_holds_the_values_of_its_reads_only<V>,
+          fix::add_it_to_kane_reads_or_use_kane_evaluator>&&
+        check<std::is_same_v<A, typename E::root>,
+              error::evaluator_for_holds_its_reads_in_the_root_frame<A, typename E::root>,
+              fix::express_it_in_the_root_or_use_kane_evaluator<typename E::root>>;
 }  // namespace detail
 
 // ^R v for a read v of ev (R: the root).
