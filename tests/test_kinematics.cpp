@@ -239,6 +239,46 @@ TEST_CASE("kinematics: evaluator_for holds the values of its reads, as the evalu
   CHECK(std::isnan(kane::express<N>(3.0 * e<B1, 1>, ev_twice)[0]));
 }
 
+TEST_CASE("kinematics: without a speed set q' comes from s.qd or s.u, number by number") {
+  // six coordinates (a block of four and a pair, or three pairs) and three (a pair and one)
+  const auto check = []<std::size_t NQ>(auto frame, std::integral_constant<std::size_t, NQ>) {
+    using F = decltype(frame);
+    using St = kane::state<double, NQ>;
+    const auto w = kane::angular_velocity<N, F>();
+    St by_qd, by_u, mixed;
+    for (std::size_t i = 0; i < NQ; ++i) {
+      const double q = 0.1 * double(i + 1), rate = 0.3 - 0.2 * double(i);
+      by_qd.q[i] = by_u.q[i] = mixed.q[i] = q;
+      by_qd.qd[i] = rate, by_u.u[i] = rate;
+      (i % 2 ? mixed.qd[i] : mixed.u[i]) = rate;
+    }
+    kane::evaluator<St, kane::frames<F>, kane::level::velocity> ev;
+    ev.update(by_qd);
+    const auto expected = kane::express<N>(w, ev);
+    REQUIRE(ev.status() == kane::solve_status::ok);
+    for (const St& s : {by_u, mixed}) {
+      ev.update(s);
+      CHECK(ev.status() == kane::solve_status::ok);
+      CHECK(kane::express<N>(w, ev) == expected);
+    }
+    for (std::size_t i = 0; i < NQ; ++i) {  // a second, different number in one coordinate
+      St s = by_qd;
+      s.u[i] = s.qd[i] + 1;
+      ev.update(s);
+      CHECK(ev.status() == kane::solve_status::conflicting_rates);
+      s.u[i] = s.qd[i];  // the same number twice is no conflict
+      ev.update(s);
+      CHECK(ev.status() == kane::solve_status::ok);
+    }
+    St s = by_qd;
+    s.qd[0] = -0.0;  // -0 in s.qd and 0 in s.u: s.qd, with its sign
+    ev.update(s);
+    CHECK(std::signbit(ev.template coordinate_value<1, 1>()));
+  };
+  check(B6{}, std::integral_constant<std::size_t, 6>{});
+  check(C{}, std::integral_constant<std::size_t, 3>{});
+}
+
 TEST_CASE("kinematics: the end point of a 6-revolute arm against SymPy") {
   using St = kane::state<double, 6>;
   for (const auto& c : sympy_kin::arm) {
