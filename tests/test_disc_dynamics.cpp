@@ -2,8 +2,11 @@
 // disc of examples/models/disc.hpp against SymPy's KanesMethod (tests/data/gen_disc_dynamics.py)
 // and the closed-form condition of steady turning; the disc in three coordinates, its centre
 // known by its velocity (point_by_velocity).
+#include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 
 #include "../examples/models/disc.hpp"
 #include "data/sympy_disc_dynamics.hpp"
@@ -220,4 +223,56 @@ TEST_CASE("dynamics: kane::constrained_motion names x's entries and gives the ev
   REQUIRE(ev.status() == kane::solve_status::ok);
   for (std::size_t i = 0; i < 5; ++i) CHECK(ev.state().u[i] == Approx(at_x.u[i]).epsilon(1e-15));
   CHECK(f.evaluator(Eigen::VectorXd::Zero(5), 0.0).status() == kane::solve_status::not_finite);
+}
+
+TEST_CASE("dynamics: kane::constrained_motion checks once a call: x and the state, the rank, dx/dt") {
+  disc_state s;
+  for (int i = 0; i < 3; ++i) s.p[i] = sympy_disc_dynamics::p[i];
+  kane::constrained_motion<dd::system, dd::rolling, disc_evaluator> f(s);
+  const std::array<double, 8> good{0.2, 0.35, 0.1, 0.5, -0.3, 0.4, 5.0, 1.1};
+  std::array<double, 8> dx{};
+  const auto all_nan = [&] {
+    return std::all_of(dx.begin(), dx.end(), [](double v) { return std::isnan(v); });
+  };
+  f(good, dx, 0.0);
+  REQUIRE(f.status() == kane::solve_status::ok);
+  // NaN or inf at any entry of x, q3..q5 included, which no rate reads
+  for (const double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    for (std::size_t i = 0; i < 8; ++i) {
+      auto x = good;
+      x[i] = bad;
+      f(x, dx, 0.0);
+      CHECK(f.status() == kane::solve_status::not_finite);
+      CHECK(all_nan());
+    }
+  // finite speeds whose products overflow: u_ind' is not finite, and so is none of dx/dt
+  auto fast = good;
+  fast[5] = fast[6] = fast[7] = 1e200;
+  f(fast, dx, 0.0);
+  CHECK(f.status() == kane::solve_status::not_finite);
+  CHECK(all_nan());
+  // a mass that is not finite
+  disc_state heavy = s;
+  heavy.p[1] = std::numeric_limits<double>::infinity();
+  kane::constrained_motion<dd::system, dd::rolling, disc_evaluator> g(heavy);
+  g(good, dx, 0.0);
+  CHECK(g.status() == kane::solve_status::not_finite);
+  CHECK(all_nan());
+  // C_dep = [1 0; cos q1 sin q1] fails the rank rule at q1 = 0
+  using kane::dot;
+  using kane::e;
+  using turning = kane::nonholonomic<dd::speeds5, kane::dependent<4, 5>, dot(dd::v_below, e<dd::N, 1>),
+                                     kane::cos(kane::q<1>) * dot(dd::v_below, e<dd::N, 1>) +
+                                         kane::sin(kane::q<1>) * dot(dd::v_below, e<dd::N, 2>)>;
+  kane::constrained_motion<dd::system, turning, disc_evaluator> h(s);
+  std::array<double, 8> rolling{};
+  f(good, rolling, 0.0);
+  h(good, dx, 0.0);  // the same constraints where sin q1 is not 0
+  CHECK(h.status() == kane::solve_status::ok);
+  for (std::size_t i = 0; i < 8; ++i) CHECK(dx[i] == Approx(rolling[i]).epsilon(1e-13));
+  auto straight = good;
+  straight[0] = 0.0;
+  h(straight, dx, 0.0);
+  CHECK(h.status() == kane::solve_status::singular);
+  CHECK(all_nan());
 }

@@ -9,8 +9,10 @@
 //   rhs.project<H>(x);                         // closes holonomic constraints H between steps
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 
 #include "kane/dynamics/motion.hpp"
 #include "kane/dynamics/reduced_equations.hpp"
@@ -22,19 +24,35 @@
 namespace kane {
 
 namespace detail {
+// The place of v in a, or N
+template <class T, std::size_t N>
+constexpr std::size_t place_in(const std::array<T, N>& a, std::size_t v) {
+  std::size_t i = 0;
+  while (i < N && a[i] != v) ++i;
+  return i;
+}
 // s at the independent speeds x[nq + k]: u_dep = A u_ind + B from the constraints NH at s's q and t,
-// and ev updated to s (pose, then speeds); the constraints' solution.
+// and ev updated to s (pose, then speeds); the constraints' solution. Reads: those of
+// update_speeds_for (checked_at_end: A, B and q' unchecked, for a caller that checks its results).
 template <class NH, class Reads = void, class Ev, class St, class X>
 auto update_at_independent_speeds(Ev& ev, St& s, const X& x) {
   constexpr std::size_t nq = St::nq;
-  for (std::size_t k = 0; k < NH::p; ++k) s.u[NH::independents[k] - 1] = x[nq + k];
   ev.update_pose(s);  // A and B depend on q and t alone
-  const auto sol = solve_constraints<NH>(ev);
-  for (std::size_t j = 0; j < NH::m; ++j) {
-    typename St::scalar u = sol.B(Eigen::Index(j));
-    for (std::size_t k = 0; k < NH::p; ++k) u += sol.A(Eigen::Index(j), Eigen::Index(k)) * x[nq + k];
-    s.u[NH::dependents[j] - 1] = u;
-  }
+  constexpr checking check = std::is_void_v<Reads> ? checking::each : checking_of<Reads>;
+  constexpr bool rest = requires { Reads::rest; };  // u' = 0: C and c0 unread
+  const auto sol = solve_constraints_at<NH, check, !rest>(ev);
+  std::array<typename St::scalar, NH::m> dep;
+  static_for<NH::m>([&](auto j) {  // unrolled: a loop at -O2
+    dep[j] = sol.B(Eigen::Index(j));
+    static_for<NH::p>([&](auto k) { dep[j] += sol.A(Eigen::Index(j), Eigen::Index(k)) * x[nq + k]; });
+  });
+  store_in_blocks<NH::n>(s.u.data(), [&](auto i) KANE_ALWAYS_INLINE_LAMBDA {  // the update copies u whole
+    constexpr std::size_t k = place_in(NH::independents, i + 1), j = place_in(NH::dependents, i + 1);
+    if constexpr (k < NH::p)
+      return typename St::scalar(x[nq + k]);
+    else
+      return dep[j];
+  });
   if constexpr (std::is_void_v<Reads>)
     ev.update_speeds(s);
   else
@@ -132,20 +150,16 @@ class constrained_motion
       status_ = status_of<scalar>(solve_status::wrong_size);
       return;
     }
-    for (std::size_t i = 0; i < nq; ++i) s_.q[i] = x[i];
+    detail::copy_wide<nq>(s_.q.data(), x, 0);
     s_.t = time;
     Ev ev;
-    const auto sol = detail::update_at_independent_speeds<NH, detail::every_read<Ev>>(
+    constexpr auto at_end = detail::checking::at_end;  // one check: inputs, ranks, then q' and u_ind'
+    const auto sol = detail::update_at_independent_speeds<NH, detail::checked_at_end<detail::every_read<Ev>>>(
         ev, s_, x);  // the constraints' derivatives read every alpha and q''
-    const auto [ud, status] = detail::speed_derivatives_at<lane_traits<scalar>::width == 1>(
-        detail::reduced_mass_matrix_and_forcing_at<Sys, NH, detail::rates::at_rest>(ev, sol).reduced);
-    if constexpr (lane_traits<scalar>::width > 1)
-      status_ = detail::write_lane_rates<nq, scalar>(dxdt, ev.coordinate_rates(), ud, status);
-    else {
-      status_ = status;
-      detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), status);
-      for (std::size_t k = 0; k < p; ++k) dxdt[nq + k] = ud(Eigen::Index(k));
-    }
+    std::array<scalar, NH::m> b_dep;
+    const auto [ud, status] = detail::speed_derivatives_at<false>(
+        detail::reduced_equations_at<Sys, NH, detail::rates::at_rest, at_end>(ev, sol, b_dep));
+    status_ = detail::write_checked_rates<nq, at_end, scalar>(dxdt, ev.coordinate_rates(), ud, status);
   }
 };
 

@@ -26,9 +26,9 @@
 namespace kane {
 
 namespace detail {
-// u' = M^-1 f; rates::at_rest or zero: the state's u' is 0 (zero: as in motion.hpp). Lanes with
-// Finish false: u' unchecked, as speed_derivatives_at.
-template <class Sys, rates Rates, class Ev, bool Finish = true>
+// u' = M^-1 f; rates::at_rest or zero: the state's u' is 0 (zero: as in motion.hpp). Finish false:
+// u' unchecked, as speed_derivatives_at (checking::at_end: f unchecked too).
+template <class Sys, rates Rates, class Ev, bool Finish = true, checking Check = checking::each>
 forward_result<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
   using S = typename Ev::scalar;
   constexpr std::size_t n = Ev::nu;
@@ -39,19 +39,19 @@ forward_result<typename Ev::scalar, Ev::nu> forward_at(const Ev& ev) {
     const body_frames<JF, Ev> bf(ev);
     status_of<S> status = ev.status();
     fail_unless(status, articulated_accelerations<JF, Sys>(bf, ev, ud), solve_status::singular);
-    if constexpr (lane_traits<S>::width == 1 || Finish) status = finished(ud, status);
+    if constexpr (Finish) status = finished(ud, status);
     return {ud, status};
   } else if constexpr (known_masses<Sys, Ev>()) {
     constexpr auto inverse =
         known_inverse<Sys, typename Ev::root, speeds_of<Ev>>;  // M^-1, a table of numbers
     if constexpr (!inverse.known)
-      return speed_derivatives_at<Finish>(mass_matrix_and_forcing_at<Sys, Rates>(ev));  // singular
+      return speed_derivatives_at<Finish>(mass_matrix_and_forcing_at<Sys, Rates, Check>(ev));  // singular
     else {
       const auto e = equations_along<Sys, Rates, parts::forcing>(ev, all_speeds<n>{});
       return forward_result<S, n>{times_known<inverse>(e.f), e.status};  // finish_forward checks it
     }
   } else
-    return speed_derivatives_at<Finish>(mass_matrix_and_forcing_at<Sys, Rates>(ev));
+    return speed_derivatives_at<Finish>(mass_matrix_and_forcing_at<Sys, Rates, Check>(ev));
 }
 // u' of forward_at checked finite by the caller, in place (a copy of the result would read whole
 // what was written in blocks): where M^-1 is a table of numbers.

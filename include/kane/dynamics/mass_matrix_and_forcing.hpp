@@ -38,8 +38,9 @@ namespace kane {
 
 namespace detail {
 // M by composite bodies and f by inward sums (crba.hpp, rnea.hpp), written in place into Out:
-// equations_of_motion, or mass_matrix_only (M alone).
-template <class Sys, class Out, class Ev>
+// equations_of_motion, or mass_matrix_only (M alone). checking::at_end: f unchecked (the caller
+// checks M^-1 f).
+template <class Sys, class Out, checking Check = checking::each, class Ev>
 Out recursive_equations(const Ev& ev) {
   using JF = joint_form_of<Sys, Ev>;
   static_assert(detail::system_checked<Sys, speeds_of<Ev>>(typename Sys::items{}));
@@ -50,19 +51,19 @@ Out recursive_equations(const Ev& ev) {
   auto finite = finite_diagonal(out.M);
   if constexpr (requires { out.f; }) {
     joint_forces<rates::at_rest, JF, Sys, sign::minus>(bf, ev, out.f);
-    finite = finite && all_finite_matrix(out.f);
+    if constexpr (Check == checking::each) finite = finite && all_finite_matrix(out.f);
   }
   fail_unless(out.status, finite, solve_status::not_finite);
   return out;
 }
-template <class Sys, rates Rates, class Ev>
+template <class Sys, rates Rates, checking Check = checking::each, class Ev>
 equations_of_motion<typename Ev::scalar, Ev::nu> mass_matrix_and_forcing_at(const Ev& ev) {
   if constexpr (!admitted<Sys, speeds_of<Ev>>())
     return {};
   else if constexpr (recursive_form<Sys, Ev>)
-    return recursive_equations<Sys, equations_of_motion<typename Ev::scalar, Ev::nu>>(ev);
+    return recursive_equations<Sys, equations_of_motion<typename Ev::scalar, Ev::nu>, Check>(ev);
   else
-    return equations_along<Sys, Rates>(ev, all_speeds<Ev::nu>{});
+    return equations_along<Sys, Rates, parts::both, Check>(ev, all_speeds<Ev::nu>{});
 }
 }  // namespace detail
 
@@ -93,8 +94,8 @@ mass_matrix_only<typename Ev::scalar, Ev::nu> mass_matrix(const Ev& ev) {
 
 namespace detail {
 // speed_derivatives in the caller's body, with no branch around a store (after it, motion's local
-// evaluator's unread stores stay dead: motion.hpp). Lanes with Finish false: u' unchecked, for a
-// caller that checks and spoils it with its other results (write_lane_rates).
+// evaluator's unread stores stay dead: motion.hpp). Finish false: u' unchecked, for a caller that
+// checks and spoils it with its other results (write_checked_rates).
 template <bool Finish = true, class S, std::size_t N>
 forward_result<S, N> speed_derivatives_at(const equations_of_motion<S, N>& e) {
   Eigen::Matrix<S, int(N), 1> ud = Eigen::Matrix<S, int(N), 1>::Constant(std::numeric_limits<S>::quiet_NaN());
@@ -102,7 +103,7 @@ forward_result<S, N> speed_derivatives_at(const equations_of_motion<S, N>& e) {
   const auto positive = solve_positive_definite(e.M, e.f, ud);
   status_of<S> status = e.status;
   fail_unless(status, positive, solve_status::singular);
-  if constexpr (lane_traits<S>::width > 1)
+  if constexpr (lane_traits<S>::width > 1 || !Finish)
     return {ud, Finish ? finished(ud, status) : status};
   else {
     fail_unless(status, detail::all_finite_numbers(ud), solve_status::not_finite);

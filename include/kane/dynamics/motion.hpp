@@ -98,19 +98,14 @@ class motion
     detail::copy_wide<nu>(u.data(), x, nq);
     s_.t = time;
     Ev ev;
+    constexpr auto at_end = detail::checking::at_end;  // one check: inputs, ranks, then q' and u'
+    using reads = detail::reads_of_copy<detail::equation_reads<Sys, Ev, true>, scalar, X>;
     if constexpr (!detail::admitted<Sys, detail::speeds_of<Ev>>())
       return;
     else
-      ev.template update_for<detail::reads_of_copy<detail::equation_reads<Sys, Ev, true>, scalar, X>>(s_);
-    auto r = detail::forward_at<Sys, detail::rates::zero, Ev, lane_traits<scalar>::width == 1>(ev);
-    if constexpr (lane_traits<scalar>::width > 1) {
-      status_ = detail::write_lane_rates<nq, scalar>(dxdt, ev.coordinate_rates(), r.ud, r.status);
-    } else {
-      detail::finish_forward<Sys, Ev>(r);
-      status_ = r.status;
-      detail::write_rates<nq, scalar>(dxdt, ev.coordinate_rates(), r.status);
-      for (std::size_t i = 0; i < nu; ++i) dxdt[nq + i] = r.ud(Eigen::Index(i));
-    }
+      ev.template update_for<detail::checked_at_end<reads>>(s_);
+    const auto r = detail::forward_at<Sys, detail::rates::zero, Ev, false, at_end>(ev);
+    status_ = detail::write_checked_rates<nq, at_end, scalar>(dxdt, ev.coordinate_rates(), r.ud, r.status);
   }
 };
 

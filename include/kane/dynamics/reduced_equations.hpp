@@ -137,7 +137,7 @@ Eigen::Matrix<typename Ev::scalar, int(NH::m), 1> constraint_rates_at_rest(const
 }
 // b_dep of u_dep' = A u_ind' + b_dep: -C_dep^-1 (C' u + c0'), with the factors of C_dep that
 // solve_constraints found.
-template <class NH, rates Rates, class Ev, class Sol>
+template <class NH, rates Rates, checking Check = checking::each, class Ev, class Sol>
 status_of<typename Ev::scalar> dependent_rates_at_rest(const Ev& ev, const Sol& sol,
                                                        std::array<typename Ev::scalar, NH::m>& b_dep) {
   using S = typename Ev::scalar;
@@ -147,23 +147,32 @@ status_of<typename Ev::scalar> dependent_rates_at_rest(const Ev& ev, const Sol& 
   using Dep = detail::dense_right_side<detail::constraint_system<NH>>;
   detail::table<S, m, 1> right, bd;
   for (std::size_t k = 0; k < m; ++k) right[k][0] = rest(Eigen::Index(k));
-  const auto solved = detail::substitute_structured<Dep>(sol.dependent.m, sol.dependent.factors, right, bd);
+  const auto solved = detail::substitute_structured<Dep, known_entries::written, Check>(
+      sol.dependent.m, sol.dependent.factors, right, bd);
   for (std::size_t j = 0; j < m; ++j) b_dep[j] = -bd[j][0];
   return solved;
+}
+// M~ u_ind' = f~ alone (Check: checking::at_end for a caller that checks u_ind' and q'), b_dep into b_dep.
+template <class Sys, class NH, rates Rates, checking Check = checking::each, class Ev, class Sol>
+equations_of_motion<typename Ev::scalar, NH::p> reduced_equations_at(
+    const Ev& ev, const Sol& sol, std::array<typename Ev::scalar, NH::m>& b_dep) {
+  using S = typename Ev::scalar;
+  const auto solved = dependent_rates_at_rest<NH, Rates, Check>(ev, sol, b_dep);
+  auto out = equations_along<Sys, Rates, parts::both, Check>(ev, independent_speeds<NH, S>{sol.A, b_dep});
+  out.status = failed_first(sol.status, out.status);  // a failed solve first: it made u_dep NaN
+  detail::then(out.status, solved);
+  return out;
 }
 template <class Sys, class NH, rates Rates, class Ev, class Sol>
 reduced_equations<typename Ev::scalar, NH::n, NH::p> reduced_mass_matrix_and_forcing_at(const Ev& ev,
                                                                                         const Sol& sol) {
   using S = typename Ev::scalar;
   std::array<S, NH::m> b_dep;
-  const auto solved = dependent_rates_at_rest<NH, Rates>(ev, sol, b_dep);
   // built in place: a copy of the equations would read whole what was written number by number
-  reduced_equations<S, NH::n, NH::p> out{
-      equations_along<Sys, Rates>(ev, independent_speeds<NH, S>{sol.A, b_dep}),
-      speeds_of_independents<NH>(sol.A), Eigen::Matrix<S, int(NH::n), 1>::Zero()};
+  reduced_equations<S, NH::n, NH::p> out{reduced_equations_at<Sys, NH, Rates>(ev, sol, b_dep),
+                                         speeds_of_independents<NH>(sol.A),
+                                         Eigen::Matrix<S, int(NH::n), 1>::Zero()};
   for (std::size_t j = 0; j < NH::m; ++j) out.b(Eigen::Index(NH::dependents[j] - 1)) = b_dep[j];
-  detail::then(out.reduced.status, sol.status);
-  detail::then(out.reduced.status, solved);
   return out;
 }
 }  // namespace detail

@@ -176,8 +176,9 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
 
 // X = M^-1 R from the factors of M. Sys: static constexpr n, k, m (pattern n x n), r (n x k),
 // form (blocks_of(m)), x (solution_pattern). The zeros and ones of X are written unless the
-// caller keeps them (known_entries::left).
-template <class Sys, known_entries Known = known_entries::written, class S>
+// caller keeps them (known_entries::left). checking::at_end: X is not checked finite (the caller
+// checks what it computes from X).
+template <class Sys, known_entries Known = known_entries::written, checking C = checking::each, class S>
 KANE_ALWAYS_INLINE status_of<S> substitute_structured(const table<S, Sys::n, Sys::n>& m,
                                                       const structured_factors<S, Sys::n>& fac,
                                                       const table<S, Sys::n, Sys::k>& r,
@@ -246,10 +247,11 @@ KANE_ALWAYS_INLINE status_of<S> substitute_structured(const table<S, Sys::n, Sys
     }
   });
   S residue = -S(0);  // x - x is 0 for a finite x, NaN otherwise
-  static_for_inline<n * k>([&](auto cj) KANE_ALWAYS_INLINE_LAMBDA {
-    constexpr std::size_t c = cj / k, j = cj % k;
-    if constexpr (Sys::x[c][j] == entry::other) residue += x[c][j] - x[c][j];
-  });
+  if constexpr (C == checking::each)
+    static_for_inline<n * k>([&](auto cj) KANE_ALWAYS_INLINE_LAMBDA {
+      constexpr std::size_t c = cj / k, j = cj % k;
+      if constexpr (Sys::x[c][j] == entry::other) residue += x[c][j] - x[c][j];
+    });
   const auto status = checks<S>(fac.scale <= limits::max(), solve_status::not_finite, !fac.singular,
                                 solve_status::singular, residue == S(0), solve_status::not_finite);
   const auto spoil = nan_unless_rare<S>(ok_of<S>(status));

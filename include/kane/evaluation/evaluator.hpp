@@ -262,7 +262,7 @@ class evaluator<St, frames<Fs...>, Level, Given>
   template <class Reads = everything>
   KANE_ALWAYS_INLINE void rates_at(const St& s, const trig_type& tr) {
     if constexpr (velocity) {
-      this->solve_rates(s);
+      this->template solve_rates<detail::checking_of<Reads>>(s);
       this->template pass<detail::stages::velocity>(tr, *this);
     }
     if constexpr (acceleration) {

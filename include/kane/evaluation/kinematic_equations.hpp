@@ -188,15 +188,18 @@ class kinematic_equations {
       if constexpr (c == 0 && system::offset[r]) spoil(kde_x_[r]);
     });
   }
-  // q' (NaN if status_ is not ok; not_finite if q' = W u + X overflows).
+  // q' (NaN if status_ is not ok; not_finite if q' = W u + X overflows). checking::at_end: q' unchecked.
+  template <checking C = checking::each>
   KANE_ALWAYS_INLINE void solve_rates(const St& s) {
     if constexpr (direct) {  // u = q'
       for (std::size_t i = 0; i < nq; ++i) qd_[i] = s.u[i];
     } else {
       qd_ = apply<map::affine, nd>(s.u);
     }
-    fail_unless(status_, all_finite(qd_), solve_status::not_finite);
-    nan_where_failed<scalar>(status_, qd_);  // a branch for one state, as for q'': products measured slower
+    if constexpr (C == checking::each) {
+      fail_unless(status_, all_finite(qd_), solve_status::not_finite);
+      nan_where_failed<scalar>(status_, qd_);  // a branch for one state, as for q'': products measured slower
+    }
   }
   // (W v)_c (+ X_c) for v zero beyond its first Cols entries, skipping the zeros of W and X.
   template <std::size_t C, map Kind, std::size_t Cols, class V>
@@ -257,12 +260,14 @@ class kinematic_equations {
           qdd_[c] = nan;
       });
     }
-    auto finite = truth<scalar>(true);
-    static_for<nq>([&](auto c) {
-      if constexpr (Reads::qdd[c]) finite = finite & (qdd_[c] - qdd_[c] == scalar(0));
-    });
-    fail_unless(status_, finite, solve_status::not_finite);
-    nan_where_failed<scalar>(status_, qdd_);
+    if constexpr (checking_of<Reads> == checking::each) {
+      auto finite = truth<scalar>(true);
+      static_for<nq>([&](auto c) {
+        if constexpr (Reads::qdd[c]) finite = finite & (qdd_[c] - qdd_[c] == scalar(0));
+      });
+      fail_unless(status_, finite, solve_status::not_finite);
+      nan_where_failed<scalar>(status_, qdd_);
+    }
   }
 
   status_of<scalar> status_{};

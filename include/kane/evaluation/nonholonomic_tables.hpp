@@ -55,9 +55,12 @@ struct constraint_solution {
   detail::factored<S, M> dependent;  // the block of C of the dependent speeds: u_dep' reuses it
 };
 
-// u_dep = A u_ind + B at the evaluator's state.
-template <Nonholonomic NH, Evaluator Ev>
-KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
+namespace detail {
+// solve_constraints; checking::at_end: A and B neither checked finite nor made NaN (the caller checks
+// and spoils its results). Rows false: C and c0 left unwritten (for a caller at u' = 0, which reads
+// neither).
+template <class NH, checking Check, bool Rows = true, class Ev>
+KANE_ALWAYS_INLINE auto solve_constraints_at(const Ev& ev) {
   using S = typename Ev::scalar;
   using Sys = detail::constraint_system<NH>;
   static_assert(detail::same_speeds_v<Ev, NH>);
@@ -90,32 +93,44 @@ KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
   }
   (std::make_index_sequence<m * m>{}, std::make_index_sequence<m*(p + 1)>{});
   constraint_solution<S, m, p, NH> out;
-  detail::static_for<m * m>([&](auto kj) {
-    constexpr std::size_t k = kj / m, j = kj % m;
-    out.C(Eigen::Index(k), Eigen::Index(NH::dependents[j] - 1)) =
-        Sys::m[k][j] == detail::entry::one ? S(1) : dep[k][j];
-  });
-  detail::static_for<m*(p + 1)>([&](auto kj) {
-    constexpr std::size_t k = kj / (p + 1), j = kj % (p + 1);
-    const S c = Sys::r[k][j] == detail::entry::one ? S(1) : right[k][j];
-    if constexpr (j < p)
-      out.C(Eigen::Index(k), Eigen::Index(NH::independents[j] - 1)) = c;
-    else
-      out.c0(Eigen::Index(k)) = c;
-  });
+  if constexpr (Rows) {
+    detail::static_for<m * m>([&](auto kj) {
+      constexpr std::size_t k = kj / m, j = kj % m;
+      out.C(Eigen::Index(k), Eigen::Index(NH::dependents[j] - 1)) =
+          Sys::m[k][j] == detail::entry::one ? S(1) : dep[k][j];
+    });
+    detail::static_for<m*(p + 1)>([&](auto kj) {
+      constexpr std::size_t k = kj / (p + 1), j = kj % (p + 1);
+      const S c = Sys::r[k][j] == detail::entry::one ? S(1) : right[k][j];
+      if constexpr (j < p)
+        out.C(Eigen::Index(k), Eigen::Index(NH::independents[j] - 1)) = c;
+      else
+        out.c0(Eigen::Index(k)) = c;
+    });
+  }
   out.dependent.m = dep;
   out.dependent.factors = detail::factor_structured<Sys>(dep);
-  const auto solved = detail::substitute_structured<Sys>(dep, out.dependent.factors, right, x);
+  const auto solved =
+      detail::substitute_structured<Sys, known_entries::written, Check>(dep, out.dependent.factors, right, x);
   out.status = detail::failed_first(ev.status(), solved);
   for (std::size_t k = 0; k < m; ++k) {
     const auto row = static_cast<Eigen::Index>(k);
     for (std::size_t j = 0; j < p; ++j) out.A(row, static_cast<Eigen::Index>(j)) = -x[k][j];
     out.B(row) = -x[k][p];
   }
-  const auto spoil = detail::nan_unless<S>(detail::ok_of<S>(out.status));
-  spoil(out.A);
-  spoil(out.B);
+  if constexpr (Check == checking::each) {  // at_end: the caller's results are NaN unless ok
+    const auto spoil = detail::nan_unless<S>(detail::ok_of<S>(out.status));
+    spoil(out.A);
+    spoil(out.B);
+  }
   return out;
+}
+}  // namespace detail
+
+// u_dep = A u_ind + B at the evaluator's state.
+template <Nonholonomic NH, Evaluator Ev>
+KANE_INLINE_FLATTEN auto solve_constraints(const Ev& ev) {
+  return detail::solve_constraints_at<NH, detail::checking::each>(ev);
 }
 
 namespace detail {

@@ -96,6 +96,19 @@ using status_of =
     std::conditional_t<lane_traits<S>::width == 1, solve_status, lane_status<lane_traits<S>::width>>;
 
 namespace detail {
+// Where a computation checks its numbers: each stage its own results (each), or its inputs, its rank
+// tests and its last results alone (at_end: one check a call, as kane::motion's).
+enum class checking { each, at_end };
+// The reads of an evaluator's update whose caller checks its last results (checking::at_end)
+template <class Reads>
+struct checked_at_end : Reads {
+  static constexpr bool at_end = true;
+};
+template <class Reads>
+inline constexpr checking checking_of = requires {
+  Reads::at_end;
+}
+? checking::at_end : checking::each;
 // st = why where st is ok and good is false (lane by lane where good is a mask).
 template <class Status, class Mask>
 KANE_ALWAYS_INLINE void fail_unless(Status& st, const Mask& good, solve_status why) {

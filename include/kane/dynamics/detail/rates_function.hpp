@@ -119,13 +119,16 @@ KANE_ALWAYS_INLINE void write_rates(DX& dxdt, const Q& qd, const status_of<S>& s
     dxdt[i] = v;
   });
 }
-// dxdt = (q', u') over lanes (N numbers of q'), each number x as x (NaN unless status is ok) - r,
-// with r the sum of u'_i - u'_i, 0 or NaN: the results wait on that one sum, not on the status it
-// sets. The status, not_finite where r is NaN.
-template <std::size_t N, class S, class Q, class Ud, class DX>
-KANE_ALWAYS_INLINE status_of<S> write_lane_rates(DX& dxdt, const Q& qd, const Ud& ud, status_of<S> status) {
-  const S r = matrix_residue(ud);
-  const auto spoil = nan_unless<S>(ok_of<S>(status));
+// dxdt = (q', u') (N numbers of q'), NaN unless ok. r is the sum of u'_i - u'_i (and q'_i - q'_i where
+// Check is checking::at_end), 0 or NaN; the status is not_finite where r is NaN. Over lanes each number
+// x is x (NaN unless the status given is ok) - r: the results wait on that one sum, not on the status
+// it sets.
+template <std::size_t N, checking Check, class S, class Q, class Ud, class DX>
+KANE_ALWAYS_INLINE status_of<S> write_checked_rates(DX& dxdt, const Q& qd, const Ud& ud,
+                                                    status_of<S> status) {
+  S r = matrix_residue(ud);
+  if constexpr (Check == checking::at_end) r += nonfinite_residue(qd);
+  const auto spoil = nan_unless<S>(opaque_ok<S>(status));
   fail_unless(status, r == S(0), solve_status::not_finite);
   static_for<N + std::size_t(Ud::SizeAtCompileTime)>([&](auto i) {
     S v;

@@ -249,7 +249,9 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
 // caller's state is 0 (motion.hpp), and the biases are expressions at u' = 0 (rest_bias.hpp).
 // parts::mass_matrix: M alone (f stays 0: no velocity, acceleration or load is read).
 // parts::forcing: f alone (forcing_only); where M is known, not checked (the caller checks u' = M^-1 f).
-template <class Sys, rates Rates, parts Parts = parts::both, class Ev, class Cols>
+// checking::at_end: f not checked either (the caller checks u' = M^-1 f), M's diagonal still is.
+template <class Sys, rates Rates, parts Parts = parts::both, checking Check = checking::each, class Ev,
+          class Cols>
 auto equations_along(const Ev& ev, const Cols& cols) {
   using S = typename Ev::scalar;
   using R = typename Ev::root;
@@ -282,12 +284,18 @@ auto equations_along(const Ev& ev, const Cols& cols) {
       add_items<Sys, Rates, known ? parts::forcing : Parts>(out, e, cols, ud);
     });
   if constexpr (!known && with_m) out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
-  if constexpr (known && !with_m)  // the caller checks M^-1 f: a NaN or inf of f reaches it
+  constexpr bool at_end = Check == checking::at_end;  // a NaN or inf of f reaches M^-1 f; one of M may not
+  if constexpr ((known && !with_m) || (at_end && (known || !with_m)))  // the caller checks M^-1 f
     return out;
   const auto finite = [&] {  // numbers and lanes: M's diagonal suffices (M = sum m V^T V + W^T I W)
-    if constexpr (known || !with_m)
+    constexpr bool diagonal = std::is_floating_point_v<S> || lane_traits<S>::width > 1;
+    if constexpr (at_end && diagonal)
+      return detail::finite_diagonal(out.M);
+    else if constexpr (at_end)
+      return detail::all_finite_matrix(out.M);
+    else if constexpr (known || !with_m)
       return detail::all_finite_numbers(out.f);
-    else if constexpr (std::is_floating_point_v<S> || lane_traits<S>::width > 1)
+    else if constexpr (diagonal)
       return detail::finite_diagonal(out.M) && detail::all_finite_numbers(out.f);
     else
       return detail::all_finite_matrix(out.M) && detail::all_finite_numbers(out.f);
