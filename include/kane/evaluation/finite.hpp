@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "kane/detail/inline.hpp"
+#include "kane/detail/lane_traits.hpp"
 #include "kane/detail/wide_stores.hpp"
 
 #pragma GCC diagnostic push
@@ -114,6 +115,15 @@ auto finite_diagonal(const M& m) {
   using S = typename M::Scalar;
   return [&]<int... I>(std::integer_sequence<int, I...>) { return ((m(I, I) - m(I, I)) + ...) == S(0); }
   (std::make_integer_sequence<int, M::RowsAtCompileTime>{});
+}
+// A mass matrix finite: its diagonal for numbers and lanes, every entry for jets.
+template <class M>
+auto finite_masses(const M& m) {
+  using S = typename M::Scalar;
+  if constexpr (std::is_floating_point_v<S> || lane_traits<S>::width > 1)
+    return finite_diagonal(m);
+  else
+    return all_finite_matrix(m);
 }
 }  // namespace kane::detail
 #pragma GCC diagnostic pop

@@ -107,29 +107,20 @@ struct read_in_blocks : Reads {
 template <class Reads, class S, class X>
 using reads_of_copy =
     std::conditional_t<std::is_same_v<S, double> && contiguous<X>(), read_in_blocks<Reads>, Reads>;
-// dxdt[i] = q'_i, i < N, NaN unless ok (q' may be finite where u' is NaN): by products and a flag
-// the optimizer cannot thread, since a branch here keeps the local evaluator's dead stores (and
-// the work behind them, such as sin and cos of an angle nothing reads) alive.
-template <std::size_t N, class S, class Q, class DX>
-KANE_ALWAYS_INLINE void write_rates(DX& dxdt, const Q& qd, const status_of<S>& status) {
-  const auto spoil = nan_unless<S>(opaque_ok<S>(status));
-  static_for<N>([&](auto i) {
-    S v = qd[i];
-    spoil(v);
-    dxdt[i] = v;
-  });
-}
 // dxdt = (q', u') (N numbers of q'), NaN unless ok. r is the sum of u'_i - u'_i (and q'_i - q'_i where
 // Check is checking::at_end), 0 or NaN; the status is not_finite where r is NaN. Over lanes each number
-// x is x (NaN unless the status given is ok) - r: the results wait on that one sum, not on the status
-// it sets.
+// x is x (NaN unless the status given is ok) - r: the results wait on that one sum, not on the statuses
+// it sets. The products by 1 or NaN take a flag the optimizer cannot thread: a branch here keeps the
+// local evaluator's dead stores, and the work behind them such as sin and cos, alive.
 template <std::size_t N, checking Check, class S, class Q, class Ud, class DX>
 KANE_ALWAYS_INLINE status_of<S> write_checked_rates(DX& dxdt, const Q& qd, const Ud& ud,
                                                     status_of<S> status) {
+  constexpr bool lanes = lane_traits<S>::width > 1;
   S r = matrix_residue(ud);
   if constexpr (Check == checking::at_end) r += nonfinite_residue(qd);
+  if constexpr (!lanes) fail_unless(status, r == S(0), solve_status::not_finite);  // one flag for one state
   const auto spoil = nan_unless<S>(opaque_ok<S>(status));
-  fail_unless(status, r == S(0), solve_status::not_finite);
+  if constexpr (lanes) fail_unless(status, r == S(0), solve_status::not_finite);
   static_for<N + std::size_t(Ud::SizeAtCompileTime)>([&](auto i) {
     S v;
     if constexpr (i < N)
@@ -137,7 +128,7 @@ KANE_ALWAYS_INLINE status_of<S> write_checked_rates(DX& dxdt, const Q& qd, const
     else
       v = ud(Eigen::Index(i - N));
     spoil(v);
-    dxdt[i] = v - r;
+    dxdt[i] = lanes ? v - r : v;
   });
   return status;
 }

@@ -95,9 +95,6 @@ auto speed_rates(const Ev& ev) {  // u' of the evaluator's state
     ud(Eigen::Index(r)) = std::is_void_v<typename Ev::speed_set> ? ev.state().qdd[r] : ev.state().ud[r];
   return ud;
 }
-}  // namespace detail
-
-namespace detail {
 // The columns the equations are written for. Every speed: M and f.
 template <std::size_t N>
 struct all_speeds {
@@ -248,8 +245,8 @@ inline void add_items(Out& out, const Ev& ev, const Cols& cols, const Ud& ud) {
 // (a - v u' would multiply by zeros); at a state of any u', f is -tau. rates::zero: every u' of the
 // caller's state is 0 (motion.hpp), and the biases are expressions at u' = 0 (rest_bias.hpp).
 // parts::mass_matrix: M alone (f stays 0: no velocity, acceleration or load is read).
-// parts::forcing: f alone (forcing_only); where M is known, not checked (the caller checks u' = M^-1 f).
-// checking::at_end: f not checked either (the caller checks u' = M^-1 f), M's diagonal still is.
+// parts::forcing: f alone (forcing_only). Where M is known or Check is checking::at_end, f is not
+// checked: the caller checks u' = M^-1 f (at_end: M still is).
 template <class Sys, rates Rates, parts Parts = parts::both, checking Check = checking::each, class Ev,
           class Cols>
 auto equations_along(const Ev& ev, const Cols& cols) {
@@ -284,21 +281,14 @@ auto equations_along(const Ev& ev, const Cols& cols) {
       add_items<Sys, Rates, known ? parts::forcing : Parts>(out, e, cols, ud);
     });
   if constexpr (!known && with_m) out.M.template triangularView<Eigen::StrictlyLower>() = out.M.transpose();
-  constexpr bool at_end = Check == checking::at_end;  // a NaN or inf of f reaches M^-1 f; one of M may not
-  if constexpr ((known && !with_m) || (at_end && (known || !with_m)))  // the caller checks M^-1 f
-    return out;
-  const auto finite = [&] {  // numbers and lanes: M's diagonal suffices (M = sum m V^T V + W^T I W)
-    constexpr bool diagonal = std::is_floating_point_v<S> || lane_traits<S>::width > 1;
-    if constexpr (at_end && diagonal)
-      return detail::finite_diagonal(out.M);
-    else if constexpr (at_end)
-      return detail::all_finite_matrix(out.M);
+  if constexpr ((known && !with_m) || (Check == checking::at_end && (known || !with_m))) return out;
+  const auto finite = [&] {
+    if constexpr (Check == checking::at_end)  // a NaN or inf of f reaches M^-1 f; one of M may not
+      return detail::finite_masses(out.M);
     else if constexpr (known || !with_m)
       return detail::all_finite_numbers(out.f);
-    else if constexpr (diagonal)
-      return detail::finite_diagonal(out.M) && detail::all_finite_numbers(out.f);
     else
-      return detail::all_finite_matrix(out.M) && detail::all_finite_numbers(out.f);
+      return detail::finite_masses(out.M) && detail::all_finite_numbers(out.f);
   }();
   fail_unless(out.status, finite, solve_status::not_finite);
   return out;
