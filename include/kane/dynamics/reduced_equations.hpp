@@ -117,9 +117,9 @@ Eigen::Matrix<S, int(NH::n), int(NH::p)> speeds_of_independents(
   for (std::size_t j = 0; j < NH::m; ++j) t.row(Eigen::Index(NH::dependents[j] - 1)) = a.row(Eigen::Index(j));
   return t;
 }
-// C' u + c0' = dt(c) - C u' of the constraints (rates::at_rest: the evaluator's u' are zero).
-template <class NH, rates Rates, class Ev, class Sol>
-Eigen::Matrix<typename Ev::scalar, int(NH::m), 1> constraint_rates_at_rest(const Ev& ev, const Sol& sol) {
+// dt(c) of the constraints at the evaluator's state and u': one instantiation for every rates.
+template <class NH, class Ev>
+Eigen::Matrix<typename Ev::scalar, int(NH::m), 1> constraint_rates(const Ev& ev) {
   using S = typename Ev::scalar;
   constexpr std::size_t m = NH::m;
   Eigen::Matrix<S, int(m), 1> rest;
@@ -132,6 +132,12 @@ Eigen::Matrix<typename Ev::scalar, int(NH::m), 1> constraint_rates_at_rest(const
     });
   }
   (std::make_index_sequence<m>{});
+  return rest;
+}
+// C' u + c0' = dt(c) - C u' of the constraints (rates::at_rest: the evaluator's u' are zero).
+template <class NH, rates Rates, class Ev, class Sol>
+Eigen::Matrix<typename Ev::scalar, int(NH::m), 1> constraint_rates_at_rest(const Ev& ev, const Sol& sol) {
+  Eigen::Matrix<typename Ev::scalar, int(NH::m), 1> rest = constraint_rates<NH>(ev);
   if constexpr (Rates == rates::of_state) rest -= sol.C * detail::speed_rates(ev);
   return rest;
 }

@@ -177,12 +177,13 @@ KANE_ALWAYS_INLINE structured_factors<S, Sys::n> factor_structured(const table<S
 // X = M^-1 R from the factors of M. Sys: static constexpr n, k, m (pattern n x n), r (n x k),
 // form (blocks_of(m)), x (solution_pattern). The zeros and ones of X are written unless the
 // caller keeps them (known_entries::left). checking::at_end: X is not checked finite (the caller
-// checks what it computes from X).
-template <class Sys, known_entries Known = known_entries::written, checking C = checking::each, class S>
-KANE_ALWAYS_INLINE status_of<S> substitute_structured(const table<S, Sys::n, Sys::n>& m,
-                                                      const structured_factors<S, Sys::n>& fac,
-                                                      const table<S, Sys::n, Sys::k>& r,
-                                                      table<S, Sys::n, Sys::k>& x) {
+// checks what it computes from X). C is an argument, folded where the call inlines: one
+// instantiation serves both checks.
+template <class Sys, known_entries Known, class S>
+KANE_ALWAYS_INLINE status_of<S> substitute_structured_as(const table<S, Sys::n, Sys::n>& m,
+                                                         const structured_factors<S, Sys::n>& fac,
+                                                         const table<S, Sys::n, Sys::k>& r,
+                                                         table<S, Sys::n, Sys::k>& x, checking C) {
   using limits = std::numeric_limits<S>;
   constexpr std::size_t n = Sys::n, k = Sys::k;
   auto rhs = [&](auto i, auto j) -> S {
@@ -247,7 +248,7 @@ KANE_ALWAYS_INLINE status_of<S> substitute_structured(const table<S, Sys::n, Sys
     }
   });
   S residue = -S(0);  // x - x is 0 for a finite x, NaN otherwise
-  if constexpr (C == checking::each)
+  if (C == checking::each)
     static_for_inline<n * k>([&](auto cj) KANE_ALWAYS_INLINE_LAMBDA {
       constexpr std::size_t c = cj / k, j = cj % k;
       if constexpr (Sys::x[c][j] == entry::other) residue += x[c][j] - x[c][j];
@@ -260,6 +261,13 @@ KANE_ALWAYS_INLINE status_of<S> substitute_structured(const table<S, Sys::n, Sys
     if constexpr (Sys::x[c][j] == entry::other) spoil(x[c][j]);
   });
   return status;
+}
+template <class Sys, known_entries Known = known_entries::written, checking C = checking::each, class S>
+KANE_ALWAYS_INLINE status_of<S> substitute_structured(const table<S, Sys::n, Sys::n>& m,
+                                                      const structured_factors<S, Sys::n>& fac,
+                                                      const table<S, Sys::n, Sys::k>& r,
+                                                      table<S, Sys::n, Sys::k>& x) {
+  return substitute_structured_as<Sys, Known>(m, fac, r, x, C);
 }
 
 template <class Sys, known_entries Known = known_entries::written, class S>

@@ -57,10 +57,10 @@ struct constraint_solution {
 
 namespace detail {
 // solve_constraints; checking::at_end: A and B neither checked finite nor made NaN (the caller checks
-// and spoils its results). Rows false: C and c0 left unwritten (for a caller at u' = 0, which reads
-// neither).
-template <class NH, checking Check, bool Rows = true, class Ev>
-KANE_ALWAYS_INLINE auto solve_constraints_at(const Ev& ev) {
+// and spoils its results). rows false: C and c0 left unwritten (for a caller at u' = 0, which reads
+// neither). Both are arguments, folded where the call inlines: one instantiation serves every caller.
+template <class NH, class Ev>
+KANE_ALWAYS_INLINE auto solve_constraints_as(const Ev& ev, checking check, bool rows) {
   using S = typename Ev::scalar;
   using Sys = detail::constraint_system<NH>;
   static_assert(detail::same_speeds_v<Ev, NH>);
@@ -93,7 +93,7 @@ KANE_ALWAYS_INLINE auto solve_constraints_at(const Ev& ev) {
   }
   (std::make_index_sequence<m * m>{}, std::make_index_sequence<m*(p + 1)>{});
   constraint_solution<S, m, p, NH> out;
-  if constexpr (Rows) {
+  if (rows) {
     detail::static_for<m * m>([&](auto kj) {
       constexpr std::size_t k = kj / m, j = kj % m;
       out.C(Eigen::Index(k), Eigen::Index(NH::dependents[j] - 1)) =
@@ -110,20 +110,24 @@ KANE_ALWAYS_INLINE auto solve_constraints_at(const Ev& ev) {
   }
   out.dependent.m = dep;
   out.dependent.factors = detail::factor_structured<Sys>(dep);
-  const auto solved =
-      detail::substitute_structured<Sys, known_entries::written, Check>(dep, out.dependent.factors, right, x);
+  const auto solved = detail::substitute_structured_as<Sys, known_entries::written>(
+      dep, out.dependent.factors, right, x, check);
   out.status = detail::failed_first(ev.status(), solved);
   for (std::size_t k = 0; k < m; ++k) {
     const auto row = static_cast<Eigen::Index>(k);
     for (std::size_t j = 0; j < p; ++j) out.A(row, static_cast<Eigen::Index>(j)) = -x[k][j];
     out.B(row) = -x[k][p];
   }
-  if constexpr (Check == checking::each) {  // at_end: the caller's results are NaN unless ok
+  if (check == checking::each) {  // at_end: the caller's results are NaN unless ok
     const auto spoil = detail::nan_unless<S>(detail::ok_of<S>(out.status));
     spoil(out.A);
     spoil(out.B);
   }
   return out;
+}
+template <class NH, checking Check, bool Rows = true, class Ev>
+KANE_ALWAYS_INLINE auto solve_constraints_at(const Ev& ev) {
+  return solve_constraints_as<NH>(ev, Check, Rows);
 }
 }  // namespace detail
 

@@ -34,6 +34,14 @@ inline constexpr std::size_t simd_bytes = 0;
 #endif
 }  // namespace detail
 
+// The jet (value, e_k for every chunk k) as straight-line code: no call or callback per
+// operation, which would cost the compiler a function to inline at every use.
+#define KANE_JET_OF(value, e_k)                                                       \
+  jet out;                                                                            \
+  out.v = (value);                                                                    \
+  _Pragma("GCC unroll 16") for (std::size_t k = 0; k < chunks; ++k) out.c[k] = (e_k); \
+  return out
+
 // v + sum d_i eps_i: a number with its first derivatives along N directions (forward mode).
 template <std::floating_point S, std::size_t N>
 struct jet {
@@ -63,44 +71,25 @@ struct jet {
   // d_i
   S part(std::size_t i) const { return c[i / width][i % width]; }
 
-  // (value, f(c_0), f(c_1), ...) unrolled: jet arithmetic inlines into straight-line code.
-  template <class F>
-  static jet make(S value, F f) {
-    jet r;
-    r.v = value;
-#pragma GCC unroll 16
-    for (std::size_t k = 0; k < chunks; ++k) r.c[k] = f(k);
-    return r;
-  }
   // a + b
-  friend jet operator+(const jet& a, const jet& b) {
-    return make(a.v + b.v, [&](std::size_t k) { return a.c[k] + b.c[k]; });
-  }
+  friend jet operator+(const jet& a, const jet& b) { KANE_JET_OF(a.v + b.v, a.c[k] + b.c[k]); }
   // a - b
-  friend jet operator-(const jet& a, const jet& b) {
-    return make(a.v - b.v, [&](std::size_t k) { return a.c[k] - b.c[k]; });
-  }
+  friend jet operator-(const jet& a, const jet& b) { KANE_JET_OF(a.v - b.v, a.c[k] - b.c[k]); }
   // a b, by the product rule
-  friend jet operator*(const jet& a, const jet& b) {
-    return make(a.v * b.v, [&](std::size_t k) { return a.c[k] * b.v + a.v * b.c[k]; });
-  }
+  friend jet operator*(const jet& a, const jet& b) { KANE_JET_OF(a.v * b.v, a.c[k] * b.v + a.v * b.c[k]); }
   // by a number: its derivatives are zero
-  friend jet operator*(const jet& a, S b) {
-    return make(a.v * b, [&](std::size_t k) { return a.c[k] * b; });
-  }
+  friend jet operator*(const jet& a, S b) { KANE_JET_OF(a.v * b, a.c[k] * b); }
   // a b = b a
   friend jet operator*(S a, const jet& b) { return b * a; }
   // a / b, by the quotient rule
   friend jet operator/(const jet& a, const jet& b) {
     const S r = S(1) / b.v, q = a.v * r;
-    return make(q, [&](std::size_t k) { return (a.c[k] - q * b.c[k]) * r; });
+    KANE_JET_OF(q, (a.c[k] - q * b.c[k]) * r);
   }
   // +a = a
   friend jet operator+(const jet& a) { return a; }
   // -a
-  friend jet operator-(const jet& a) {
-    return make(-a.v, [&](std::size_t k) { return -a.c[k]; });
-  }
+  friend jet operator-(const jet& a) { KANE_JET_OF(-a.v, -a.c[k]); }
   // a = a + b
   jet& operator+=(const jet& b) { return *this = *this + b; }
   // a = a - b
@@ -126,9 +115,7 @@ struct jet {
   friend bool operator>=(const jet& a, const jet& b) { return a.v >= b.v; }
 
   // f(v) + f'(v) d
-  friend jet chain(const jet& a, S f, S df) {
-    return make(f, [&](std::size_t k) { return df * a.c[k]; });
-  }
+  friend jet chain(const jet& a, S f, S df) { KANE_JET_OF(f, df * a.c[k]); }
   // sin v + d cos v
   friend jet sin(const jet& a) { return chain(a, std::sin(a.v), std::cos(a.v)); }
   // cos v - d sin v
@@ -155,7 +142,7 @@ struct jet {
   // atan2(y.v, x.v) + (x.v y.d - y.v x.d) / (x.v^2 + y.v^2)
   friend jet atan2(const jet& y, const jet& x) {
     const S r = S(1) / (x.v * x.v + y.v * y.v);
-    return make(std::atan2(y.v, x.v), [&](std::size_t k) { return (x.v * y.c[k] - y.v * x.c[k]) * r; });
+    KANE_JET_OF(std::atan2(y.v, x.v), (x.v * y.c[k] - y.v * x.c[k]) * r);
   }
   // |a|: -a for v < 0, else a
   friend jet abs(const jet& a) { return a.v < S(0) ? -a : a; }
@@ -174,6 +161,7 @@ struct jet {
     return f;
   }
 };
+#undef KANE_JET_OF
 
 // A coupled block B of a structured solve on jets: X, the inverse of its values alone.
 template <class S, std::size_t D, int N>

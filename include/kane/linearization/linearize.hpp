@@ -67,8 +67,13 @@ solve_status dependent_jets(const typename Ev::state_type& s, JSt& js, std::size
   using Sys = newton_system<H>;
   constexpr std::size_t m = H::m;
   constexpr auto qi = independent_coordinates<H, Ev::state_type::nq>();
-  typename pose_evaluator<Ev>::type ev;
-  ev.update(s);
+  // the pose pass of Ev itself where it has one (its code is already the motion's)
+  constexpr bool posed = requires(Ev & e) { e.update_pose(s); };
+  std::conditional_t<posed, Ev, typename pose_evaluator<Ev>::type> ev;
+  if constexpr (posed)
+    ev.update_pose(s);
+  else
+    ev.update(s);
   table<S, m, m> jac{};
   constraint_jacobian<H>(ev, jac);
   const auto factors = factor_structured<Sys>(jac);
@@ -203,10 +208,11 @@ equations_of<NH, Ev, H, In> equations_in_batches(const typename Ev::state_type& 
   for (std::size_t lo = 0; lo < n; lo += b) {
     solve_status status;
     auto [js, x] = constrained_point<Sys, NH, Ev, H, In, b>(s, status, lo);
-    // the state at x (u_dep = A u_ind + B, u' = 0), then M~ and f~ on jets, once
+    // the state at x (u_dep = A u_ind + B, u' = 0: no u' term is evaluated), then M~ and f~ on jets, once
     js.ud = {};
-    typename rebind_evaluator<Ev, J>::type ev;
-    const auto sol = update_at_independent_speeds<NH>(ev, js, x);
+    using JEv = typename rebind_evaluator<Ev, J>::type;
+    JEv ev;
+    const auto sol = update_at_independent_speeds<NH, every_read<JEv>>(ev, js, x);
     const auto eq = reduced_mass_matrix_and_forcing_at<Sys, NH, rates::at_rest>(ev, sol).reduced;
     if (lo == 0) {  // u_ind' at s: M~ u' = f~ on the numbers
       equations_of_motion<S, p> at{{}, {}, eq.status};
