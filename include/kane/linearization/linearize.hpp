@@ -192,51 +192,69 @@ constrained_model_of<NH, Ev, H, In> constrained_in_batches(const typename Ev::st
   return out;
 }
 
-// linearize_equations with the directions in batches of jets of Batch
+// linearize_equations with the directions in batches of jets of Batch. M~ and u_ind' at s come from
+// numbers, by the calls constrained_motion makes. On jets res = M~ u' - f~ = T^T (M u'_s - f) is
+// the forcing along v~ at u'_s = (u_ind', A u_ind' + b_dep): the rest accelerations plus v u'_s
+// (rates::of_state takes away v times the u' it is given: here -u'_s). M is never formed on jets.
 template <class Sys, class NH, class Ev, class H, class In, std::size_t Batch>
 equations_of<NH, Ev, H, In> equations_in_batches(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
-  constexpr std::size_t nq = Ev::state_type::nq, p = NH::p;
+  constexpr std::size_t nq = Ev::state_type::nq, p = NH::p, m = NH::m;
   constexpr auto qi = independent_coordinates<H, nq>();
   constexpr auto qs = directions<Sys, NH, Ev, H>;
   constexpr std::size_t nj = qs.n + p, n = nj + In::n, b = batch_of<n, Batch>;
   using J = jet<S, b>;
+  using JEv = typename rebind_evaluator<Ev, J>::type;
   equations_of<NH, Ev, H, In> out;
   out.K.setZero();  // the columns of held coordinates
-  out.status = solve_status::ok;
   Eigen::Matrix<S, int(p), 1> ud;
+  {  // numbers at s: M~ u_ind' = f~
+    typename Ev::state_type s0 = s;
+    std::array<S, nq + p> x0;
+    for (std::size_t i = 0; i < nq; ++i) x0[i] = s.q[i];
+    for (std::size_t k = 0; k < p; ++k) x0[nq + k] = s.u[NH::independents[k] - 1];
+    Ev ev;
+    const auto sol = update_at_independent_speeds<NH, checked_at_end<every_read<Ev>>>(ev, s0, x0);
+    std::array<S, m> b_dep;
+    const auto eq = reduced_equations_at<Sys, NH, rates::at_rest, checking::at_end>(ev, sol, b_dep);
+    const auto solved = speed_derivatives_at(eq);
+    out.M = eq.M;
+    ud = solved.ud;
+    out.status = solved.status;
+  }
   for (std::size_t lo = 0; lo < n; lo += b) {
     solve_status status;
     auto [js, x] = constrained_point<Sys, NH, Ev, H, In, b>(s, status, lo);
-    // the state at x (u_dep = A u_ind + B, u' = 0: no u' term is evaluated), then M~ and f~ on jets, once
-    js.ud = {};
-    using JEv = typename rebind_evaluator<Ev, J>::type;
+    js.ud = {};  // the state at x: u_dep = A u_ind + B, u' = 0
     JEv ev;
     const auto sol = update_at_independent_speeds<NH, every_read<JEv>>(ev, js, x);
-    const auto eq = reduced_mass_matrix_and_forcing_at<Sys, NH, rates::at_rest>(ev, sol).reduced;
-    if (lo == 0) {  // u_ind' at s: M~ u' = f~ on the numbers
-      equations_of_motion<S, p> at{{}, {}, eq.status};
-      for (std::size_t r = 0; r < p; ++r) {
-        at.f(Eigen::Index(r)) = eq.f(Eigen::Index(r)).v;
-        for (std::size_t c = 0; c < p; ++c)
-          out.M(Eigen::Index(r), Eigen::Index(c)) = at.M(Eigen::Index(r), Eigen::Index(c)) =
-              eq.M(Eigen::Index(r), Eigen::Index(c)).v;
-      }
-      const auto solved = speed_derivatives(at);
-      ud = solved.ud;
-      out.status = status != solve_status::ok ? status : solved.status;
+    std::array<J, m> b_dep;
+    const auto rates_solved = dependent_rates_at_rest<NH, rates::at_rest>(ev, sol, b_dep);
+    Eigen::Matrix<J, int(NH::n), 1> minus_ud;  // -u'_s but for b_dep, which the columns add
+    for (std::size_t k = 0; k < p; ++k)
+      minus_ud(Eigen::Index(NH::independents[k] - 1)) = J(-ud(Eigen::Index(k)));
+    for (std::size_t j = 0; j < m; ++j) {
+      J a(0);
+      for (std::size_t k = 0; k < p; ++k) a += sol.A(Eigen::Index(j), Eigen::Index(k)) * ud(Eigen::Index(k));
+      minus_ud(Eigen::Index(NH::dependents[j] - 1)) = -a;
     }
+    forcing_only<J, p> f{Eigen::Matrix<J, int(p), 1>::Zero(), ev.status()};
+    with_common_subexpressions(system_terms<typename JEv::root, speeds_of<JEv>>(typename Sys::items{}), ev,
+                               [&](const auto& e) {
+                                 add_items<Sys, rates::of_state, parts::forcing>(
+                                     f, e, independent_speeds<NH, J>{sol.A, b_dep}, minus_ud);
+                               });
+    if (out.status == solve_status::ok)
+      out.status = failed_first(status, failed_first(sol.status, failed_first(rates_solved, f.status)));
     const auto in_batch = [&](std::size_t d) { return d != no_slot && d >= lo && d < lo + b; };
     for (std::size_t r = 0; r < p; ++r) {
-      J res = -eq.f(Eigen::Index(r));
-      for (std::size_t c = 0; c < p; ++c)
-        res += eq.M(Eigen::Index(r), Eigen::Index(c)) * J(ud(Eigen::Index(c)));
+      const J& res = f.f(Eigen::Index(r));  // -(M~ u' - f~); 0 - x keeps zeros +0
       for (std::size_t j = 0; j < qi.size(); ++j)
-        if (in_batch(qs.slot[j])) out.K(Eigen::Index(r), Eigen::Index(j)) = res.part(qs.slot[j] - lo);
+        if (in_batch(qs.slot[j])) out.K(Eigen::Index(r), Eigen::Index(j)) = S(0) - res.part(qs.slot[j] - lo);
       for (std::size_t c = 0; c < p; ++c)
-        if (in_batch(qs.n + c)) out.C(Eigen::Index(r), Eigen::Index(c)) = res.part(qs.n + c - lo);
+        if (in_batch(qs.n + c)) out.C(Eigen::Index(r), Eigen::Index(c)) = S(0) - res.part(qs.n + c - lo);
       for (std::size_t k = 0; k < In::n; ++k)
-        if (in_batch(nj + k)) out.B(Eigen::Index(r), Eigen::Index(k)) = -res.part(nj + k - lo);
+        if (in_batch(nj + k)) out.B(Eigen::Index(r), Eigen::Index(k)) = res.part(nj + k - lo);
     }
   }
   if (out.status != solve_status::ok) set_nan(out.M), set_nan(out.C), set_nan(out.K), set_nan(out.B);
