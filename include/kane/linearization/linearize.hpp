@@ -101,8 +101,9 @@ constrained_model_of<NH, Ev, H, In> constrained_in_batches(const typename Ev::st
   return out;
 }
 
-// linearize_equations with the directions in batches of jets of Batch: M = M~ at s, and
-// C, K, B from the jets of f = -(M~ u' - f~) at u' held.
+// linearize_equations with the directions in batches of jets of Batch. First M~ and f~ at s: the
+// reduced forcing at u' = 0 with u_ind' as the directions (M~ = -df/du_ind'), u_ind' = M~^-1 f~ on
+// numbers. Then C, K, B from the jets of f = -(M~ u' - f~) at that u', held.
 template <class Sys, class NH, class Ev, class H, class In, std::size_t Batch>
 equations_of<NH, Ev, H, In> equations_in_batches(const typename Ev::state_type& s) {
   using S = typename Ev::scalar;
@@ -110,13 +111,29 @@ equations_of<NH, Ev, H, In> equations_in_batches(const typename Ev::state_type& 
   constexpr auto qi = independent_coordinates<H, nq>();
   constexpr auto qs = directions<Sys, NH, Ev, H>;
   constexpr std::size_t nj = qs.n + p, n = nj + In::n, b = batch_of<n, Batch>;
+  using J = jet<S, b>;
   equations_of<NH, Ev, H, In> out;
   out.K.setZero();  // the columns of held coordinates
-  const reduced_point<Sys, NH, Ev> at(s);
-  out.M = at.M;
-  out.status = at.status;
+  equations_of_motion<S, p> at{{}, {}, solve_status::ok};
+  for (std::size_t lo = 0; lo < p; lo += b) {  // u_ind' in [lo, lo + b) as directions, no state's
+    Eigen::Matrix<J, int(p), 1> ud;
+    for (std::size_t k = 0; k < p; ++k)
+      ud(Eigen::Index(k)) = k >= lo && k < lo + b ? J::variable(S(0), k - lo) : J(0);
+    const auto [f, status] = reduced_forcing_on_jets<Sys, NH, Ev, H, In, b>(s, ud, n);
+    if (at.status == solve_status::ok) at.status = status;
+    for (std::size_t r = 0; r < p; ++r) {
+      at.f(Eigen::Index(r)) = f(Eigen::Index(r)).v;
+      for (std::size_t c = lo; c < p && c < lo + b; ++c)
+        at.M(Eigen::Index(r), Eigen::Index(c)) = S(0) - f(Eigen::Index(r)).part(c - lo);
+    }
+  }
+  out.M = at.M = (at.M + at.M.transpose()) * S(0.5);  // symmetric up to rounding
+  const auto solved = speed_derivatives_at(at);
+  out.status = solved.status;
+  Eigen::Matrix<J, int(p), 1> ud;
+  for (std::size_t k = 0; k < p; ++k) ud(Eigen::Index(k)) = J(solved.ud(Eigen::Index(k)));
   for (std::size_t lo = 0; lo < n; lo += b) {
-    const auto [f, status] = reduced_forcing_on_jets<Sys, NH, Ev, H, In, b>(s, at, lo);
+    const auto [f, status] = reduced_forcing_on_jets<Sys, NH, Ev, H, In, b>(s, ud, lo);
     if (out.status == solve_status::ok) out.status = status;
     const auto in_batch = [&](std::size_t d) { return d != no_slot && d >= lo && d < lo + b; };
     for (std::size_t r = 0; r < p; ++r) {

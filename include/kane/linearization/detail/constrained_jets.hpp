@@ -1,6 +1,6 @@
 // The jets of a linearization of a nonholonomic system (linearize.hpp): the point x = (q_ind, u_ind)
-// on jets with q_dep through the holonomic constraints, and Kane's reduced equations there, their
-// M~ and u' on the numbers and their forcing on jets.
+// on jets with q_dep through the holonomic constraints, and the forcing of Kane's reduced equations
+// there on jets.
 #pragma once
 
 #include <array>
@@ -111,32 +111,13 @@ auto constrained_point(const typename Ev::state_type& s, solve_status& status, s
   for (std::size_t k = 0; k < NH::p; ++k) x[nq + k] = seeded(qs.n + k, s.u[NH::independents[k] - 1]);
   return out;
 }
-// At s on the numbers, by the calls constrained_motion makes: M~ and u_ind'.
-template <class Sys, class NH, class Ev>
-struct reduced_point {
-  using S = typename Ev::scalar;
-  Eigen::Matrix<S, int(NH::p), int(NH::p)> M;
-  Eigen::Matrix<S, int(NH::p), 1> ud;
-  solve_status status;
-  explicit reduced_point(const typename Ev::state_type& s) {
-    constexpr std::size_t nq = Ev::state_type::nq;
-    typename Ev::state_type s0 = s;
-    std::array<S, nq + NH::p> x0;
-    for (std::size_t i = 0; i < nq; ++i) x0[i] = s.q[i];
-    for (std::size_t k = 0; k < NH::p; ++k) x0[nq + k] = s.u[NH::independents[k] - 1];
-    Ev ev;
-    const auto sol = update_at_independent_speeds<NH, checked_at_end<every_read<Ev>>>(ev, s0, x0);
-    std::array<S, NH::m> b_dep;
-    const auto eq = reduced_equations_at<Sys, NH, rates::at_rest, checking::at_end>(ev, sol, b_dep);
-    const auto solved = speed_derivatives_at(eq);
-    M = eq.M, ud = solved.ud, status = solved.status;
-  }
-};
 // One batch of directions [lo, lo + B) on jets: f = -(M~ u' - f~) = T^T (f - M u'_s) with u'_s =
 // (u_ind', A u_ind' + b_dep): the forcing along v~ at the rest accelerations plus v u'_s
 // (rates::of_state takes away v times the u' it is given: here -u'_s). M is never formed on jets.
+// u_ind' may be jets: f is linear in u', so its derivatives along u_ind' are -M~, exactly.
 template <class Sys, class NH, class Ev, class H, class In, std::size_t B>
-auto reduced_forcing_on_jets(const typename Ev::state_type& s, const reduced_point<Sys, NH, Ev>& at,
+auto reduced_forcing_on_jets(const typename Ev::state_type& s,
+                             const Eigen::Matrix<jet<typename Ev::scalar, B>, int(NH::p), 1>& ud,
                              std::size_t lo) {
   using J = jet<typename Ev::scalar, B>;
   using JEv = typename rebind_evaluator<Ev, J>::type;
@@ -152,11 +133,10 @@ auto reduced_forcing_on_jets(const typename Ev::state_type& s, const reduced_poi
   std::array<J, m> b_dep;
   const auto rates_solved = dependent_rates_at_rest<NH, rates::at_rest>(ev, sol, b_dep);
   Eigen::Matrix<J, int(NH::n), 1> minus_ud;  // -u'_s but for b_dep, which the columns add
-  for (std::size_t k = 0; k < p; ++k)
-    minus_ud(Eigen::Index(NH::independents[k] - 1)) = J(-at.ud(Eigen::Index(k)));
+  for (std::size_t k = 0; k < p; ++k) minus_ud(Eigen::Index(NH::independents[k] - 1)) = -ud(Eigen::Index(k));
   for (std::size_t j = 0; j < m; ++j) {
     J a(0);
-    for (std::size_t k = 0; k < p; ++k) a += sol.A(Eigen::Index(j), Eigen::Index(k)) * at.ud(Eigen::Index(k));
+    for (std::size_t k = 0; k < p; ++k) a += sol.A(Eigen::Index(j), Eigen::Index(k)) * ud(Eigen::Index(k));
     minus_ud(Eigen::Index(NH::dependents[j] - 1)) = -a;
   }
   forcing_only<J, p> f{Eigen::Matrix<J, int(p), 1>::Zero(), ev.status()};
@@ -169,6 +149,5 @@ auto reduced_forcing_on_jets(const typename Ev::state_type& s, const reduced_poi
   out.status = failed_first(out.status, failed_first(sol.status, failed_first(rates_solved, f.status)));
   return out;
 }
-
 }  // namespace kane::detail
 #pragma GCC diagnostic pop
