@@ -101,7 +101,7 @@ auto constrained_point(const typename Ev::state_type& s, solve_status& status, s
   seed_inputs<In, J>(js, nx, lo, hi);
   status = solve_status::ok;
   if constexpr (!std::is_void_v<H> && In::n == 0) {
-    status = dependent_jets<H, Ev, qs>(s, js, lo, hi);
+    if (lo < qs.n) status = dependent_jets<H, Ev, qs>(s, js, lo, hi);  // no held coordinate beyond
   } else if constexpr (!std::is_void_v<H>) {  // q_dep -= J^-1 f on jets (inputs may enter f)
     JEv ev;
     const auto r = solve_configuration<H>(ev, js, {J(-1), 1});
@@ -132,9 +132,9 @@ auto reduced_forcing_on_jets(const typename Ev::state_type& s,
   const auto sol = update_at_independent_speeds<NH, every_read<JEv>>(ev, js, x);
   std::array<J, m> b_dep;
   const auto rates_solved = dependent_rates_at_rest<NH, rates::at_rest>(ev, sol, b_dep);
-  Eigen::Matrix<J, int(NH::n), 1> minus_ud;  // -u'_s but for b_dep, which the columns add
+  Eigen::Matrix<J, int(NH::n), 1> minus_ud;  // -u'_s = -T u_ind' but for b_dep, which the columns add
   for (std::size_t k = 0; k < p; ++k) minus_ud(Eigen::Index(NH::independents[k] - 1)) = -ud(Eigen::Index(k));
-  for (std::size_t j = 0; j < m; ++j) {
+  for (std::size_t j = 0; j < m; ++j) {  // by hand: Eigen's product on jets costs the compiler more
     J a(0);
     for (std::size_t k = 0; k < p; ++k) a += sol.A(Eigen::Index(j), Eigen::Index(k)) * ud(Eigen::Index(k));
     minus_ud(Eigen::Index(NH::dependents[j] - 1)) = -a;
