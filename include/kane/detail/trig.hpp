@@ -103,7 +103,9 @@ KANE_ALWAYS_INLINE trig<typename State::scalar, Needed> make_trig(const State& s
   [&]<std::size_t... K>(std::index_sequence<K...>) {  // unrolled at -O2 too
     using std::cos;
     using std::sin;
-    ((t.s[K] = sin(st.q[Needed[K] - 1]), t.c[K] = cos(st.q[Needed[K] - 1])), ...);
+    // the angles read before the first call: a call may change a state that is not a local
+    [[maybe_unused]] const std::array<typename State::scalar, sizeof...(K)> q{st.q[Needed[K] - 1]...};
+    ((t.s[K] = sin(q[K]), t.c[K] = cos(q[K])), ...);
   }
   (std::make_index_sequence<Needed.size()>{});
   return t;
