@@ -91,7 +91,7 @@ def main():
         cg = os.path.join(work, "callgrind.out")
         profile(binary, a.row, cg)
         ir, calls = costs(cg)
-    own = [k for k in ir if k[0] and os.path.realpath(k[0]) == os.path.realpath(binary)]
+    own = {k for k in ir if k[0] and os.path.realpath(k[0]) == os.path.realpath(binary)}
     where = chains(binary, sorted({k[1] for k in own}))
     tree = collections.Counter()
     for key, value in ir.items():
