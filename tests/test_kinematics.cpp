@@ -274,6 +274,24 @@ TEST_CASE("kinematics: without a speed set q' comes from s.qd or s.u, number by 
     s.qd[0] = -0.0;  // -0 in s.qd and 0 in s.u: s.qd, with its sign
     ev.update(s);
     CHECK(std::signbit(ev.template coordinate_value<1, 1>()));
+    // q'' from s.qdd, or from s.ud with q' from s.qd (u zero): one test of u and u' decides
+    const auto alpha = kane::angular_acceleration<N, F>();
+    kane::evaluator<St, kane::frames<F>, kane::level::acceleration> acc;
+    St by_qdd = by_qd, by_ud = by_qd, both_conflict = by_qd;
+    for (std::size_t i = 0; i < NQ; ++i)
+      by_qdd.qdd[i] = by_ud.ud[i] = both_conflict.qdd[i] = 0.5 - 0.1 * double(i);
+    both_conflict.ud[NQ - 1] = 7.0;
+    acc.update(by_qdd);
+    REQUIRE(acc.status() == kane::solve_status::ok);
+    const auto expected_alpha = kane::express<N>(alpha, acc);
+    acc.update(by_ud);
+    CHECK(acc.status() == kane::solve_status::ok);
+    CHECK(kane::express<N>(alpha, acc) == expected_alpha);
+    acc.update(both_conflict);
+    CHECK(acc.status() == kane::solve_status::conflicting_rates);
+    by_ud.u[0] = std::numeric_limits<double>::quiet_NaN();  // u NaN beside a given q': not ok
+    acc.update(by_ud);
+    CHECK(acc.status() != kane::solve_status::ok);
   };
   check(B6{}, std::integral_constant<std::size_t, 6>{});
   check(C{}, std::integral_constant<std::size_t, 3>{});

@@ -201,12 +201,17 @@ class evaluator<St, frames<Fs...>, Level, Given>
   // 0 if the rates this level reads (u and u' of s, or q' and q'' as read into st_) are finite, NaN if not.
   template <detail::rates Ud = detail::rates::of_state>
   scalar rates_residue(const St& s) const {
-    scalar residue = scalar(0);
-    if constexpr (velocity)
-      residue += solves ? detail::nonfinite_residue(s.u) : detail::nonfinite_residue(st_.qd);
-    if constexpr (acceleration && Ud == detail::rates::of_state)
-      residue += solves ? detail::nonfinite_residue(s.ud) : detail::nonfinite_residue(st_.qdd);
-    return residue;
+    constexpr bool ud = acceleration && Ud == detail::rates::of_state;
+    if constexpr (!velocity)
+      return scalar(0);
+    else if constexpr (solves && ud)
+      return detail::nonfinite_residue(s.u) + detail::nonfinite_residue(s.ud);
+    else if constexpr (solves)
+      return detail::nonfinite_residue(s.u);
+    else if constexpr (ud)  // st_.qd and st_.qdd were just copied whole: read in blocks
+      return detail::input_residue<true>(st_.qd, st_.qdd);
+    else
+      return detail::input_residue<true>(st_.qd);
   }
 
   // Reads::rest: u' = 0, not read from the state (motion.hpp)
@@ -231,11 +236,8 @@ class evaluator<St, frames<Fs...>, Level, Given>
     const bool rotations = detail::attitudes(st_, closure{});       // NaN in st_ where not
     bool conflict = false;  // without a speed set: q' and u (q'' and u') that disagree
     if constexpr (!solves) {
-      conflict = detail::merged_rates(st_.qd, s.qd, s.u) && velocity;
-      if constexpr (rests<Reads>)
-        st_.qdd = {};
-      else
-        conflict = (detail::merged_rates(st_.qdd, s.qdd, s.ud) && acceleration) || conflict;
+      conflict = detail::merged_state_rates < velocity, acceleration && !rests < Reads >> (st_, s);
+      if constexpr (rests<Reads>) st_.qdd = {};
     } else if constexpr (Rates && rests<Reads>)
       detail::assign(st_.u, s.u), detail::assign_zero(st_.ud);
     else if constexpr (Rates)

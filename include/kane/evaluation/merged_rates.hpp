@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
+#include <utility>
 
 #include "kane/detail/inline.hpp"
 
@@ -44,30 +45,59 @@ KANE_ALWAYS_INLINE bool merged_rates(std::array<S, NQ>& out, const std::array<S,
   if constexpr (NU != NQ) {
     out = d;
     return false;
-  } else if constexpr (std::is_same_v<S, double>) {
-    bool u_zero = true;
-    for (std::size_t i = 0; i < NQ; ++i) u_zero = u_zero && u[i] == 0.0;
-    if (__builtin_constant_p(u_zero) && u_zero) {  // u known to be 0 (a state just filled): d
-      out = d;
-      return false;
-    }
-    std::uint64_t bits = 0;  // u 0 at run time, as where q' is given in s.qd alone: d
-    for (std::size_t i = 0; i < NQ; ++i) {
-      std::uint64_t b;
-      std::memcpy(&b, &u[i], sizeof b);
-      bits |= b << 1;  // 0 and -0 alike
-    }
-    if (bits == 0) {
-      out = d;
-      return false;
-    }
-    const auto m = merge_out_of_line(d, u);
-    out = m.rates;
-    return m.conflict;
   } else {
     const auto m = merge_numbers(d, u);
     out = m.rates;
     return m.conflict;
+  }
+}
+// The bits of u but their signs, ORed in blocks of two: 0 where every number of u is 0 or -0.
+template <std::size_t N>
+KANE_ALWAYS_INLINE std::uint64_t nonzero_bits(const std::array<double, N>& u) {
+  using pair = std::uint64_t __attribute__((vector_size(16)));
+  pair b{};
+  [&]<std::size_t... K>(std::index_sequence<K...>) KANE_ALWAYS_INLINE_LAMBDA {
+    (
+        [&] {
+          pair x;
+          std::memcpy(&x, u.data() + 2 * K, sizeof x);
+          b |= x;
+        }(),
+        ...);
+  }
+  (std::make_index_sequence<N / 2>{});
+  std::uint64_t one = 0;
+  if constexpr (N % 2) std::memcpy(&one, u.data() + N - 1, sizeof one);
+  return (b[0] | b[1] | one) << 1;
+}
+// q' (V) and q'' (A) of a state s without a speed set into out (merged_rates); true where one
+// conflicts. For doubles one test of u and u' first: where both hold zeros alone, s.qd and s.qdd.
+template <bool V, bool A, class St>
+KANE_ALWAYS_INLINE bool merged_state_rates(St& out, const St& s) {
+  if constexpr (std::is_same_v<typename St::scalar, double> && St::nu == St::nq) {
+    std::uint64_t bits = 0;
+    if constexpr (V) bits |= nonzero_bits(s.u);
+    if constexpr (A) bits |= nonzero_bits(s.ud);
+    if (bits == 0) {
+      if constexpr (V) out.qd = s.qd;
+      if constexpr (A) out.qdd = s.qdd;
+      return false;
+    }
+    bool conflict = false;
+    if constexpr (V) {
+      const auto m = merge_out_of_line(s.qd, s.u);
+      out.qd = m.rates, conflict = m.conflict;
+    }
+    if constexpr (A) {
+      const auto m = merge_out_of_line(s.qdd, s.ud);
+      out.qdd = m.rates, conflict = conflict || m.conflict;
+    }
+    return conflict;
+  } else {
+    bool conflict = false;
+    if constexpr (V) conflict = merged_rates(out.qd, s.qd, s.u);
+    if constexpr (A) conflict = merged_rates(out.qdd, s.qdd, s.ud) || conflict;
+    return conflict;
   }
 }
 
