@@ -98,6 +98,36 @@ TEST_CASE(
   CHECK(fworst <= 2.5e-7f);
 }
 
+TEST_CASE(
+    "numbers: an evaluator's sines and cosines of its angles are those of kane::lanes, an ulp or two "
+    "from std::sin and std::cos",
+    "[lanes]") {
+  namespace m = models::pendulum_absolute;
+  using L = kane::lanes<double, 8>;
+  kane::evaluator<kane::state<double, 2>, kane::frames<m::A, m::B>> ev;
+  std::mt19937 g(5);
+  std::uniform_real_distribution<double> d(-1e5, 1e5);
+  const double odd[] = {-0.0, 0.0, 1e-310, 0.5, -2.5, 1e6, -3e300, std::numeric_limits<double>::infinity()};
+  for (int n = 0; n < 4000; ++n) {
+    kane::state<double, 2> s;
+    s.q = {n < 8 ? odd[n] : d(g) / (n % 2 ? 1e4 : 1.0), d(g)};
+    ev.update(s);
+    const double* a = ev.axes<m::A>().data();  // e_A1 = (cos q1, sin q1, 0) in N
+    const L lanes_s = sin(L(s.q[0])), lanes_c = cos(L(s.q[0]));
+    INFO("q1 = " << s.q[0]);
+    if (!std::isfinite(s.q[0])) {
+      CHECK(std::isnan(a[0]));
+      continue;
+    }
+    CHECK(std::abs(a[0] - std::cos(s.q[0])) <= 4e-16);
+    CHECK(std::abs(a[1] - std::sin(s.q[0])) <= 4e-16);
+    CHECK(std::signbit(a[1]) == std::signbit(std::sin(s.q[0])));
+#if defined(__SSE2__) && defined(__GNUC__)
+    CHECK((a[0] == lanes_c[0] && a[1] == lanes_s[0]));  // one kernel for numbers and lanes
+#endif
+  }
+}
+
 TEST_CASE("lanes: to_lanes pads a short batch with its first state, from_lanes writes count states",
           "[lanes]") {
   std::vector<std::array<double, 3>> xs{{1, 2, 3}, {4, 5, 6}, {7, 8, 9}};

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <limits>
 #include <type_traits>
 #if defined(__SSE2__)
 #include <immintrin.h>
@@ -33,6 +34,8 @@ KANE_ALWAYS_INLINE bool all_lanes(const M& m) {
 #endif
 #if defined(__SSE4_1__)
   if constexpr (sizeof(M) == 16) return _mm_testc_si128(std::bit_cast<__m128i>(m), _mm_set1_epi32(-1)) != 0;
+#elif defined(__SSE2__)
+  if constexpr (sizeof(M) == 16) return _mm_movemask_epi8(std::bit_cast<__m128i>(m)) == 0xffff;
 #endif
   bool all = true;
   for (std::size_t i = 0; i < sizeof(M) / sizeof(m[0]); ++i) all = all && m[i] != 0;
@@ -42,30 +45,24 @@ KANE_ALWAYS_INLINE bool all_lanes(const M& m) {
 // sin x and cos x in every lane, in vector registers for |x| <= 1e5 (doubles; floats 8192): x =
 // k pi/2 + r, |r| <= pi/4, and polynomials in r (fdlibm's kernels; for floats Cephes'), within an
 // ulp or two of std::sin and std::cos. Other lanes (large, inf, NaN) take std::sin and std::cos.
+// k's quadrant picks and signs are bit operations: no compare of 64-bit integers, which SSE2 lacks.
 template <class S, std::size_t W, class vector>
 KANE_ALWAYS_INLINE void lane_sincos(const vector& x, vector& s, vector& c) {
   constexpr bool dbl = std::is_same_v<S, double>;
   using I = std::conditional_t<dbl, long long, int>;
   typedef I ints __attribute__((vector_size(sizeof(S) * W)));
-  const vector ax = x < vector{} ? -x : x;
-  const ints near = ax <= vector{} + S(dbl ? 1e5 : 8192);
+  typedef int ints32 __attribute__((vector_size(sizeof(int) * W)));
+  const ints sign = ints{} + std::numeric_limits<I>::min();  // the sign bit alone
+  const ints near = __builtin_bit_cast(vector, __builtin_bit_cast(ints, x) & ~sign) <= S(dbl ? 1e5 : 8192);
   const bool all = all_lanes(near);
-  const vector xr = near ? x : vector{};
-  const vector t = xr * S(0.63661977236758134308) + (xr < vector{} ? S(-0.5) : S(0.5));
-  ints k;
-  vector kd;
-#ifdef __AVX512DQ__
-  constexpr bool to_32_bits = false;  // AVX-512DQ converts doubles to 64-bit integers and back
-#else
-  constexpr bool to_32_bits = dbl;
-#endif
-  if constexpr (to_32_bits) {  // k in 32 bits (|k| < 2^16): AVX2 converts doubles to 32-bit integers only
-    typedef int ints32 __attribute__((vector_size(sizeof(int) * W)));
-    const ints32 k32 = __builtin_convertvector(t, ints32);
-    k = __builtin_convertvector(k32, ints), kd = __builtin_convertvector(k32, vector);
-  } else {
-    k = __builtin_convertvector(t, ints), kd = __builtin_convertvector(k, vector);
-  }
+  const vector xr = __builtin_bit_cast(vector, near & __builtin_bit_cast(ints, x));
+  // k = round(x 2/pi), |k| < 2^17: x 2/pi plus a half of x's sign, truncated
+  const ints32 k =
+      __builtin_convertvector(xr * S(0.63661977236758134308) +
+                                  __builtin_bit_cast(vector, __builtin_bit_cast(ints, vector{} + S(0.5)) |
+                                                                 (__builtin_bit_cast(ints, xr) & sign)),
+                              ints32);
+  const vector kd = __builtin_convertvector(k, vector);
   vector r, sr, cr;
   if constexpr (dbl) {
     // pi/2 = p1 + p2 + p3 + p4, p1 .. p3 of 33 bits: k p_i is exact for |k| < 2^20 (fdlibm's split)
@@ -92,9 +89,14 @@ KANE_ALWAYS_INLINE void lane_sincos(const vector& x, vector& s, vector& c) {
     cr = 1.0f - 0.5f * z +
          z * z * (4.166664568298827e-2f + z * (-1.388731625493765e-3f + z * 2.443315711809948e-5f));
   }
-  const ints odd = (k & 1) != 0, sn = (k & 2) != 0, cn = ((k + 1) & 2) != 0;
-  vector sv = odd ? cr : r == vector{} ? r : sr, cv = odd ? sr : cr;  // sin -0 = -0
-  s = sn ? -sv : sv, c = cn ? -cv : cv;
+  // masks of all ones or zeros from k's low bits, widened from 32 bits by sign extension
+  const ints odd = __builtin_convertvector(-(k & 1), ints);
+  const ints sn = __builtin_convertvector(k << 30, ints) & sign,
+             cn = __builtin_convertvector((k + 1) << 30, ints) & sign;
+  const ints sb = __builtin_bit_cast(ints, sr) | (__builtin_bit_cast(ints, r) & sign),
+             cb = __builtin_bit_cast(ints, cr);  // sin -0 = -0
+  s = __builtin_bit_cast(vector, ((odd & cb) | (~odd & sb)) ^ sn);
+  c = __builtin_bit_cast(vector, ((odd & sb) | (~odd & cb)) ^ cn);
   if (!all)
     for (std::size_t i = 0; i < W; ++i)
       if (!near[i]) s[i] = std::sin(x[i]), c[i] = std::cos(x[i]);
