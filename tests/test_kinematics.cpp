@@ -279,7 +279,7 @@ TEST_CASE("kinematics: without a speed set q' comes from s.qd or s.u, number by 
     kane::evaluator<St, kane::frames<F>, kane::level::acceleration> acc;
     St by_qdd = by_qd, by_ud = by_qd, both_conflict = by_qd;
     for (std::size_t i = 0; i < NQ; ++i)
-      by_qdd.qdd[i] = by_ud.ud[i] = both_conflict.qdd[i] = 0.5 - 0.1 * double(i);
+      by_qdd.qdd[i] = by_ud.ud[i] = both_conflict.qdd[i] = 0.5 + 0.1 * double(i);
     both_conflict.ud[NQ - 1] = 7.0;
     acc.update(by_qdd);
     REQUIRE(acc.status() == kane::solve_status::ok);

@@ -204,14 +204,11 @@ class evaluator<St, frames<Fs...>, Level, Given>
     constexpr bool ud = acceleration && Ud == detail::rates::of_state;
     if constexpr (!velocity)
       return scalar(0);
-    else if constexpr (solves && ud)
-      return detail::nonfinite_residue(s.u) + detail::nonfinite_residue(s.ud);
     else if constexpr (solves)
-      return detail::nonfinite_residue(s.u);
-    else if constexpr (ud)  // st_.qd and st_.qdd were just copied whole: read in blocks
-      return detail::input_residue<true>(st_.qd, st_.qdd);
-    else
-      return detail::input_residue<true>(st_.qd);
+      return ud ? detail::nonfinite_residue(s.u) + detail::nonfinite_residue(s.ud)
+                : detail::nonfinite_residue(s.u);
+    else  // st_.qd and st_.qdd were just copied whole: read in blocks
+      return ud ? detail::input_residue<true>(st_.qd, st_.qdd) : detail::input_residue<true>(st_.qd);
   }
 
   // Reads::rest: u' = 0, not read from the state (motion.hpp)
@@ -236,7 +233,8 @@ class evaluator<St, frames<Fs...>, Level, Given>
     const bool rotations = detail::attitudes(st_, closure{});       // NaN in st_ where not
     bool conflict = false;  // without a speed set: q' and u (q'' and u') that disagree
     if constexpr (!solves) {
-      conflict = detail::merged_state_rates < velocity, acceleration && !rests < Reads >> (st_, s);
+      constexpr bool qdd = !rests<Reads>;
+      conflict = detail::merged_state_rates<qdd, velocity, acceleration>(st_, s);
       if constexpr (rests<Reads>) st_.qdd = {};
     } else if constexpr (Rates && rests<Reads>)
       detail::assign(st_.u, s.u), detail::assign_zero(st_.ud);

@@ -70,33 +70,30 @@ KANE_ALWAYS_INLINE std::uint64_t nonzero_bits(const std::array<double, N>& u) {
   if constexpr (N % 2) std::memcpy(&one, u.data() + N - 1, sizeof one);
   return (b[0] | b[1] | one) << 1;
 }
-// q' (V) and q'' (A) of a state s without a speed set into out (merged_rates); true where one
-// conflicts. For doubles one test of u and u' first: where both hold zeros alone, s.qd and s.qdd.
-template <bool V, bool A, class St>
+// q' and, with Qdd, q'' of a state s without a speed set into out (merged_rates); true where one
+// conflicts that the level reads (V: q', A: q''). For doubles one test of u and u' first: where both
+// hold zeros alone, s.qd and s.qdd.
+template <bool Qdd, bool V, bool A, class St>
 KANE_ALWAYS_INLINE bool merged_state_rates(St& out, const St& s) {
   if constexpr (std::is_same_v<typename St::scalar, double> && St::nu == St::nq) {
-    std::uint64_t bits = 0;
-    if constexpr (V) bits |= nonzero_bits(s.u);
-    if constexpr (A) bits |= nonzero_bits(s.ud);
+    std::uint64_t bits = nonzero_bits(s.u);
+    if constexpr (Qdd) bits |= nonzero_bits(s.ud);
     if (bits == 0) {
-      if constexpr (V) out.qd = s.qd;
-      if constexpr (A) out.qdd = s.qdd;
+      out.qd = s.qd;
+      if constexpr (Qdd) out.qdd = s.qdd;
       return false;
     }
-    bool conflict = false;
-    if constexpr (V) {
-      const auto m = merge_out_of_line(s.qd, s.u);
-      out.qd = m.rates, conflict = m.conflict;
-    }
-    if constexpr (A) {
-      const auto m = merge_out_of_line(s.qdd, s.ud);
-      out.qdd = m.rates, conflict = conflict || m.conflict;
+    const auto m = merge_out_of_line(s.qd, s.u);
+    out.qd = m.rates;
+    bool conflict = V && m.conflict;
+    if constexpr (Qdd) {
+      const auto mm = merge_out_of_line(s.qdd, s.ud);
+      out.qdd = mm.rates, conflict = conflict || (A && mm.conflict);
     }
     return conflict;
   } else {
-    bool conflict = false;
-    if constexpr (V) conflict = merged_rates(out.qd, s.qd, s.u);
-    if constexpr (A) conflict = merged_rates(out.qdd, s.qdd, s.ud) || conflict;
+    bool conflict = merged_rates(out.qd, s.qd, s.u) && V;
+    if constexpr (Qdd) conflict = (merged_rates(out.qdd, s.qdd, s.ud) && A) || conflict;
     return conflict;
   }
 }
