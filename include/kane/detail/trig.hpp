@@ -128,7 +128,7 @@ KANE_ALWAYS_INLINE trig<typename State::scalar, Needed> make_trig(const State& s
     using std::sin;
     // the angles read before the first call: a call may change a state that is not a local
     [[maybe_unused]] const std::array<S, sizeof...(K)> q{st.q[Needed[K] - 1]...};
-#if defined(__SSE2__) && defined(__GNUC__)
+#if defined(__SSE2__) && defined(__GNUC__) && !defined(KANE_STD_TRIG)
     if constexpr (n > 0 && std::is_floating_point_v<S> && !std::is_same_v<S, long double>) {
       constexpr std::size_t w = packet_width<S>, all = std::bit_ceil(n);
       vector_sincos<(all < w ? all : w)>(q, t.s, t.c);
