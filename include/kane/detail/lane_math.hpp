@@ -51,18 +51,24 @@ KANE_ALWAYS_INLINE void lane_sincos(const vector& x, vector& s, vector& c) {
   constexpr bool dbl = std::is_same_v<S, double>;
   using I = std::conditional_t<dbl, long long, int>;
   typedef I ints __attribute__((vector_size(sizeof(S) * W)));
-  typedef int ints32 __attribute__((vector_size(sizeof(int) * W)));
   const ints sign = ints{} + std::numeric_limits<I>::min();  // the sign bit alone
   const ints near = __builtin_bit_cast(vector, __builtin_bit_cast(ints, x) & ~sign) <= S(dbl ? 1e5 : 8192);
   const bool all = all_lanes(near);
   const vector xr = __builtin_bit_cast(vector, near & __builtin_bit_cast(ints, x));
-  // k = round(x 2/pi), |k| < 2^17: x 2/pi plus a half of x's sign, truncated
-  const ints32 k =
-      __builtin_convertvector(xr * S(0.63661977236758134308) +
-                                  __builtin_bit_cast(vector, __builtin_bit_cast(ints, vector{} + S(0.5)) |
-                                                                 (__builtin_bit_cast(ints, xr) & sign)),
-                              ints32);
+  // k = round(x 2/pi), |k| < 2^17: x 2/pi plus a half of x's sign, truncated; in 32 bits where the
+  // target converts doubles to 32-bit integers only, widened once
+  const vector t = xr * S(0.63661977236758134308) +
+                   __builtin_bit_cast(vector, __builtin_bit_cast(ints, vector{} + S(0.5)) |
+                                                  (__builtin_bit_cast(ints, xr) & sign));
+#ifdef __AVX512DQ__
+  const ints k = __builtin_convertvector(t, ints);
   const vector kd = __builtin_convertvector(k, vector);
+#else
+  typedef int ints32 __attribute__((vector_size(sizeof(int) * W)));
+  const ints32 k32 = __builtin_convertvector(t, ints32);
+  const ints k = __builtin_convertvector(k32, ints);
+  const vector kd = __builtin_convertvector(k32, vector);
+#endif
   vector r, sr, cr;
   if constexpr (dbl) {
     // pi/2 = p1 + p2 + p3 + p4, p1 .. p3 of 33 bits: k p_i is exact for |k| < 2^20 (fdlibm's split)
@@ -89,10 +95,9 @@ KANE_ALWAYS_INLINE void lane_sincos(const vector& x, vector& s, vector& c) {
     cr = 1.0f - 0.5f * z +
          z * z * (4.166664568298827e-2f + z * (-1.388731625493765e-3f + z * 2.443315711809948e-5f));
   }
-  // masks of all ones or zeros from k's low bits, widened from 32 bits by sign extension
-  const ints odd = __builtin_convertvector(-(k & 1), ints);
-  const ints sn = __builtin_convertvector(k << 30, ints) & sign,
-             cn = __builtin_convertvector((k + 1) << 30, ints) & sign;
+  // masks of all ones or zeros from k's low bits, and sign bits from bit 1 of k and of k + 1
+  constexpr int up = 8 * sizeof(I) - 2;
+  const ints odd = -(k & 1), sn = (k << up) & sign, cn = ((k + 1) << up) & sign;
   const ints sb = __builtin_bit_cast(ints, sr) | (__builtin_bit_cast(ints, r) & sign),
              cb = __builtin_bit_cast(ints, cr);  // sin -0 = -0
   s = __builtin_bit_cast(vector, ((odd & cb) | (~odd & sb)) ^ sn);
