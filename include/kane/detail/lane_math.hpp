@@ -9,8 +9,12 @@
 #include <cstring>
 #include <limits>
 #include <type_traits>
-#if defined(__SSE2__)
+#if defined(__AVX__)  // the intrinsics of the target's widest set, as Eigen includes them
 #include <immintrin.h>
+#elif defined(__SSE4_1__)
+#include <smmintrin.h>
+#elif defined(__SSE2__)
+#include <emmintrin.h>
 #endif
 
 #include "kane/detail/inline.hpp"
@@ -120,15 +124,21 @@ KANE_ALWAYS_INLINE vector lane_sqrt(const vector& a) {
     for (std::size_t at = 0; at < sizeof(vector); at += bytes) {
       reg x;
       std::memcpy(&x, reinterpret_cast<const char*>(&a) + at, bytes);
+#if defined(__AVX512F__)
       if constexpr (bytes == 64 && dbl)
         x = std::bit_cast<reg>(_mm512_sqrt_pd(std::bit_cast<__m512d>(x)));
       else if constexpr (bytes == 64)
         x = std::bit_cast<reg>(_mm512_sqrt_ps(std::bit_cast<__m512>(x)));
-      else if constexpr (bytes == 32 && dbl)
+      else
+#endif
+#if defined(__AVX__)
+          if constexpr (bytes == 32 && dbl)
         x = std::bit_cast<reg>(_mm256_sqrt_pd(std::bit_cast<__m256d>(x)));
       else if constexpr (bytes == 32)
         x = std::bit_cast<reg>(_mm256_sqrt_ps(std::bit_cast<__m256>(x)));
-      else if constexpr (dbl)
+      else
+#endif
+          if constexpr (dbl)
         x = std::bit_cast<reg>(_mm_sqrt_pd(std::bit_cast<__m128d>(x)));
       else
         x = std::bit_cast<reg>(_mm_sqrt_ps(std::bit_cast<__m128>(x)));
