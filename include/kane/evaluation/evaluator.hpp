@@ -32,6 +32,7 @@
 #include "kane/evaluation/attitudes.hpp"
 #include "kane/evaluation/evaluate.hpp"
 #include "kane/evaluation/kinematic_equations.hpp"
+#include "kane/evaluation/merged_rates.hpp"
 #include "kane/evaluation/outward_pass.hpp"
 #include "kane/evaluation/state_indices.hpp"
 #include "kane/evaluation/status.hpp"
@@ -205,8 +206,7 @@ class evaluator<St, frames<Fs...>, Level, Given>
     if constexpr (!velocity)
       return scalar(0);
     else if constexpr (solves)
-      return ud ? detail::nonfinite_residue(s.u) + detail::nonfinite_residue(s.ud)
-                : detail::nonfinite_residue(s.u);
+      return detail::nonfinite_residue(s.u) + (ud ? detail::nonfinite_residue(s.ud) : -scalar(0));
     else  // st_.qd and st_.qdd were just copied whole: read in blocks
       return ud ? detail::input_residue<true>(st_.qd, st_.qdd) : detail::input_residue<true>(st_.qd);
   }

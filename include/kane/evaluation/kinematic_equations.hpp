@@ -16,7 +16,6 @@
 #include "kane/detail/structure.hpp"
 #include "kane/evaluation/block_solve.hpp"
 #include "kane/evaluation/evaluate.hpp"
-#include "kane/evaluation/merged_rates.hpp"
 #include "kane/evaluation/orthogonal_solve.hpp"
 #include "kane/evaluation/status.hpp"
 #include "kane/frames/state.hpp"

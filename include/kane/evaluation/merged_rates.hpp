@@ -58,7 +58,7 @@ KANE_ALWAYS_INLINE std::uint64_t nonzero_bits(const std::array<double, N>& u) {
   pair b{};
   [&]<std::size_t... K>(std::index_sequence<K...>) KANE_ALWAYS_INLINE_LAMBDA {
     (
-        [&] {
+        [&]() KANE_ALWAYS_INLINE_LAMBDA {
           pair x;
           std::memcpy(&x, u.data() + 2 * K, sizeof x);
           b |= x;
