@@ -27,8 +27,8 @@ KANE_ALWAYS_INLINE typename St::scalar normalise(St& st, list<F...>) {
           const auto sq = [&](std::size_t i)
                               KANE_ALWAYS_INLINE_LAMBDA { return st.q[c[i] - 1] * st.q[c[i] - 1]; };
           const S n2 = (sq(0) + sq(1)) + (sq(2) + sq(3));
-          // lanes: the square root and the division side by side, not one after the other
-          const S k = lane_traits<S>::width > 1 ? sqrt(n2) * (S(1) / n2) : S(1) / sqrt(n2);
+          // the square root beside the division, not after it
+          const S k = sqrt(n2) * (S(1) / n2);
           static_for_inline<4>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { st.q[c[i] - 1] *= k; });
           residue += k - k;
         }
