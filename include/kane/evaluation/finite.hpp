@@ -3,13 +3,16 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <type_traits>
 #include <utility>
 
 #include "kane/detail/inline.hpp"
 #include "kane/detail/lane_traits.hpp"
+#include "kane/detail/list.hpp"
 #include "kane/detail/wide_stores.hpp"
 
 #pragma GCC diagnostic push
@@ -32,6 +35,21 @@ constexpr S nonfinite_residue(const std::array<S, N>& a) {
     return -S(0);
   else
     return pairwise_residue<0, N>(a);
+}
+// One state of doubles: true where every number of the fixed-size matrix m and of a is finite.
+// The exponent bits of x plus one in their lowest place set the sign bit exactly where they are all
+// set; or-ed, every step is an integer step of one cycle, where x - x and a sum take four each.
+template <class M, std::size_t N = 0>
+KANE_ALWAYS_INLINE bool finite_bits(const M& m, const std::array<double, N>& a = {}) {
+  constexpr std::uint64_t exponent = 0x7ff0000000000000, one = 0x0010000000000000;
+  std::uint64_t bad = 0;
+  const auto add = [&](double x) KANE_ALWAYS_INLINE_LAMBDA {
+    bad |= (std::bit_cast<std::uint64_t>(x) & exponent) + one;
+  };
+  static_for_inline<N>([&](auto i) KANE_ALWAYS_INLINE_LAMBDA { add(a[i]); });
+  static_for_inline<std::size_t(M::SizeAtCompileTime)>(
+      [&](auto i) KANE_ALWAYS_INLINE_LAMBDA { add(m.coeff(std::ptrdiff_t(i))); });
+  return (bad >> 63) == 0;
 }
 // The nonfinite_residue of a state's arrays. InBlocks: their owner stored them in blocks
 // (detail/wide_stores.hpp); then six doubles or more are read in those blocks into one vector sum,

@@ -115,10 +115,15 @@ using reads_of_copy =
 template <std::size_t N, checking Check, class S, class Q, class Ud, class DX>
 KANE_ALWAYS_INLINE status_of<S> write_checked_rates(DX& dxdt, const Q& qd, const Ud& ud,
                                                     status_of<S> status) {
-  constexpr bool lanes = lane_traits<S>::width > 1;
-  S r = matrix_residue(ud);
-  if constexpr (Check == checking::at_end) r += nonfinite_residue(qd);
-  if constexpr (!lanes) fail_unless(status, r == S(0), solve_status::not_finite);  // one flag for one state
+  constexpr bool lanes = lane_traits<S>::width > 1, at_end = Check == checking::at_end;
+  S r = -S(0);
+  if constexpr (std::is_same_v<S, double>)  // one flag for one state, by its bits
+    fail_unless(status, at_end ? finite_bits(ud, qd) : finite_bits(ud), solve_status::not_finite);
+  else {
+    r = matrix_residue(ud);
+    if constexpr (at_end) r += nonfinite_residue(qd);
+    if constexpr (!lanes) fail_unless(status, r == S(0), solve_status::not_finite);
+  }
   const auto spoil = nan_unless<S>(opaque_ok<S>(status));
   if constexpr (lanes) fail_unless(status, r == S(0), solve_status::not_finite);
   static_for<N + std::size_t(Ud::SizeAtCompileTime)>([&](auto i) {
