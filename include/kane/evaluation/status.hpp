@@ -263,10 +263,7 @@ status_of<typename M::Scalar> finished(M& x, status_of<typename M::Scalar> statu
     x.array() -= r;
     fail_unless(status, r == S(0), solve_status::not_finite);
   } else {
-    if constexpr (std::is_same_v<S, double>)  // by its bits
-      fail_unless(status, finite_bits(x), solve_status::not_finite);
-    else
-      fail_unless(status, all_finite_matrix(x), solve_status::not_finite);
+    fail_unless(status, all_finite_matrix(x), solve_status::not_finite);
     if (status != solve_status::ok) x.setConstant(std::numeric_limits<S>::quiet_NaN());
   }
   return status;
