@@ -38,7 +38,7 @@ constexpr S nonfinite_residue(const std::array<S, N>& a) {
 }
 // One state of doubles: true where every number of the fixed-size matrix m and of a is finite.
 // The exponent bits of x plus one in their lowest place set the sign bit exactly where they are all
-// set; or-ed, every step is an integer step of one cycle, where x - x and a sum take four each.
+// set; or-ed, every step is an integer one, shorter than the floating-point x - x and sum.
 template <class M, std::size_t N = 0>
 KANE_ALWAYS_INLINE bool finite_bits(const M& m, const std::array<double, N>& a = {}) {
   constexpr std::uint64_t exponent = 0x7ff0000000000000, one = 0x0010000000000000;
