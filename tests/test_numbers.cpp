@@ -307,3 +307,24 @@ TEST_CASE("numbers: constraints solved at a failed evaluator fail with its statu
   CHECK(sol.status == solve_status::not_finite);
   CHECK(std::isnan(sol.A(1, 2)));
 }
+
+TEST_CASE("numbers: finite_bits is std::isfinite of every number, at each place of a matrix and an array",
+          "[numbers]") {
+  constexpr double inf = std::numeric_limits<double>::infinity(), big = std::numeric_limits<double>::max();
+  constexpr double tiny = std::numeric_limits<double>::denorm_min();
+  const std::vector<double> values{0.0,  -0.0,  1.0,    -2.5, big,  -big,
+                                   tiny, -tiny, 1e-310, inf,  -inf, not_a_number};
+  for (const double v : values)
+    for (int i = 0; i < 5; ++i) {  // three in the matrix, two in the array: i picks the one set to v
+      Eigen::Vector3d m(0.5, -1.0, 3.0);
+      std::array<double, 2> a{7.0, -0.25};
+      if (i < 3)
+        m(i) = v;
+      else
+        a[std::size_t(i - 3)] = v;
+      CHECK(kane::detail::finite_bits(m, a) == std::isfinite(v));
+      CHECK(kane::detail::finite_bits(m) == (i >= 3 || std::isfinite(v)));
+    }
+  CHECK(kane::detail::finite_bits(Eigen::Matrix<double, 1, 1>(inf)) == false);
+  CHECK(kane::detail::finite_bits(Eigen::Matrix<double, 1, 1>(-big)) == true);
+}
