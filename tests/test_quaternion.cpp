@@ -120,7 +120,9 @@ TEST_CASE("quaternion: w from finite differences of direction cosines along the 
   }
 }
 
-TEST_CASE("quaternion: Euler parameters are normalised on update, zero or NaN gives not_finite") {
+TEST_CASE(
+    "quaternion: Euler parameters are normalised on update; zero, NaN or a norm beyond 1e+-154 gives "
+    "not_finite") {
   const auto& c = body[0];
   state s = at(c);
   for (int i = 0; i < 4; ++i) s.q[i] *= 2.5;
@@ -131,6 +133,20 @@ TEST_CASE("quaternion: Euler parameters are normalised on update, zero or NaN gi
   const auto qd = ev.coordinate_rates();
   for (int i = 0; i < 7; ++i) CHECK(qd[i] == Approx(c.qd[i]).margin(1e-14));
   CHECK(max_diff(kane::express<N>(kane::velocity<N, P>(), ev).eigen().transpose(), c.vP_N) < 1e-14);
+  for (const double scale : {1e-150, 1e150}) {  // norms from 1e-154 to 1e154: norm^2 and 1 / norm^2 finite
+    state t = at(c);
+    for (int i = 0; i < 4; ++i) t.q[i] *= scale;
+    ev.update(t);
+    REQUIRE(ev.status() == kane::solve_status::ok);
+    for (int i = 0; i < 4; ++i) CHECK(ev.state().q[i] == Approx(c.q[i]).margin(1e-15));
+  }
+  for (const double scale : {1e-160, 1e160}) {  // beyond: not_finite, never q = 0 with ok
+    state t = at(c);
+    for (int i = 0; i < 4; ++i) t.q[i] *= scale;
+    ev.update(t);
+    CHECK(ev.status() == kane::solve_status::not_finite);
+    CHECK(std::isnan(ev.coordinate_rates()[0]));
+  }
   for (double bad : {0.0, std::nan("")}) {
     state z = at(c);
     for (int i = 0; i < 4; ++i) z.q[i] = i == 0 ? bad : 0.0;
