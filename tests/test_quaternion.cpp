@@ -121,7 +121,7 @@ TEST_CASE("quaternion: w from finite differences of direction cosines along the 
 }
 
 TEST_CASE(
-    "quaternion: Euler parameters are normalised on update; zero, NaN or a norm beyond 1e+-154 gives "
+    "quaternion: Euler parameters are normalised on update; zero, NaN or a norm beyond 2^+-512 gives "
     "not_finite") {
   const auto& c = body[0];
   state s = at(c);
@@ -133,7 +133,7 @@ TEST_CASE(
   const auto qd = ev.coordinate_rates();
   for (int i = 0; i < 7; ++i) CHECK(qd[i] == Approx(c.qd[i]).margin(1e-14));
   CHECK(max_diff(kane::express<N>(kane::velocity<N, P>(), ev).eigen().transpose(), c.vP_N) < 1e-14);
-  for (const double scale : {1e-150, 1e150}) {  // norms from 1e-154 to 1e154: norm^2 and 1 / norm^2 finite
+  for (const double scale : {1e-150, 1e150}) {  // norms from 2^-512 to 2^512: norm^2 and 1 / norm^2 finite
     state t = at(c);
     for (int i = 0; i < 4; ++i) t.q[i] *= scale;
     ev.update(t);
