@@ -1,5 +1,6 @@
 // Finiteness tests without a comparison per number: x - x is 0 for a finite x and NaN for NaN or
-// inf, and a sum of such residues is 0 exactly when every number is finite.
+// inf, and a sum of such residues is 0 exactly when every number is finite. One double state's
+// results are tested by their exponent bits instead (finite_bits).
 #pragma once
 
 #include <array>

@@ -107,8 +107,9 @@ struct read_in_blocks : Reads {
 template <class Reads, class S, class X>
 using reads_of_copy =
     std::conditional_t<std::is_same_v<S, double> && contiguous<X>(), read_in_blocks<Reads>, Reads>;
-// dxdt = (q', u') (N numbers of q'), NaN unless ok. r is the sum of u'_i - u'_i (and q'_i - q'_i where
-// Check is checking::at_end), 0 or NaN; the status is not_finite where r is NaN. Over lanes each number
+// dxdt = (q', u') (N numbers of q'), NaN unless ok. The status is not_finite where u' (and q' where
+// Check is checking::at_end) is not: for one double state by their bits (finite_bits), else where r,
+// the sum of u'_i - u'_i (and q'_i - q'_i), is NaN. Over lanes each number
 // x is x (NaN unless the status given is ok) - r: the results wait on that one sum, not on the statuses
 // it sets. The products by 1 or NaN take a flag the optimizer cannot thread: a branch here keeps the
 // local evaluator's dead stores, and the work behind them such as sin and cos, alive.
