@@ -49,29 +49,41 @@ struct independent_speeds {
     for (std::size_t k = 0; k < n; ++k) out[k] = dependent ? unknown3 : Nz[NH::independents[k] - 1];
     return out;
   }
+  // How v_dep_j enters row r of v~_k: 0 not, 1 as v_rj A_jk, 2 as + A_jk (v_dep_j = e_r), 3 as - A_jk
+  template <auto Nz>
+  static constexpr std::array<std::array<int, NH::m>, 3> dependent_terms() {
+    std::array<std::array<int, NH::m>, 3> out{};
+    for (std::size_t j = 0; j < NH::m; ++j) {
+      const pattern3 kind = Nz[NH::dependents[j] - 1];
+      const int i = column_axis(kind);
+      for (std::size_t r = 0; r < 3; ++r)
+        out[r][j] = all_zero(kind) || (i >= 0 && std::size_t(i) != r) ? 0
+                    : i < 0                                           ? 1
+                    : kind[std::size_t(i)] == entry::one              ? 2
+                                                                      : 3;
+    }
+    return out;
+  }
+  // v~_rk, the dependent terms in a fold (no function a term)
+  template <auto Nz, std::size_t r, std::size_t k, class V, std::size_t... j>
+  KANE_ALWAYS_INLINE S column_entry(const V& v, std::index_sequence<j...>) const {
+    constexpr auto t = dependent_terms<Nz>()[r];
+    S x = S(0);
+    if constexpr (!all_zero(Nz[NH::independents[k] - 1]))
+      x = v(Eigen::Index(r), Eigen::Index(NH::independents[k] - 1));
+    (void(t[j] == 1 ? x += v(Eigen::Index(r), Eigen::Index(NH::dependents[j] - 1)) *
+                           A(Eigen::Index(j), Eigen::Index(k))
+          : t[j] == 2 ? x += A(Eigen::Index(j), Eigen::Index(k))
+          : t[j] == 3 ? x -= A(Eigen::Index(j), Eigen::Index(k))
+                      : x),
+     ...);
+    return x;
+  }
   template <auto Nz, class V>
   KANE_ALWAYS_INLINE Eigen::Matrix<S, 3, int(n)> columns(const V& v) const {
     Eigen::Matrix<S, 3, int(n)> t;
     store_in_blocks<3 * n>(t.data(), [&](auto rk) KANE_ALWAYS_INLINE_LAMBDA {  // row r of column k
-      constexpr std::size_t r = rk % 3, k = rk / 3;
-      S x = S(0);
-      if constexpr (!all_zero(Nz[NH::independents[k] - 1]))
-        x = v(Eigen::Index(r), Eigen::Index(NH::independents[k] - 1));
-      static_for<NH::m>([&](auto j) {
-        constexpr pattern3 kind = Nz[NH::dependents[j] - 1];
-        constexpr int i = column_axis(kind);
-        if constexpr (all_zero(kind))
-          return;
-        else if constexpr (i < 0)
-          x += v(Eigen::Index(r), Eigen::Index(NH::dependents[j] - 1)) * A(Eigen::Index(j), Eigen::Index(k));
-        else if constexpr (std::size_t(i) != r)
-          return;
-        else if constexpr (kind[std::size_t(i)] == entry::one)
-          x += A(Eigen::Index(j), Eigen::Index(k));
-        else
-          x -= A(Eigen::Index(j), Eigen::Index(k));
-      });
-      return x;
+      return column_entry<Nz, rk % 3, rk / 3>(v, std::make_index_sequence<NH::m>{});
     });
     return t;
   }

@@ -205,14 +205,16 @@ KANE_ALWAYS_INLINE status_of<S> substitute_structured_as(const table<S, Sys::n, 
     auto reduced = [&](auto c, auto j) {
       constexpr std::size_t row = Sys::form.row[c];
       S t = rhs(index_c<row>{}, j);
-      static_for_inline<n>([&](auto d) KANE_ALWAYS_INLINE_LAMBDA {
-        if constexpr (Sys::form.block[d] != b && Sys::m[row][d] != entry::zero &&
-                      Sys::x[d][j] != entry::zero) {
-          // x_dj: an exact one from the pattern (known_entries::left leaves it unwritten)
-          const S xd = Sys::x[d][j] == entry::one ? S(1) : x[d][j];
-          t -= Sys::m[row][d] == entry::one ? xd : S(m[row][d] * xd);
-        }
-      });
+      // a fold, no function a term; x_dj = 1 from the pattern (known_entries::left leaves it unwritten)
+      [&]<std::size_t... d>(std::index_sequence<d...>) KANE_ALWAYS_INLINE_LAMBDA {
+        (void(Sys::form.block[d] != b && Sys::m[row][d] != entry::zero && Sys::x[d][j] != entry::zero
+                  ? t -= Sys::m[row][d] == entry::one
+                             ? (Sys::x[d][j] == entry::one ? S(1) : x[d][j])
+                             : S(m[row][d] * (Sys::x[d][j] == entry::one ? S(1) : x[d][j]))
+                  : t),
+         ...);
+      }
+      (std::make_index_sequence<n>{});
       return t;
     };
     if constexpr (size == 1) {
