@@ -12,8 +12,15 @@ enum class memo_use : bool { fresh, recall };
 // What an update reads of a state: the pose alone, or the pose and the rates.
 enum class reading : bool { pose, whole_state };
 // The levels one outward pass computes, a set. nan_acceleration: the level asked for, NaN in a
-// frame whose angular acceleration no one reads.
-enum class stages : unsigned { none = 0, pose = 1, velocity = 2, acceleration = 4, nan_acceleration = 8 };
+// frame whose angular acceleration no one reads. rest: u' = 0, known when the code is compiled.
+enum class stages : unsigned {
+  none = 0,
+  pose = 1,
+  velocity = 2,
+  acceleration = 4,
+  nan_acceleration = 8,
+  rest = 16
+};
 constexpr stages operator|(stages a, stages b) { return stages(unsigned(a) | unsigned(b)); }
 constexpr bool has(stages set, stages s) { return (unsigned(set) & unsigned(s)) != 0; }
 // The rate levels of an evaluator: velocity, and acceleration.

@@ -267,7 +267,8 @@ class evaluator<St, frames<Fs...>, Level, Given>
     }
     if constexpr (acceleration) {
       this->template solve_accelerations<Reads>(*this, st_);  // u' as copied (or 0)
-      this->template pass<detail::stages::acceleration, Reads>(tr, *this);
+      constexpr auto rest = rests<Reads> ? detail::stages::rest : detail::stages::none;
+      this->template pass<detail::stages::acceleration | rest, Reads>(tr, *this);
     }
   }
   template <class Reads = everything>

@@ -33,50 +33,44 @@ inline constexpr bool keys_compare_for = requires {
 };
 inline constexpr bool keys_compare = keys_compare_for<int>;
 
-// The children of a node kind that computes (a quantity is its vector v).
-template <class X, class F>
-constexpr void for_children(F&& f) {
+// The children of a node kind that computes (a quantity is its vector v), as a list.
+template <class X>
+constexpr auto children_of() {
   using C = const X&;
   if constexpr (is_v<X, add> || is_v<X, sub> || is_v<X, mul> || is_v<X, quot> || is_v<X, vdot> ||
-                is_v<X, vsum> || is_v<X, vdiff> || is_v<X, vcross>) {
-    f(std::type_identity<std::remove_cvref_t<decltype(std::declval<C>().l)>>{});
-    f(std::type_identity<std::remove_cvref_t<decltype(std::declval<C>().r)>>{});
-  } else if constexpr (is_v<X, neg> || is_v<X, unary> || power_info<X>::value || is_v<X, call>)
-    f(std::type_identity<std::remove_cvref_t<decltype(std::declval<C>().x)>>{});
-  else if constexpr (is_v<X, scaled>) {
-    f(std::type_identity<std::remove_cvref_t<decltype(std::declval<C>().s)>>{});
-    f(std::type_identity<std::remove_cvref_t<decltype(std::declval<C>().v)>>{});
-  } else if constexpr (is_v<X, vneg> || Quantity<X>)
-    f(std::type_identity<std::remove_cvref_t<decltype(std::declval<C>().v)>>{});
+                is_v<X, vsum> || is_v<X, vdiff> || is_v<X, vcross>)
+    return list<std::remove_cvref_t<decltype(std::declval<C>().l)>,
+                std::remove_cvref_t<decltype(std::declval<C>().r)>>{};
+  else if constexpr (is_v<X, neg> || is_v<X, unary> || power_info<X>::value || is_v<X, call>)
+    return list<std::remove_cvref_t<decltype(std::declval<C>().x)>>{};
+  else if constexpr (is_v<X, scaled>)
+    return list<std::remove_cvref_t<decltype(std::declval<C>().s)>,
+                std::remove_cvref_t<decltype(std::declval<C>().v)>>{};
+  else if constexpr (is_v<X, vneg> || Quantity<X>)
+    return list<std::remove_cvref_t<decltype(std::declval<C>().v)>>{};
+  else
+    return list<>{};
 }
 template <class X>
-constexpr bool has_children() {
-  bool any = false;
-  for_children<X>([&](auto) { any = true; });
-  return any;
-}
+using children_t = decltype(children_of<X>());
 // No runtime data: an empty leaf, or a node of such children alone (a * a holds two
 // members of one empty type, which a compiler need not lay out as an empty type).
-template <class X>
-constexpr bool stateless() {
-  if constexpr (is_v<X, call> || !has_children<X>())
-    return std::is_empty_v<X>;
-  else {
-    bool all = true;
-    for_children<X>([&]<class C>(std::type_identity<C>) { all = all && stateless<C>(); });
-    return all;
-  }
-}
+template <class X, class Children = children_t<X>>
+inline constexpr bool stateless = false;
+template <class X, class... C>
+inline constexpr bool stateless<X, list<C...>> = is_v<X, call> || sizeof...(C) == 0
+                                                     ? std::is_empty_v<X>
+                                                     : (true && ... && stateless<C>);
 // Recalled: computes (has children), holds no runtime data, is not a quantity (its v is).
 template <class X>
-inline constexpr bool recallable = !Quantity<X> && has_children<X>() && stateless<X>();
+inline constexpr bool recallable = !Quantity<X> && !std::is_same_v<children_t<X>, list<>> && stateless<X>;
 
-template <class X>
-constexpr std::size_t recallable_types() {  // an upper bound of the distinct ones
-  std::size_t n = recallable<X> ? 1 : 0;
-  for_children<X>([&]<class C>(std::type_identity<C>) { n += recallable_types<C>(); });
-  return n;
-}
+// An upper bound of the distinct recallable node kinds of X.
+template <class X, class Children = children_t<X>>
+inline constexpr std::size_t recallable_types = 0;
+template <class X, class... C>
+inline constexpr std::size_t recallable_types<X, list<C...>> = (recallable<X> ? 1 : 0) +
+                                                               (recallable_types<C> + ... + 0);
 template <std::size_t N>
 struct node_set {
   std::array<const void*, N> key{};
@@ -94,14 +88,14 @@ constexpr void collect_nodes(Set& set) {
       }
     set.key[set.n] = &node_key<X>::id, set.vector[set.n] = VectorExpr<X>, ++set.n;
   }
-  for_children<X>([&]<class C>(std::type_identity<C>) { collect_nodes<C>(set); });
+  [&]<class... C>(list<C...>) { (collect_nodes<C>(set), ...); }(children_t<X>{});
 }
 
 // The recallable nodes of X... that occur twice or more outside the repeats of
 // a larger such node; a scalar slot or a vector slot each.
 template <class... X>
 struct memo_plan {
-  static constexpr std::size_t bound = (recallable_types<std::remove_cvref_t<X>>() + ... + 0);
+  static constexpr std::size_t bound = (recallable_types<std::remove_cvref_t<X>> + ... + 0);
   struct nodes {
     std::array<const void*, bound> key{};
     std::array<std::size_t, bound> slot{};

@@ -97,12 +97,16 @@ class outward_pass {
     pass_over<Levels, Reads>(closure{}, t, rates);
   }
 
-  // ^R w^F = sum u_k+i-1 g_i (D = 0), ^R alpha^F = sum u'_k+i-1 g_i + ^R w^G x ^R w^F (D = 1)
-  template <class F, std::size_t D, class Rates>
+  // ^R w^F = sum u_k+i-1 g_i (D = 0), ^R alpha^F = sum u'_k+i-1 g_i + ^R w^G x ^R w^F (D = 1).
+  // Rest: u' = 0, so the sum is 0 (NaN where the kinematic equations failed) in every frame.
+  template <class F, std::size_t D, bool Rest = false, class Rates>
   KANE_ALWAYS_INLINE v3<scalar> components_value(const Rates& rates) const {
     using G = component_frame_t<closure, F, Rates>;
     v3<scalar> x = component_values<component_speeds_in<closure, F, Rates>(), D>(rates);
-    if constexpr (is_edge<G>) x = x.x * column<G>(0) + x.y * column<G>(1) + x.z * column<G>(2);
+    if constexpr (Rest && D == 1)
+      x = {x.x, x.x, x.x};
+    else if constexpr (is_edge<G>)
+      x = x.x * column<G>(0) + x.y * column<G>(1) + x.z * column<G>(2);
     if constexpr (D == 1 && is_edge<G> && !std::is_same_v<G, F>)
       x = x + cross3(load3(w_[index<G>()].data()), load3(w_[index<F>()].data()));
     return x;
@@ -163,7 +167,7 @@ class outward_pass {
     if constexpr (has(Levels, stages::nan_acceleration))
       fill_nan(a_[index<F>()]);
     else if constexpr (acceleration && component_speeds_in<closure, F, Rates>() != 0)
-      store3(a_[index<F>()].data(), components_value<F, 1>(rates));
+      store3(a_[index<F>()].data(), components_value<F, 1, has(Levels, stages::rest)>(rates));
     else if constexpr (acceleration)
       acceleration_edge<F>(rates);
   }

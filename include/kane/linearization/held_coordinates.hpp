@@ -26,6 +26,8 @@ namespace kane::detail {
 using coordinate_mask = std::uint64_t;  // bit I - 1: q_I
 inline constexpr coordinate_mask every_coordinate = ~coordinate_mask(0);
 
+template <class... X>
+constexpr coordinate_mask coordinates_in(list<X...>);
 // The coordinate values an expression reads (frames apart: units, w and alpha are leaves here).
 template <class X>
 constexpr coordinate_mask coordinates_in() {
@@ -34,11 +36,8 @@ constexpr coordinate_mask coordinates_in() {
       return 0;  // a rate: the speeds' business
     else
       return X::index <= 64 ? coordinate_mask(1) << (X::index - 1) : every_coordinate;
-  } else {
-    coordinate_mask m = 0;
-    for_children<X>([&]<class C>(std::type_identity<C>) { m |= coordinates_in<C>(); });
-    return m;
-  }
+  } else
+    return coordinates_in(children_t<X>{});
 }
 template <class... X>
 constexpr coordinate_mask coordinates_in(list<X...>) {
