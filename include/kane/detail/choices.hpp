@@ -23,6 +23,7 @@ enum class stages : unsigned {
 };
 constexpr stages operator|(stages a, stages b) { return stages(unsigned(a) | unsigned(b)); }
 constexpr bool has(stages set, stages s) { return (unsigned(set) & unsigned(s)) != 0; }
+constexpr stages rest_if(bool rest) { return rest ? stages::rest : stages::none; }
 // The rate levels of an evaluator: velocity, and acceleration.
 constexpr stages rate_stages(bool velocity, bool acceleration) {
   return (velocity ? stages::velocity : stages::none) | (acceleration ? stages::acceleration : stages::none);

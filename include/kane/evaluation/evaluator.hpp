@@ -267,8 +267,7 @@ class evaluator<St, frames<Fs...>, Level, Given>
     }
     if constexpr (acceleration) {
       this->template solve_accelerations<Reads>(*this, st_);  // u' as copied (or 0)
-      constexpr auto rest = rests<Reads> ? detail::stages::rest : detail::stages::none;
-      this->template pass<detail::stages::acceleration | rest, Reads>(tr, *this);
+      this->template pass<detail::stages::acceleration | detail::rest_if(rests<Reads>), Reads>(tr, *this);
     }
   }
   template <class Reads = everything>

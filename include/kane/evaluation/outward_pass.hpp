@@ -97,16 +97,12 @@ class outward_pass {
     pass_over<Levels, Reads>(closure{}, t, rates);
   }
 
-  // ^R w^F = sum u_k+i-1 g_i (D = 0), ^R alpha^F = sum u'_k+i-1 g_i + ^R w^G x ^R w^F (D = 1).
-  // Rest: u' = 0, so the sum is 0 (NaN where the kinematic equations failed) in every frame.
+  // ^R w^F = sum u_k+i-1 g_i (D = 0), ^R alpha^F = sum u'_k+i-1 g_i + ^R w^G x ^R w^F (D = 1); Rest: u' = 0
   template <class F, std::size_t D, bool Rest = false, class Rates>
   KANE_ALWAYS_INLINE v3<scalar> components_value(const Rates& rates) const {
     using G = component_frame_t<closure, F, Rates>;
-    v3<scalar> x = component_values<component_speeds_in<closure, F, Rates>(), D>(rates);
-    if constexpr (Rest && D == 1)
-      x = {x.x, x.x, x.x};
-    else if constexpr (is_edge<G>)
-      x = x.x * column<G>(0) + x.y * column<G>(1) + x.z * column<G>(2);
+    v3<scalar> x = component_values<component_speeds_in<closure, F, Rates>(), D>(rates);  // 0 or NaN at rest
+    if constexpr (is_edge<G> && !Rest) x = x.x * column<G>(0) + x.y * column<G>(1) + x.z * column<G>(2);
     if constexpr (D == 1 && is_edge<G> && !std::is_same_v<G, F>)
       x = x + cross3(load3(w_[index<G>()].data()), load3(w_[index<F>()].data()));
     return x;
